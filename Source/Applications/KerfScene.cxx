@@ -1,0 +1,288 @@
+// Scene building for the command-line program and the image tests.
+#include "KerfScene.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDiscretizableColorTransferFunction.h>
+#include <vtkLookupTable.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace kerf
+{
+
+namespace
+{
+// The value below which `fraction` of the finite values lie.
+double quantile(std::vector<double> values, double fraction)
+{
+  if (values.empty())
+  {
+    return 0.0;
+  }
+  const std::size_t k = std::min(values.size() - 1,
+    static_cast<std::size_t>(std::floor(fraction * static_cast<double>(values.size() - 1))));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+// Twelve well-separated colours for labels.
+const double LabelColors[12][3] = { { 0.122, 0.467, 0.706 }, { 1.000, 0.498, 0.055 },
+  { 0.173, 0.627, 0.173 }, { 0.839, 0.153, 0.157 }, { 0.580, 0.404, 0.741 },
+  { 0.549, 0.337, 0.294 }, { 0.890, 0.467, 0.761 }, { 0.498, 0.498, 0.498 },
+  { 0.737, 0.741, 0.133 }, { 0.090, 0.745, 0.812 }, { 0.682, 0.780, 0.910 },
+  { 1.000, 0.733, 0.471 } };
+
+vtkSmartPointer<vtkPolyData> directionStrokes(vtkPolyData* surface, vtkDataArray* directions, int count)
+{
+  const vtkIdType n = surface->GetNumberOfPoints();
+  vtkDataArray* normals = surface->GetPointData()->GetNormals();
+  double bounds[6];
+  surface->GetBounds(bounds);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  const double length = 0.45 * diagonal / std::sqrt(static_cast<double>(std::max(count, 1)));
+  const vtkIdType stride = std::max<vtkIdType>(1, n / std::max(count, 1));
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (vtkIdType i = 0; i < n; i += stride)
+  {
+    double p[3], d[3], normal[3] = { 0, 0, 0 };
+    surface->GetPoint(i, p);
+    directions->GetTuple(i, d);
+    if (normals)
+    {
+      normals->GetTuple(i, normal);
+    }
+    const double norm = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (!(norm > 0.0))
+    {
+      continue;
+    }
+    double a[3], b[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      const double lift = p[k] + 0.002 * diagonal * normal[k];
+      a[k] = lift - 0.5 * length * d[k] / norm;
+      b[k] = lift + 0.5 * length * d[k] / norm;
+    }
+    const vtkIdType ids[2] = { points->InsertNextPoint(a), points->InsertNextPoint(b) };
+    lines->InsertNextCell(2, ids);
+  }
+  vtkNew<vtkPolyData> strokes;
+  strokes->SetPoints(points);
+  strokes->SetLines(lines);
+  return strokes;
+}
+} // namespace
+
+vtkSmartPointer<vtkRenderWindow> RenderScene(
+  vtkPolyData* surface, const SceneOptions& options, std::string& error)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkRenderer> renderer;
+  renderer->GradientBackgroundOn();
+  renderer->SetBackground(0.93, 0.93, 0.95);
+  renderer->SetBackground2(0.72, 0.75, 0.82);
+
+  if (!options.colorArray.empty())
+  {
+    vtkDataArray* array = surface->GetPointData()->GetArray(options.colorArray.c_str());
+    bool onCells = false;
+    if (!array)
+    {
+      array = surface->GetCellData()->GetArray(options.colorArray.c_str());
+      onCells = array != nullptr;
+    }
+    if (!array || array->GetNumberOfComponents() != 1)
+    {
+      error = "no one-component point or cell array named '" + options.colorArray + "'";
+      return nullptr;
+    }
+    std::vector<double> values;
+    values.reserve(static_cast<std::size_t>(array->GetNumberOfTuples()));
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      const double value = array->GetComponent(i, 0);
+      if (std::isfinite(value))
+      {
+        values.push_back(value);
+      }
+    }
+    vtkSmartPointer<vtkScalarsToColors> colors;
+    if (options.colorMap == SceneOptions::ColorMap::Categorical)
+    {
+      vtkNew<vtkLookupTable> table;
+      const double lo = values.empty() ? 0.0 : *std::min_element(values.begin(), values.end());
+      const double hi = values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+      const int labels = static_cast<int>(hi - lo) + 1;
+      table->SetNumberOfTableValues(std::max(labels, 1));
+      for (int i = 0; i < labels; ++i)
+      {
+        const double* c = LabelColors[i % 12];
+        table->SetTableValue(i, c[0], c[1], c[2], 1.0);
+      }
+      table->SetTableRange(lo - 0.5, hi + 0.5);
+      table->Build();
+      colors = table;
+    }
+    else
+    {
+      vtkNew<vtkDiscretizableColorTransferFunction> ctf;
+      ctf->SetColorSpaceToDiverging();
+      double lo, hi;
+      if (options.colorMap == SceneOptions::ColorMap::Diverging)
+      {
+        std::vector<double> magnitudes(values);
+        for (double& m : magnitudes)
+        {
+          m = std::abs(m);
+        }
+        hi = std::max(quantile(magnitudes, options.rangeFraction), 1e-12);
+        lo = -hi;
+        ctf->AddRGBPoint(lo, 0.230, 0.299, 0.754);
+        ctf->AddRGBPoint(0.0, 0.865, 0.865, 0.865);
+        ctf->AddRGBPoint(hi, 0.706, 0.016, 0.150);
+      }
+      else
+      {
+        lo = quantile(values, 1.0 - options.rangeFraction);
+        hi = std::max(quantile(values, options.rangeFraction), lo + 1e-12);
+        ctf->SetColorSpaceToLab();
+        ctf->AddRGBPoint(lo, 0.267, 0.005, 0.329);
+        ctf->AddRGBPoint(0.5 * (lo + hi), 0.128, 0.567, 0.551);
+        ctf->AddRGBPoint(hi, 0.993, 0.906, 0.144);
+      }
+      ctf->DiscretizeOn();
+      ctf->SetNumberOfValues(256);
+      ctf->Build();
+      colors = ctf;
+    }
+    mapper->SetLookupTable(colors);
+    mapper->SetScalarModeToUsePointFieldData();
+    if (onCells)
+    {
+      mapper->SetScalarModeToUseCellFieldData();
+    }
+    mapper->SelectColorArray(options.colorArray.c_str());
+    mapper->SetUseLookupTableScalarRange(true);
+    mapper->ScalarVisibilityOn();
+    mapper->SetColorModeToMapScalars();
+    mapper->InterpolateScalarsBeforeMappingOn();
+
+    if (options.colorMap != SceneOptions::ColorMap::Categorical)
+    {
+      vtkNew<vtkScalarBarActor> legend;
+      legend->SetLookupTable(colors);
+      legend->SetTitle(options.legendTitle.empty() ? options.colorArray.c_str()
+                                                   : options.legendTitle.c_str());
+      legend->SetNumberOfLabels(5);
+      legend->SetLabelFormat("%-#6.3g");
+      legend->SetWidth(0.14);
+      legend->SetHeight(0.6);
+      legend->SetPosition(0.84, 0.18);
+      legend->SetBarRatio(0.3);
+      legend->GetTitleTextProperty()->SetColor(0.1, 0.1, 0.1);
+      legend->GetLabelTextProperty()->SetColor(0.1, 0.1, 0.1);
+      legend->GetTitleTextProperty()->ShadowOff();
+      legend->GetLabelTextProperty()->ShadowOff();
+      legend->GetTitleTextProperty()->ItalicOff();
+      legend->GetLabelTextProperty()->ItalicOff();
+      legend->UnconstrainedFontSizeOn();
+      legend->GetTitleTextProperty()->SetFontSize(13);
+      legend->GetLabelTextProperty()->SetFontSize(12);
+      renderer->AddActor2D(legend);
+    }
+  }
+
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(0.85, 0.85, 0.82);
+  actor->GetProperty()->SetSpecular(0.15);
+  actor->GetProperty()->SetSpecularPower(20.0);
+  renderer->AddActor(actor);
+
+  if (!options.directionArray.empty())
+  {
+    vtkDataArray* directions = surface->GetPointData()->GetArray(options.directionArray.c_str());
+    if (!directions || directions->GetNumberOfComponents() != 3)
+    {
+      error = "no three-component point array named '" + options.directionArray + "'";
+      return nullptr;
+    }
+    vtkNew<vtkPolyDataMapper> strokeMapper;
+    strokeMapper->SetInputData(directionStrokes(surface, directions, options.directionCount));
+    vtkNew<vtkActor> strokes;
+    strokes->SetMapper(strokeMapper);
+    strokes->GetProperty()->SetColor(0.15, 0.15, 0.2);
+    strokes->GetProperty()->SetLineWidth(1.2);
+    strokes->GetProperty()->LightingOff();
+    renderer->AddActor(strokes);
+  }
+
+  if (!options.caption.empty())
+  {
+    vtkNew<vtkTextActor> caption;
+    caption->SetInput(options.caption.c_str());
+    caption->GetTextProperty()->SetFontSize(16);
+    caption->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
+    caption->SetDisplayPosition(12, options.height - 30);
+    renderer->AddActor2D(caption);
+  }
+
+  renderer->ResetCamera();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->Azimuth(options.azimuth);
+  camera->Elevation(options.elevation);
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCamera();
+  camera->Zoom(1.25);
+
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(options.offscreen ? 1 : 0);
+  window->SetSize(options.width, options.height);
+  window->SetMultiSamples(0);
+  window->AddRenderer(renderer);
+  window->Render();
+  return window;
+}
+
+bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetFileName(fileName.c_str());
+  writer->SetInputConnection(grab->GetOutputPort());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    error = "cannot write " + fileName;
+    return false;
+  }
+  return true;
+}
+
+} // namespace kerf

@@ -1,0 +1,55 @@
+// Renders a Kerf result to an image: a surface coloured by an array, optional direction strokes.
+#pragma once
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkPolyData;
+class vtkRenderWindow;
+
+namespace kerf
+{
+
+/// How a scene is drawn.
+struct SceneOptions
+{
+  /// Point or cell array that colours the surface ("" for a plain surface).
+  std::string colorArray;
+  /// Diverging (blue-white-red, symmetric about 0) for signed values such as curvature;
+  /// Sequential for non-negative values; Categorical for integer labels.
+  enum class ColorMap
+  {
+    Diverging,
+    Sequential,
+    Categorical
+  };
+  ColorMap colorMap = ColorMap::Diverging;
+  /// The colour range covers this fraction of the values (robust to outliers); 1 for all.
+  double rangeFraction = 0.95;
+  /// Point vector array drawn as short strokes on the surface ("" for none).
+  std::string directionArray;
+  /// Approximate number of strokes.
+  int directionCount = 3000;
+  /// Title shown above the colour legend.
+  std::string legendTitle;
+  /// Caption drawn in the top-left corner.
+  std::string caption;
+  int width = 900;
+  int height = 700;
+  /// Camera rotation from the default view (+z looking down -z), in degrees.
+  double azimuth = 30.0;
+  double elevation = 20.0;
+  /// Render offscreen (no window appears).
+  bool offscreen = true;
+};
+
+/// Builds and renders the scene. Returns nullptr and sets `error` if the colour or direction
+/// array is missing.
+vtkSmartPointer<vtkRenderWindow> RenderScene(
+  vtkPolyData* surface, const SceneOptions& options, std::string& error);
+
+/// Writes the window's image as PNG; false and `error` on failure.
+bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error);
+
+} // namespace kerf

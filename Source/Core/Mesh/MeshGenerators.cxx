@@ -1,0 +1,165 @@
+// Generated analytic surfaces for tests and benchmarks.
+#include "Mesh/MeshGenerators.h"
+
+#include "Error.h"
+
+#include <cmath>
+#include <map>
+#include <utility>
+
+namespace kerf
+{
+
+namespace
+{
+constexpr double Pi = 3.14159265358979323846;
+}
+
+TriangleMesh makeIcosphere(double radius, int levels)
+{
+  if (levels < 0 || levels > 9)
+  {
+    throw Error("icosphere subdivision level must be in [0, 9]");
+  }
+  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
+  std::vector<Vector3> points = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 },
+    { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 },
+    { -t, 0, -1 }, { -t, 0, 1 } };
+  std::vector<Triangle> triangles = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 },
+    { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 },
+    { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 },
+    { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  for (Vector3& p : points)
+  {
+    p.normalize();
+  }
+  for (int level = 0; level < levels; ++level)
+  {
+    std::map<std::pair<int, int>, int> midpoints;
+    auto midpoint = [&](int a, int b) {
+      const std::pair<int, int> key(std::min(a, b), std::max(a, b));
+      const auto found = midpoints.find(key);
+      if (found != midpoints.end())
+      {
+        return found->second;
+      }
+      points.push_back((points[a] + points[b]).normalized());
+      const int index = static_cast<int>(points.size()) - 1;
+      midpoints.emplace(key, index);
+      return index;
+    };
+    std::vector<Triangle> finer;
+    finer.reserve(triangles.size() * 4);
+    for (const Triangle& tri : triangles)
+    {
+      const int ab = midpoint(tri[0], tri[1]);
+      const int bc = midpoint(tri[1], tri[2]);
+      const int ca = midpoint(tri[2], tri[0]);
+      finer.push_back({ tri[0], ab, ca });
+      finer.push_back({ tri[1], bc, ab });
+      finer.push_back({ tri[2], ca, bc });
+      finer.push_back({ ab, bc, ca });
+    }
+    triangles = std::move(finer);
+  }
+  for (Vector3& p : points)
+  {
+    p *= radius;
+  }
+  return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+TriangleMesh makeTorus(double majorRadius, double minorRadius, int around, int tube)
+{
+  if (around < 3 || tube < 3)
+  {
+    throw Error("a torus needs at least 3 vertices around and across the tube");
+  }
+  std::vector<Vector3> points;
+  points.reserve(static_cast<std::size_t>(around) * tube);
+  for (int i = 0; i < around; ++i)
+  {
+    const double u = 2.0 * Pi * i / around;
+    for (int j = 0; j < tube; ++j)
+    {
+      const double v = 2.0 * Pi * j / tube;
+      const double r = majorRadius + minorRadius * std::cos(v);
+      points.emplace_back(r * std::cos(u), r * std::sin(u), minorRadius * std::sin(v));
+    }
+  }
+  std::vector<Triangle> triangles;
+  triangles.reserve(2 * static_cast<std::size_t>(around) * tube);
+  for (int i = 0; i < around; ++i)
+  {
+    const int i1 = (i + 1) % around;
+    for (int j = 0; j < tube; ++j)
+    {
+      const int j1 = (j + 1) % tube;
+      const int a = i * tube + j, b = i1 * tube + j, c = i1 * tube + j1, d = i * tube + j1;
+      triangles.push_back({ a, b, c });
+      triangles.push_back({ a, c, d });
+    }
+  }
+  return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+TriangleMesh makeCylinder(double radius, double height, int around, int rings)
+{
+  if (around < 3 || rings < 2)
+  {
+    throw Error("a cylinder needs at least 3 vertices around and 2 rings");
+  }
+  std::vector<Vector3> points;
+  for (int j = 0; j < rings; ++j)
+  {
+    const double z = height * j / (rings - 1);
+    for (int i = 0; i < around; ++i)
+    {
+      const double u = 2.0 * Pi * i / around;
+      points.emplace_back(radius * std::cos(u), radius * std::sin(u), z);
+    }
+  }
+  std::vector<Triangle> triangles;
+  for (int j = 0; j + 1 < rings; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const int i1 = (i + 1) % around;
+      const int a = j * around + i, b = j * around + i1, c = (j + 1) * around + i1,
+                d = (j + 1) * around + i;
+      triangles.push_back({ a, b, c });
+      triangles.push_back({ a, c, d });
+    }
+  }
+  return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+TriangleMesh makeGrid(double width, double height, int columns, int rows)
+{
+  if (columns < 1 || rows < 1)
+  {
+    throw Error("a grid needs at least one column and one row");
+  }
+  std::vector<Vector3> points;
+  for (int j = 0; j <= rows; ++j)
+  {
+    for (int i = 0; i <= columns; ++i)
+    {
+      points.emplace_back(width * i / columns, height * j / rows, 0.0);
+    }
+  }
+  std::vector<Triangle> triangles;
+  const int stride = columns + 1;
+  for (int j = 0; j < rows; ++j)
+  {
+    for (int i = 0; i < columns; ++i)
+    {
+      const int a = j * stride + i, b = a + 1, c = a + stride + 1, d = a + stride;
+      triangles.push_back({ a, b, c });
+      triangles.push_back({ a, c, d });
+    }
+  }
+  return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+} // namespace kerf

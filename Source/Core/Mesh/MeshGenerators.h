@@ -1,0 +1,26 @@
+// Analytic test surfaces: sphere, torus, cylinder, plane, with known curvature and harmonic functions.
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+
+namespace kerf
+{
+
+/// Icosahedron subdivided `levels` times, projected to a sphere of the given radius and centred at
+/// the origin: 10 * 4^levels + 2 vertices, 20 * 4^levels triangles, closed, outward oriented.
+TriangleMesh makeIcosphere(double radius, int levels);
+
+/// Torus around the z axis with tube centre radius `majorRadius` and tube radius `minorRadius`;
+/// `around` x `tube` vertices on a regular parameter grid, 2 * around * tube triangles, closed.
+/// Vertex (i, j) sits at angle 2 pi i / around about z and 2 pi j / tube about the tube.
+TriangleMesh makeTorus(double majorRadius, double minorRadius, int around, int tube);
+
+/// Open cylinder of the given radius around the z axis from z = 0 to z = height, with `around`
+/// vertices per ring and `rings` rings (two boundary loops), outward oriented.
+TriangleMesh makeCylinder(double radius, double height, int around, int rings);
+
+/// Planar grid over [0, width] x [0, height] in z = 0 with (columns + 1) x (rows + 1) vertices,
+/// each quad split along its diagonal. Vertex (i, j) has index j * (columns + 1) + i.
+TriangleMesh makeGrid(double width, double height, int columns, int rows);
+
+} // namespace kerf

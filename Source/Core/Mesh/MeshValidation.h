@@ -1,0 +1,57 @@
+// Mesh validation shared by every filter: what is wrong with a mesh, and whether a filter accepts it.
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+
+#include <string>
+
+namespace kerf
+{
+
+/// Counts of every defect Kerf checks for. Zero means absent.
+struct MeshReport
+{
+  int vertices = 0;
+  int faces = 0;
+  int edges = 0;
+  int nonFinitePoints = 0;       ///< points with a NaN or infinite coordinate (used or not)
+  int repeatedVertexFaces = 0;   ///< triangles that use one vertex twice
+  int zeroAreaFaces = 0;         ///< triangles with (numerically) zero area
+  int duplicateFaces = 0;        ///< triangles with the same three vertices as an earlier one
+  int nonManifoldEdges = 0;      ///< edges shared by three or more triangles
+  int nonManifoldVertices = 0;   ///< vertices whose triangles form more than one fan
+  int inconsistentEdges = 0;     ///< interior edges whose two triangles are oriented alike
+  int unreferencedVertices = 0;  ///< points used by no triangle
+  int boundaryEdges = 0;
+  int boundaryLoops = 0;
+  int components = 0;
+  int eulerCharacteristic = 0;   ///< V - E + F over referenced vertices
+
+  /// One line listing the size and every non-zero count.
+  std::string summary() const;
+};
+
+/// Inspects a mesh. Linear in its size.
+MeshReport inspectMesh(const TriangleMesh& mesh);
+
+/// What a filter accepts beyond what every filter requires (at least one triangle, finite
+/// coordinates, no triangle repeating a vertex).
+struct MeshRequirements
+{
+  bool manifold = true;             ///< refuse non-manifold edges and vertices
+  bool consistentOrientation = true; ///< refuse inconsistently oriented neighbouring triangles
+  bool allowZeroAreaFaces = true;
+  bool allowDuplicateFaces = false;
+  bool allowBoundary = true;
+  bool allowSeveralComponents = true;
+};
+
+/// An empty string when the report meets the requirements, otherwise a sentence naming every
+/// problem, for example "the mesh has 3 non-manifold edges (shared by three or more triangles)".
+std::string describeProblems(const MeshReport& report, const MeshRequirements& requirements);
+
+/// Relative threshold below which a triangle counts as zero-area: twice its area is at most this
+/// times the square of its longest edge.
+constexpr double ZeroAreaTolerance = 1e-12;
+
+} // namespace kerf

@@ -1,0 +1,291 @@
+// Adjacency, topology invariants and validation of kerf::TriangleMesh on known meshes.
+#include "Error.h"
+#include "Mesh/MeshGenerators.h"
+#include "Mesh/MeshValidation.h"
+#include "Mesh/OpenMeshAdapter.h"
+#include "Mesh/TriangleMesh.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <set>
+
+using namespace kerf;
+
+namespace
+{
+TriangleMesh tetrahedron()
+{
+  return TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
+    { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 } });
+}
+
+void expectConsistentAdjacency(const TriangleMesh& mesh)
+{
+  int incidences = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = mesh.faceEdge(f, k);
+      ASSERT_GE(e, 0);
+      const std::array<int, 2>& ev = mesh.edgeVertices(e);
+      const int a = mesh.triangle(f)[k];
+      const int b = mesh.triangle(f)[(k + 1) % 3];
+      EXPECT_EQ(std::min(a, b), ev[0]);
+      EXPECT_EQ(std::max(a, b), ev[1]);
+      const int g = mesh.faceNeighbor(f, k);
+      if (g >= 0)
+      {
+        bool back = false;
+        for (int j = 0; j < 3; ++j)
+        {
+          back = back || mesh.faceNeighbor(g, j) == f;
+        }
+        EXPECT_TRUE(back) << "neighbour relation is not symmetric at face " << f;
+      }
+      ++incidences;
+    }
+  }
+  int counted = 0;
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    counted += mesh.edgeFaceCount(e);
+  }
+  EXPECT_EQ(incidences, counted);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const IndexRange neighbors = mesh.vertexNeighbors(v);
+    const IndexRange edges = mesh.vertexEdges(v);
+    ASSERT_EQ(neighbors.size(), edges.size());
+    for (std::size_t i = 0; i < neighbors.size(); ++i)
+    {
+      const std::array<int, 2>& ev = mesh.edgeVertices(edges[i]);
+      EXPECT_TRUE((ev[0] == v && ev[1] == neighbors[i]) || (ev[1] == v && ev[0] == neighbors[i]));
+    }
+    for (int f : mesh.vertexFaces(v))
+    {
+      const Triangle& t = mesh.triangle(f);
+      EXPECT_TRUE(t[0] == v || t[1] == v || t[2] == v);
+    }
+  }
+}
+} // namespace
+
+TEST(TriangleMesh, TetrahedronCounts)
+{
+  const TriangleMesh mesh = tetrahedron();
+  EXPECT_EQ(mesh.vertexCount(), 4);
+  EXPECT_EQ(mesh.faceCount(), 4);
+  EXPECT_EQ(mesh.edgeCount(), 6);
+  EXPECT_EQ(mesh.componentCount(), 1);
+  EXPECT_TRUE(mesh.boundaryLoops().empty());
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    EXPECT_EQ(mesh.edgeFaceCount(e), 2);
+  }
+  for (int v = 0; v < 4; ++v)
+  {
+    EXPECT_EQ(mesh.vertexNeighbors(v).size(), 3u);
+    EXPECT_EQ(mesh.vertexFaces(v).size(), 3u);
+  }
+  expectConsistentAdjacency(mesh);
+  const MeshReport report = inspectMesh(mesh);
+  EXPECT_EQ(report.eulerCharacteristic, 2);
+  EXPECT_EQ(report.inconsistentEdges, 0);
+  EXPECT_EQ(describeProblems(report, MeshRequirements{}), "");
+}
+
+TEST(TriangleMesh, GeneratedSurfacesHaveTheirEulerCharacteristic)
+{
+  struct Case
+  {
+    TriangleMesh mesh;
+    int euler;
+    int loops;
+  };
+  const Case cases[] = { { makeIcosphere(1.0, 3), 2, 0 }, { makeTorus(3.0, 1.0, 40, 16), 0, 0 },
+    { makeCylinder(1.0, 2.0, 24, 7), 0, 2 }, { makeGrid(2.0, 1.0, 8, 5), 1, 1 } };
+  for (const Case& c : cases)
+  {
+    const MeshReport report = inspectMesh(c.mesh);
+    EXPECT_EQ(report.eulerCharacteristic, c.euler);
+    EXPECT_EQ(report.boundaryLoops, c.loops);
+    EXPECT_EQ(report.components, 1);
+    EXPECT_EQ(report.nonManifoldEdges + report.nonManifoldVertices + report.inconsistentEdges +
+        report.duplicateFaces + report.zeroAreaFaces + report.unreferencedVertices,
+      0);
+    expectConsistentAdjacency(c.mesh);
+  }
+}
+
+TEST(TriangleMesh, GridBoundaryLoopFollowsTheTriangles)
+{
+  const int columns = 6, rows = 4;
+  const TriangleMesh grid = makeGrid(3.0, 2.0, columns, rows);
+  ASSERT_EQ(grid.boundaryLoops().size(), 1u);
+  const std::vector<int>& loop = grid.boundaryLoops()[0];
+  EXPECT_EQ(loop.size(), static_cast<std::size_t>(2 * (columns + rows)));
+  // Triangles are counter-clockwise seen from +z, so the loop has positive signed area.
+  double twiceArea = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i)
+  {
+    const Vector3& a = grid.point(loop[i]);
+    const Vector3& b = grid.point(loop[(i + 1) % loop.size()]);
+    twiceArea += a.x() * b.y() - b.x() * a.y();
+  }
+  EXPECT_NEAR(twiceArea, 2.0 * 3.0 * 2.0, 1e-12);
+  for (int v : loop)
+  {
+    EXPECT_TRUE(grid.isBoundaryVertex(v));
+  }
+  EXPECT_FALSE(grid.isBoundaryVertex((columns + 1) + 1));
+}
+
+TEST(TriangleMesh, ComponentsAndUnreferencedPoints)
+{
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 },
+                            { 5, 1, 0 }, { 9, 9, 9 } },
+    { { 0, 1, 2 }, { 3, 4, 5 } });
+  EXPECT_EQ(mesh.componentCount(), 2);
+  EXPECT_EQ(mesh.faceComponent(0), 0);
+  EXPECT_EQ(mesh.faceComponent(1), 1);
+  EXPECT_EQ(mesh.vertexComponent(6), -1);
+  const MeshReport report = inspectMesh(mesh);
+  EXPECT_EQ(report.unreferencedVertices, 1);
+  EXPECT_EQ(report.components, 2);
+  MeshRequirements single;
+  single.allowSeveralComponents = false;
+  EXPECT_NE(describeProblems(report, single).find("2 connected components"), std::string::npos);
+  EXPECT_EQ(describeProblems(report, MeshRequirements{}), "");
+}
+
+TEST(TriangleMesh, RejectsIndicesOutOfRange)
+{
+  EXPECT_THROW(TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 } }, { { 0, 1, 2 } }), Error);
+  EXPECT_THROW(TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, -1, 2 } }), Error);
+}
+
+TEST(TriangleMesh, EmptyMeshIsReported)
+{
+  const TriangleMesh empty;
+  EXPECT_TRUE(empty.empty());
+  const MeshReport report = inspectMesh(empty);
+  EXPECT_EQ(describeProblems(report, MeshRequirements{}), "the mesh has no triangles");
+}
+
+TEST(TriangleMesh, NumberingIsDeterministic)
+{
+  const TriangleMesh a = makeTorus(2.0, 0.5, 30, 12);
+  const TriangleMesh b = makeTorus(2.0, 0.5, 30, 12);
+  ASSERT_EQ(a.edgeCount(), b.edgeCount());
+  for (int e = 0; e < a.edgeCount(); ++e)
+  {
+    EXPECT_EQ(a.edgeVertices(e), b.edgeVertices(e));
+    EXPECT_EQ(a.edgeFaces(e), b.edgeFaces(e));
+  }
+}
+
+TEST(MeshValidation, NonManifoldEdge)
+{
+  // Three triangles around the edge (0, 1).
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  const MeshReport report = inspectMesh(mesh);
+  EXPECT_EQ(report.nonManifoldEdges, 1);
+  const std::string problems = describeProblems(report, MeshRequirements{});
+  EXPECT_NE(problems.find("1 edge is non-manifold"), std::string::npos) << problems;
+  MeshRequirements lenient;
+  lenient.manifold = false;
+  lenient.consistentOrientation = false;
+  EXPECT_EQ(describeProblems(report, lenient), "");
+}
+
+TEST(MeshValidation, BowtieVertex)
+{
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 0, 0 }, { -1, -1, 0 } },
+    { { 0, 1, 2 }, { 0, 3, 4 } });
+  const MeshReport report = inspectMesh(mesh);
+  EXPECT_EQ(report.nonManifoldVertices, 1);
+  EXPECT_EQ(report.nonManifoldEdges, 0);
+  EXPECT_EQ(report.components, 1);
+}
+
+TEST(MeshValidation, FlippedTriangle)
+{
+  TriangleMesh grid = makeGrid(1.0, 1.0, 3, 3);
+  std::vector<Triangle> triangles = grid.triangles();
+  std::swap(triangles[8][1], triangles[8][2]); // an interior triangle
+  const TriangleMesh flipped(grid.points(), triangles);
+  const MeshReport report = inspectMesh(flipped);
+  EXPECT_EQ(report.inconsistentEdges, 3);
+  EXPECT_NE(describeProblems(report, MeshRequirements{}).find("inconsistently oriented"),
+    std::string::npos);
+}
+
+TEST(MeshValidation, DegenerateDuplicateAndNonFinite)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { nan, 0, 0 } },
+    {
+      { 0, 1, 2 }, // fine
+      { 2, 1, 0 }, // duplicate of the first, opposite orientation
+      { 0, 1, 3 }, // collinear: zero area
+      { 0, 0, 2 }, // repeats a vertex
+    });
+  const MeshReport report = inspectMesh(mesh);
+  EXPECT_EQ(report.duplicateFaces, 1);
+  EXPECT_EQ(report.zeroAreaFaces, 1);
+  EXPECT_EQ(report.repeatedVertexFaces, 1);
+  EXPECT_EQ(report.nonFinitePoints, 1);
+  EXPECT_EQ(report.unreferencedVertices, 1);
+  const std::string problems = describeProblems(report, MeshRequirements{});
+  EXPECT_NE(problems.find("NaN or infinite"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("same point twice"), std::string::npos) << problems;
+  EXPECT_NE(problems.find("duplicates another"), std::string::npos) << problems;
+  EXPECT_EQ(problems.find("zero area"), std::string::npos) << "zero area is allowed by default";
+  MeshRequirements strict;
+  strict.allowZeroAreaFaces = false;
+  EXPECT_NE(describeProblems(report, strict).find("1 triangle has zero area"), std::string::npos);
+  EXPECT_NE(report.summary().find("1 duplicate triangle"), std::string::npos) << report.summary();
+}
+
+TEST(MeshValidation, ClosedSurfaceRequirement)
+{
+  MeshRequirements closed;
+  closed.allowBoundary = false;
+  EXPECT_NE(describeProblems(inspectMesh(makeCylinder(1.0, 1.0, 8, 3)), closed).find("2 boundary loops"),
+    std::string::npos);
+  EXPECT_EQ(describeProblems(inspectMesh(makeIcosphere(1.0, 1)), closed), "");
+}
+
+TEST(OpenMeshAdapter, RoundTripKeepsNumbering)
+{
+  const TriangleMesh torus = makeTorus(2.0, 0.7, 24, 10);
+  const EditableMesh editable = toEditableMesh(torus);
+  EXPECT_EQ(static_cast<int>(editable.n_vertices()), torus.vertexCount());
+  EXPECT_EQ(static_cast<int>(editable.n_edges()), torus.edgeCount());
+  EXPECT_EQ(static_cast<int>(editable.n_faces()), torus.faceCount());
+  const TriangleMesh back = fromEditableMesh(editable);
+  ASSERT_EQ(back.faceCount(), torus.faceCount());
+  for (int f = 0; f < torus.faceCount(); ++f)
+  {
+    // OpenMesh may start a face at another corner; the cyclic order is kept.
+    const Triangle& a = torus.triangle(f);
+    const Triangle& b = back.triangle(f);
+    const bool same = (a == b) || (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) ||
+      (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
+    EXPECT_TRUE(same) << "face " << f;
+  }
+  for (int v = 0; v < torus.vertexCount(); ++v)
+  {
+    EXPECT_EQ(back.point(v), torus.point(v));
+  }
+}
+
+TEST(OpenMeshAdapter, RefusesNonManifoldInput)
+{
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  EXPECT_THROW(toEditableMesh(mesh), Error);
+}

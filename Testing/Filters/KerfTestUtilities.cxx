@@ -1,0 +1,126 @@
+// Helpers shared by Kerf's VTK filter tests.
+#include "KerfTestUtilities.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTestUtilities.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <vector>
+
+namespace kerf
+{
+namespace test
+{
+
+vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    points->SetPoint(v, mesh.point(v).data());
+  }
+  vtkNew<vtkCellArray> triangles;
+  for (const Triangle& t : mesh.triangles())
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  auto polyData = vtkSmartPointer<vtkPolyData>::New();
+  polyData->SetPoints(points);
+  polyData->SetPolys(triangles);
+  return polyData;
+}
+
+std::string SourcePath(int argc, char* argv[], const std::string& relative)
+{
+  char* expanded = vtkTestUtilities::ExpandDataFileName(argc, argv, relative.c_str());
+  std::string path(expanded);
+  delete[] expanded;
+  return path;
+}
+
+std::string SharedDataPath(const std::string& relative)
+{
+  const char* root = std::getenv("KERF_SHARED_DATA");
+  if (!root || !*root)
+  {
+    return "";
+  }
+  const std::filesystem::path path = std::filesystem::path(root) / relative;
+  return std::filesystem::exists(path) ? path.string() : "";
+}
+
+namespace
+{
+// Keeps every error message, without VTK's "ERROR: In file, line n / class (address):" preamble,
+// so that captured errors never print the "ERROR:" that fails a test.
+class MessageCollector : public vtkCommand
+{
+public:
+  static MessageCollector* New() { return new MessageCollector; }
+  void Execute(vtkObject*, unsigned long, void* callData) override
+  {
+    if (!callData)
+    {
+      return;
+    }
+    std::string text = static_cast<const char*>(callData);
+    const std::size_t address = text.find("): ");
+    if (address != std::string::npos)
+    {
+      text = text.substr(address + 3);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    this->Messages.push_back(text);
+  }
+  std::vector<std::string> Messages;
+};
+} // namespace
+
+std::string UpdateAndCaptureError(vtkAlgorithm* algorithm, int* succeeded)
+{
+  vtkNew<MessageCollector> errors;
+  vtkNew<MessageCollector> executiveErrors;
+  const unsigned long errorTag = algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
+  const unsigned long warningTag = algorithm->AddObserver(vtkCommand::WarningEvent, errors);
+  vtkExecutive* executive = algorithm->GetExecutive();
+  const unsigned long executiveTag = executive->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+  const int ok = executive->Update();
+  algorithm->RemoveObserver(errorTag);
+  algorithm->RemoveObserver(warningTag);
+  executive->RemoveObserver(executiveTag);
+  if (succeeded)
+  {
+    *succeeded = ok;
+  }
+  if (!errors->Messages.empty())
+  {
+    return errors->Messages.front();
+  }
+  return executiveErrors->Messages.empty() ? std::string() : executiveErrors->Messages.front();
+}
+
+bool Check(bool condition, const char* what, const char* file, int line)
+{
+  if (!condition)
+  {
+    std::cerr << file << ":" << line << ": check failed: " << what << std::endl;
+  }
+  return condition;
+}
+
+} // namespace test
+} // namespace kerf

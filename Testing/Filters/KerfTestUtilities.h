@@ -1,0 +1,38 @@
+// Helpers shared by Kerf's VTK filter tests: Core meshes as vtkPolyData, data paths, error capture.
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+class vtkAlgorithm;
+class vtkPolyData;
+
+namespace kerf
+{
+namespace test
+{
+
+/// A vtkPolyData with the mesh's points (double) and triangles.
+vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh);
+
+/// The path of a file in the source tree, given the -D argument of the test driver.
+std::string SourcePath(int argc, char* argv[], const std::string& relative);
+
+/// The shared research data folder (../shared/data), or "" if absent.
+std::string SharedDataPath(const std::string& relative);
+
+/// Runs the algorithm and returns the error message it reported, or "" if it succeeded.
+/// Errors are captured, so they do not print "ERROR:" and fail the test.
+/// `succeeded` receives the executive's return value (1 on success, 0 on failure).
+std::string UpdateAndCaptureError(vtkAlgorithm* algorithm, int* succeeded = nullptr);
+
+/// Reports a failed check with its location; returns the condition.
+bool Check(bool condition, const char* what, const char* file, int line);
+
+} // namespace test
+} // namespace kerf
+
+#define KERF_CHECK(condition) kerf::test::Check((condition), #condition, __FILE__, __LINE__)
