@@ -7,6 +7,7 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDiscretizableColorTransferFunction.h>
+#include <vtkIdList.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -24,6 +25,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <vector>
 
 namespace kerf
@@ -50,6 +52,38 @@ const double LabelColors[12][3] = { { 0.122, 0.467, 0.706 }, { 1.000, 0.498, 0.0
   { 0.549, 0.337, 0.294 }, { 0.890, 0.467, 0.761 }, { 0.498, 0.498, 0.498 },
   { 0.737, 0.741, 0.133 }, { 0.090, 0.745, 0.812 }, { 0.682, 0.780, 0.910 },
   { 1.000, 0.733, 0.471 } };
+
+// The edges between cells with different labels, as lines lifted slightly off the surface.
+vtkSmartPointer<vtkPolyData> segmentBoundaries(vtkPolyData* surface, vtkDataArray* labels)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> firstCell;
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < surface->GetNumberOfCells(); ++c)
+  {
+    surface->GetCellPoints(c, ids);
+    const vtkIdType n = ids->GetNumberOfIds();
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % n);
+      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+      const auto found = firstCell.find(key);
+      if (found == firstCell.end())
+      {
+        firstCell.emplace(key, c);
+      }
+      else if (labels->GetComponent(found->second, 0) != labels->GetComponent(c, 0))
+      {
+        const vtkIdType edge[2] = { a, b };
+        lines->InsertNextCell(2, edge);
+      }
+    }
+  }
+  vtkNew<vtkPolyData> boundaries;
+  boundaries->SetPoints(surface->GetPoints());
+  boundaries->SetLines(lines);
+  return boundaries;
+}
 
 vtkSmartPointer<vtkPolyData> directionStrokes(vtkPolyData* surface, vtkDataArray* directions, int count)
 {
@@ -94,7 +128,10 @@ vtkSmartPointer<vtkPolyData> directionStrokes(vtkPolyData* surface, vtkDataArray
 }
 } // namespace
 
-vtkSmartPointer<vtkRenderWindow> RenderScene(
+namespace
+{
+// A renderer showing the surface as the options say, or nullptr and `error`.
+vtkSmartPointer<vtkRenderer> makeRenderer(
   vtkPolyData* surface, const SceneOptions& options, std::string& error)
 {
   vtkNew<vtkPolyDataMapper> mapper;
@@ -130,6 +167,19 @@ vtkSmartPointer<vtkRenderWindow> RenderScene(
       }
     }
     vtkSmartPointer<vtkScalarsToColors> colors;
+    if (options.colorMap == SceneOptions::ColorMap::Categorical && onCells && options.outlineSegments)
+    {
+      vtkNew<vtkPolyDataMapper> boundaryMapper;
+      boundaryMapper->SetInputData(segmentBoundaries(surface, array));
+      boundaryMapper->SetResolveCoincidentTopologyToPolygonOffset();
+      vtkNew<vtkActor> boundaryActor;
+      boundaryActor->SetMapper(boundaryMapper);
+      boundaryActor->GetProperty()->SetColor(0.05, 0.05, 0.05);
+      boundaryActor->GetProperty()->SetLineWidth(2.0);
+      boundaryActor->GetProperty()->LightingOff();
+      renderer->AddActor(boundaryActor);
+      mapper->SetResolveCoincidentTopologyToPolygonOffset();
+    }
     if (options.colorMap == SceneOptions::ColorMap::Categorical)
     {
       vtkNew<vtkLookupTable> table;
@@ -246,23 +296,81 @@ vtkSmartPointer<vtkRenderWindow> RenderScene(
     caption->SetInput(options.caption.c_str());
     caption->GetTextProperty()->SetFontSize(16);
     caption->GetTextProperty()->SetColor(0.1, 0.1, 0.1);
-    caption->SetDisplayPosition(12, options.height - 30);
+    caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+    caption->GetPositionCoordinate()->SetValue(0.015, 1.0 - 30.0 / options.height);
     renderer->AddActor2D(caption);
   }
 
   renderer->ResetCamera();
   vtkCamera* camera = renderer->GetActiveCamera();
+  if (options.frameLongestAxis)
+  {
+    double bounds[6];
+    surface->GetBounds(bounds);
+    const double extent[3] = { bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4] };
+    const int shortest = static_cast<int>(std::min_element(extent, extent + 3) - extent);
+    const int longest = static_cast<int>(std::max_element(extent, extent + 3) - extent);
+    double position[3], up[3] = { 0, 0, 0 };
+    const double* focal = camera->GetFocalPoint();
+    const double distance = camera->GetDistance();
+    for (int k = 0; k < 3; ++k)
+    {
+      position[k] = focal[k] + (k == shortest ? distance : 0.0);
+    }
+    up[longest == shortest ? (shortest + 1) % 3 : longest] = 1.0;
+    camera->SetPosition(position);
+    camera->SetViewUp(up);
+  }
   camera->Azimuth(options.azimuth);
   camera->Elevation(options.elevation);
   camera->OrthogonalizeViewUp();
   renderer->ResetCamera();
-  camera->Zoom(1.25);
+  camera->Zoom(options.zoom);
+  return renderer;
+}
 
+vtkSmartPointer<vtkRenderWindow> makeWindow(const SceneOptions& options)
+{
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
   window->SetOffScreenRendering(options.offscreen ? 1 : 0);
   window->SetSize(options.width, options.height);
   window->SetMultiSamples(0);
+  return window;
+}
+} // namespace
+
+vtkSmartPointer<vtkRenderWindow> RenderScene(
+  vtkPolyData* surface, const SceneOptions& options, std::string& error)
+{
+  vtkSmartPointer<vtkRenderer> renderer = makeRenderer(surface, options, error);
+  if (!renderer)
+  {
+    return nullptr;
+  }
+  vtkSmartPointer<vtkRenderWindow> window = makeWindow(options);
   window->AddRenderer(renderer);
+  window->Render();
+  return window;
+}
+
+vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
+  const SceneOptions& right, std::string& error)
+{
+  SceneOptions leftHalf = left, rightHalf = right;
+  leftHalf.width = rightHalf.width = left.width / 2;
+  leftHalf.height = rightHalf.height = left.height;
+  vtkSmartPointer<vtkRenderer> a = makeRenderer(surface, leftHalf, error);
+  vtkSmartPointer<vtkRenderer> b = a ? makeRenderer(surface, rightHalf, error) : nullptr;
+  if (!a || !b)
+  {
+    return nullptr;
+  }
+  a->SetViewport(0.0, 0.0, 0.5, 1.0);
+  b->SetViewport(0.5, 0.0, 1.0, 1.0);
+  b->SetActiveCamera(a->GetActiveCamera());
+  vtkSmartPointer<vtkRenderWindow> window = makeWindow(left);
+  window->AddRenderer(a);
+  window->AddRenderer(b);
   window->Render();
   return window;
 }

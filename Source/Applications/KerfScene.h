@@ -37,9 +37,16 @@ struct SceneOptions
   std::string caption;
   int width = 900;
   int height = 700;
-  /// Camera rotation from the default view (+z looking down -z), in degrees.
+  /// Camera rotation from the default view, in degrees. The default view looks down -z with +y
+  /// up; with `frameLongestAxis`, it looks along the bounding box's shortest axis with the
+  /// longest one up, which shows most of an arbitrarily oriented model.
   double azimuth = 30.0;
   double elevation = 20.0;
+  bool frameLongestAxis = false;
+  /// Camera zoom after fitting the surface.
+  double zoom = 1.25;
+  /// For categorical cell colouring: draw the boundaries between differently labelled cells.
+  bool outlineSegments = true;
   /// Render offscreen (no window appears).
   bool offscreen = true;
 };
@@ -48,6 +55,11 @@ struct SceneOptions
 /// array is missing.
 vtkSmartPointer<vtkRenderWindow> RenderScene(
   vtkPolyData* surface, const SceneOptions& options, std::string& error);
+
+/// Two views of one surface side by side with a shared camera, for example a method's
+/// segmentation beside a human's. The window takes the left options' size; each view gets half.
+vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
+  const SceneOptions& right, std::string& error);
 
 /// Writes the window's image as PNG; false and `error` on failure.
 bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error);

@@ -3,6 +3,8 @@
 
 #include "vtkOFFReader.h"
 
+#include "KerfErrorCollector.h"
+
 #include "IO/PLYValidation.h"
 
 #include <vtkCommand.h>
@@ -25,33 +27,6 @@ vtkStandardNewMacro(vtkMeshFileReader);
 
 namespace
 {
-// Records the first error message an inner reader emits, instead of printing it, without VTK's
-// "ERROR: In file, line n / class (address):" preamble.
-class ErrorCollector : public vtkCommand
-{
-public:
-  static ErrorCollector* New() { return new ErrorCollector; }
-  void Execute(vtkObject*, unsigned long, void* callData) override
-  {
-    if (!this->Message.empty() || !callData)
-    {
-      return;
-    }
-    std::string text = static_cast<const char*>(callData);
-    const std::size_t address = text.find("): ");
-    if (text.compare(0, 6, "ERROR:") == 0 && address != std::string::npos)
-    {
-      text = text.substr(address + 3);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    this->Message = text;
-  }
-  std::string Message;
-};
-
 std::string lowerExtension(const char* fileName)
 {
   return vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(fileName));
@@ -146,8 +121,8 @@ int vtkMeshFileReader::RequestData(
       return 0;
     }
   }
-  vtkSmartPointer<ErrorCollector> errors = vtkSmartPointer<ErrorCollector>::New();
-  vtkSmartPointer<ErrorCollector> warnings = vtkSmartPointer<ErrorCollector>::New();
+  auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
+  auto warnings = vtkSmartPointer<kerf::ErrorCollector>::New();
   reader->AddObserver(vtkCommand::ErrorEvent, errors);
   reader->AddObserver(vtkCommand::WarningEvent, warnings);
   reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, warnings);

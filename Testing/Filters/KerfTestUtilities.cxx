@@ -1,6 +1,8 @@
 // Helpers shared by Kerf's VTK filter tests.
 #include "KerfTestUtilities.h"
 
+#include "KerfErrorCollector.h"
+
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
@@ -13,7 +15,6 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
-#include <vector>
 
 namespace kerf
 {
@@ -60,40 +61,10 @@ std::string SharedDataPath(const std::string& relative)
   return std::filesystem::exists(path) ? path.string() : "";
 }
 
-namespace
-{
-// Keeps every error message, without VTK's "ERROR: In file, line n / class (address):" preamble,
-// so that captured errors never print the "ERROR:" that fails a test.
-class MessageCollector : public vtkCommand
-{
-public:
-  static MessageCollector* New() { return new MessageCollector; }
-  void Execute(vtkObject*, unsigned long, void* callData) override
-  {
-    if (!callData)
-    {
-      return;
-    }
-    std::string text = static_cast<const char*>(callData);
-    const std::size_t address = text.find("): ");
-    if (address != std::string::npos)
-    {
-      text = text.substr(address + 3);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    this->Messages.push_back(text);
-  }
-  std::vector<std::string> Messages;
-};
-} // namespace
-
 std::string UpdateAndCaptureError(vtkAlgorithm* algorithm, int* succeeded)
 {
-  vtkNew<MessageCollector> errors;
-  vtkNew<MessageCollector> executiveErrors;
+  vtkNew<ErrorCollector> errors;
+  vtkNew<ErrorCollector> executiveErrors;
   const unsigned long errorTag = algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
   const unsigned long warningTag = algorithm->AddObserver(vtkCommand::WarningEvent, errors);
   vtkExecutive* executive = algorithm->GetExecutive();
@@ -106,11 +77,7 @@ std::string UpdateAndCaptureError(vtkAlgorithm* algorithm, int* succeeded)
   {
     *succeeded = ok;
   }
-  if (!errors->Messages.empty())
-  {
-    return errors->Messages.front();
-  }
-  return executiveErrors->Messages.empty() ? std::string() : executiveErrors->Messages.front();
+  return errors->Message.empty() ? executiveErrors->Message : errors->Message;
 }
 
 bool Check(bool condition, const char* what, const char* file, int line)

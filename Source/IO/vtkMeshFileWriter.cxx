@@ -1,0 +1,140 @@
+// vtkMeshFileWriter: dispatches on the extension and reports the inner writer's failure.
+#include "vtkMeshFileWriter.h"
+
+#include "vtkOFFWriter.h"
+
+#include "KerfErrorCollector.h"
+
+#include <vtkErrorCode.h>
+#include <vtkExecutive.h>
+#include <vtkInformation.h>
+#include <vtkOBJWriter.h>
+#include <vtkObjectFactory.h>
+#include <vtkPLYWriter.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtksys/SystemTools.hxx>
+
+#include <functional>
+#include <string>
+
+vtkStandardNewMacro(vtkMeshFileWriter);
+
+namespace
+{
+// A configured writer and the call that writes with it.
+struct Writer
+{
+  vtkSmartPointer<vtkAlgorithm> algorithm;
+  std::function<int()> write;
+};
+
+template <typename WriterType>
+Writer wrap(vtkSmartPointer<WriterType> writer, const char* fileName)
+{
+  writer->SetFileName(fileName);
+  WriterType* raw = writer;
+  return { writer, [raw] { return raw->Write(); } };
+}
+
+// The writer for an extension (lower case); an empty algorithm if the extension is unknown.
+Writer makeWriter(const std::string& extension, const char* fileName)
+{
+  if (extension == ".vtp")
+  {
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    writer->SetDataModeToBinary();
+    return wrap(writer, fileName);
+  }
+  if (extension == ".vtk")
+  {
+    auto writer = vtkSmartPointer<vtkPolyDataWriter>::New();
+    writer->SetFileTypeToBinary();
+    return wrap(writer, fileName);
+  }
+  if (extension == ".ply")
+  {
+    auto writer = vtkSmartPointer<vtkPLYWriter>::New();
+    writer->SetFileTypeToBinary();
+    return wrap(writer, fileName);
+  }
+  if (extension == ".obj")
+  {
+    return wrap(vtkSmartPointer<vtkOBJWriter>::New(), fileName);
+  }
+  if (extension == ".stl")
+  {
+    auto writer = vtkSmartPointer<vtkSTLWriter>::New();
+    writer->SetFileTypeToBinary();
+    return wrap(writer, fileName);
+  }
+  if (extension == ".off")
+  {
+    return wrap(vtkSmartPointer<vtkOFFWriter>::New(), fileName);
+  }
+  return {};
+}
+
+std::string lowerExtension(const char* fileName)
+{
+  return vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(fileName));
+}
+} // namespace
+
+vtkMeshFileWriter::~vtkMeshFileWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkMeshFileWriter::IsSupportedExtension(const char* fileName)
+{
+  return fileName && makeWriter(lowerExtension(fileName), fileName).algorithm ? 1 : 0;
+}
+
+int vtkMeshFileWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkMeshFileWriter::WriteData()
+{
+  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No file name was given.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  const std::string extension = lowerExtension(this->FileName);
+  const Writer writer = makeWriter(extension, this->FileName);
+  if (!writer.algorithm)
+  {
+    vtkErrorMacro("Unsupported mesh file extension '"
+      << extension << "' (" << this->FileName << "); use .vtp, .vtk, .ply, .obj, .stl or .off.");
+    this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
+    return;
+  }
+  writer.algorithm->SetInputDataObject(input);
+  auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
+  writer.algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
+  writer.algorithm->GetExecutive()->AddObserver(
+    vtkCommand::ErrorEvent, vtkSmartPointer<kerf::ErrorCollector>::New());
+  const unsigned long code = writer.write() == 1 ? writer.algorithm->GetErrorCode()
+                                                 : static_cast<unsigned long>(vtkErrorCode::UnknownError);
+  if (code != vtkErrorCode::NoError || !errors->Message.empty())
+  {
+    vtkErrorMacro("Cannot write " << this->FileName << ": "
+                                  << (errors->Message.empty() ? "the writer failed" : errors->Message));
+    this->SetErrorCode(code != vtkErrorCode::NoError ? code : vtkErrorCode::UnknownError);
+  }
+}
+
+void vtkMeshFileWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

@@ -1,0 +1,49 @@
+/**
+ * @class vtkMeshFileWriter
+ * @brief Writes a surface mesh in the format its file extension names.
+ *
+ * .vtp (vtkXMLPolyDataWriter, inline binary so that the file reads back everywhere), .vtk
+ * (vtkPolyDataWriter, binary), .ply (vtkPLYWriter, binary), .obj (vtkOBJWriter), .stl
+ * (vtkSTLWriter, binary) and .off (vtkOFFWriter). Only .vtp and .vtk keep every data array; the
+ * other formats hold the geometry. Unknown extensions and write failures are reported with
+ * vtkErrorMacro and Write() returns 0.
+ */
+#ifndef vtkMeshFileWriter_h
+#define vtkMeshFileWriter_h
+
+#include "KerfIOModule.h"
+#include "vtkWriter.h"
+
+class vtkPolyData;
+
+class KERFIO_EXPORT vtkMeshFileWriter : public vtkWriter
+{
+public:
+  static vtkMeshFileWriter* New();
+  vtkTypeMacro(vtkMeshFileWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The file to write; its extension chooses the format.
+  vtkSetFilePathMacro(FileName);
+  vtkGetFilePathMacro(FileName);
+  ///@}
+
+  /// 1 if the extension of fileName is one this writer handles.
+  static int IsSupportedExtension(const char* fileName);
+
+protected:
+  vtkMeshFileWriter() = default;
+  ~vtkMeshFileWriter() override;
+
+  void WriteData() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkMeshFileWriter(const vtkMeshFileWriter&) = delete;
+  void operator=(const vtkMeshFileWriter&) = delete;
+};
+
+#endif

@@ -1,0 +1,89 @@
+"""Runs the kerf program as a user would and checks its outputs and exit codes."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+
+KERF = sys.argv[1]
+SOURCE = os.environ["KERF_SOURCE_DIR"]
+
+
+def run(*args):
+    return subprocess.run([KERF, *args], capture_output=True, text=True, timeout=300)
+
+
+class CommandLine(unittest.TestCase):
+    def setUp(self):
+        self.folder = tempfile.mkdtemp(prefix="kerf-cli-", dir=os.environ.get("KERF_TEST_OUTPUT"))
+
+    def test_help_lists_every_command(self):
+        result = run("--help")
+        self.assertEqual(result.returncode, 0)
+        for command in ("showcase", "descriptors", "info", "convert", "render"):
+            self.assertIn(command, result.stdout)
+        self.assertEqual(run("descriptors", "--help").returncode, 0)
+        self.assertEqual(run().returncode, 2)
+
+    def test_showcase_writes_surface_picture_and_summary(self):
+        result = run("showcase", "-o", self.folder)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("9770 points, 19536 triangles", result.stdout)
+        surface = os.path.join(self.folder, "camel-descriptors.vtp")
+        picture = os.path.join(self.folder, "camel-descriptors.png")
+        self.assertIn(surface, result.stdout)
+        with open(picture, "rb") as png:
+            self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
+        self.assertGreater(os.path.getsize(picture), 50000)
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(surface)
+        reader.Update()
+        data = reader.GetOutput()
+        self.assertEqual(data.GetNumberOfPoints(), 9770)
+        self.assertEqual(data.GetNumberOfCells(), 19536)
+        names = {data.GetPointData().GetArrayName(i) for i in range(data.GetPointData().GetNumberOfArrays())}
+        self.assertTrue({"Normals", "MaximumCurvature", "MinimumCurvature", "MeanCurvature",
+                         "GaussianCurvature", "Concave", "NormalConeAngle",
+                         "MaximumCurvatureDirection", "MinimumCurvatureDirection"} <= names)
+
+    def test_convert_round_trip_keeps_the_surface(self):
+        for extension in (".ply", ".obj", ".stl", ".vtk", ".vtp", ".off"):
+            converted = os.path.join(self.folder, "hand" + extension)
+            result = run("convert", os.path.join(SOURCE, "Data", "hand.off"), converted, "--quiet")
+            self.assertEqual(result.returncode, 0, result.stderr)
+            info = run("info", converted)
+            self.assertEqual(info.returncode, 0, info.stdout + info.stderr)
+            self.assertIn("points: 1197", info.stdout)
+            self.assertIn("2390 polygons", info.stdout)
+
+    def test_errors_exit_with_one_and_a_message(self):
+        result = run("info", os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("kerf: error: cannot read the mesh", result.stderr)
+        self.assertIn("ends after 3 of 4 vertices", result.stderr)
+        self.assertNotIn("ERROR:", result.stderr)
+        result = run("frobnicate")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("unknown command", result.stderr)
+        result = run("render", os.path.join(SOURCE, "Data", "hand.off"), "-o",
+                     os.path.join(self.folder, "x.png"), "--array", "Nope")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("no one-component point or cell array named 'Nope'", result.stderr)
+        result = run("descriptors", os.path.join(SOURCE, "Data", "hand.off"), "--size", "banana",
+                     "--png", os.path.join(self.folder, "y.png"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--size expects", result.stderr)
+
+    def test_info_reports_a_refused_surface(self):
+        bad = os.path.join(self.folder, "nonmanifold.off")
+        with open(bad, "w") as f:
+            f.write("OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n")
+        result = run("info", bad)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("non-manifold", result.stdout)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=[sys.argv[0]])

@@ -1,0 +1,195 @@
+// Segmentation metrics against hand-computed values, invariances and the benchmark's human agreement.
+#include "Error.h"
+#include "Evaluation/SegmentationMetrics.h"
+#include "Geodesic/GraphDistance.h"
+#include "IO/MeshFormats.h"
+#include "Mesh/MeshGenerators.h"
+#include "Mesh/Triangulation.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+using namespace kerf;
+
+namespace
+{
+// Labels per grid column for a grid of `columns` x 1 unit cells (two triangles per cell).
+std::vector<int> byColumn(const std::vector<int>& columnLabels)
+{
+  std::vector<int> labels;
+  for (int label : columnLabels)
+  {
+    labels.push_back(label);
+    labels.push_back(label);
+  }
+  return labels;
+}
+
+void expectAllZero(const SegmentationScores& s)
+{
+  EXPECT_EQ(s.cutDiscrepancy, 0.0);
+  EXPECT_EQ(s.hammingDistance, 0.0);
+  EXPECT_EQ(s.missingRate, 0.0);
+  EXPECT_EQ(s.falseAlarmRate, 0.0);
+  EXPECT_EQ(s.randIndexError, 0.0);
+  EXPECT_EQ(s.globalConsistencyError, 0.0);
+  EXPECT_EQ(s.localConsistencyError, 0.0);
+}
+} // namespace
+
+TEST(GraphDistance, GridDistancesAreEdgePathLengths)
+{
+  const TriangleMesh grid = makeGrid(4.0, 4.0, 4, 4);
+  const std::vector<double> d = edgeGraphDistances(grid, { 0 });
+  EXPECT_DOUBLE_EQ(d[0], 0.0);
+  EXPECT_DOUBLE_EQ(d[4], 4.0);                   // along the bottom row
+  EXPECT_DOUBLE_EQ(d[24], 4.0 * std::sqrt(2.0)); // along the diagonals
+  EXPECT_DOUBLE_EQ(d[5 * 4 + 2], std::sqrt(2.0) * 2.0 + 2.0); // (2, 4): two diagonals, two up
+  EXPECT_THROW(edgeGraphDistances(grid, { 99 }), Error);
+}
+
+TEST(SegmentationMetrics, IdenticalSegmentationsScoreZero)
+{
+  const TriangleMesh sphere = makeIcosphere(1.0, 3);
+  std::vector<int> labels(sphere.faceCount());
+  for (int f = 0; f < sphere.faceCount(); ++f)
+  {
+    const Triangle& t = sphere.triangle(f);
+    labels[f] = (sphere.point(t[0]) + sphere.point(t[1]) + sphere.point(t[2])).z() > 0 ? 3 : 8;
+  }
+  const SegmentationScores s = compareSegmentations(sphere, labels, labels);
+  expectAllZero(s);
+  EXPECT_TRUE(s.cutsCompared);
+  EXPECT_EQ(s.segments1, 2);
+  EXPECT_EQ(s.comparedFaces, sphere.faceCount());
+}
+
+TEST(SegmentationMetrics, SwappedLabelsScoreZero)
+{
+  const TriangleMesh grid = makeGrid(4.0, 1.0, 4, 1);
+  expectAllZero(compareSegmentations(grid, byColumn({ 0, 0, 1, 1 }), byColumn({ 1, 1, 0, 0 })));
+  expectAllZero(compareSegmentations(grid, byColumn({ 0, 0, 1, 1 }), byColumn({ 70, 70, 5, 5 })));
+}
+
+TEST(SegmentationMetrics, KnownPartialDisagreement)
+{
+  // S1 cuts the 4 x 1 strip at x = 2, S2 at x = 1. Areas: S1 (2, 2), S2 (1, 3), overlaps
+  // (0,0) = 1, (0,1) = 1, (1,1) = 2 out of 4; face counts twice the areas.
+  const TriangleMesh grid = makeGrid(4.0, 1.0, 4, 1);
+  const SegmentationScores s = compareSegmentations(grid, byColumn({ 0, 0, 1, 1 }), byColumn({ 0, 1, 1, 1 }));
+  EXPECT_DOUBLE_EQ(s.missingRate, 0.25);    // S2's segment 1 misses 1 of its 3
+  EXPECT_DOUBLE_EQ(s.falseAlarmRate, 0.25); // S1's segment 0 has 1 of 2 outside its match
+  EXPECT_DOUBLE_EQ(s.hammingDistance, 0.25);
+  // Pairs: 28; split in S1 only or S2 only: (12 + 16 - 2 * 8) = 12.
+  EXPECT_DOUBLE_EQ(s.randIndexError, 12.0 / 28.0);
+  // E12 per cell: 1/2, 1/2, 0; E21: 0, 2/3, 1/3. GCE = min(1, 4/3) / 4, LCE = (1/2) / 4.
+  EXPECT_DOUBLE_EQ(s.globalConsistencyError, 0.25);
+  EXPECT_DOUBLE_EQ(s.localConsistencyError, 0.125);
+  // Each cut vertex is one unit from the other cut; the average radius of the 10 vertices
+  // around (2, 0.5) is (2 sqrt(4.25) + 2 sqrt(1.25) + 0.5) / 5.
+  const double radius = (2.0 * std::sqrt(4.25) + 2.0 * std::sqrt(1.25) + 0.5) / 5.0;
+  EXPECT_NEAR(s.cutDiscrepancy, 2.0 / radius, 1e-12);
+  EXPECT_NEAR(s.directionalCutDiscrepancy12, 1.0 / radius, 1e-12);
+
+  // Swapping the roles swaps the missing and false-alarm rates; the rest is symmetric.
+  const SegmentationScores t = compareSegmentations(grid, byColumn({ 0, 1, 1, 1 }), byColumn({ 0, 0, 1, 1 }));
+  EXPECT_DOUBLE_EQ(t.missingRate, s.falseAlarmRate);
+  EXPECT_DOUBLE_EQ(t.falseAlarmRate, s.missingRate);
+  EXPECT_DOUBLE_EQ(t.randIndexError, s.randIndexError);
+  EXPECT_DOUBLE_EQ(t.globalConsistencyError, s.globalConsistencyError);
+  EXPECT_DOUBLE_EQ(t.localConsistencyError, s.localConsistencyError);
+  EXPECT_DOUBLE_EQ(t.cutDiscrepancy, s.cutDiscrepancy);
+}
+
+TEST(SegmentationMetrics, InvariantUnderLabelPermutation)
+{
+  const TriangleMesh torus = makeTorus(3.0, 1.0, 48, 16);
+  std::mt19937 random(7);
+  std::uniform_int_distribution<int> pick(0, 5);
+  std::vector<int> a(torus.faceCount()), b(torus.faceCount());
+  for (int f = 0; f < torus.faceCount(); ++f)
+  {
+    a[f] = (f / 96) % 4;
+    b[f] = pick(random) == 0 ? (a[f] + 1) % 4 : a[f];
+  }
+  const std::vector<int> permutation = { 17, 3, 42, 0 };
+  std::vector<int> aPermuted(a.size());
+  for (std::size_t f = 0; f < a.size(); ++f)
+  {
+    aPermuted[f] = permutation[a[f]];
+  }
+  const SegmentationScores s = compareSegmentations(torus, a, b);
+  const SegmentationScores t = compareSegmentations(torus, aPermuted, b);
+  EXPECT_GT(s.randIndexError, 0.0);
+  EXPECT_DOUBLE_EQ(s.randIndexError, t.randIndexError);
+  EXPECT_DOUBLE_EQ(s.hammingDistance, t.hammingDistance);
+  EXPECT_DOUBLE_EQ(s.globalConsistencyError, t.globalConsistencyError);
+  EXPECT_DOUBLE_EQ(s.localConsistencyError, t.localConsistencyError);
+  EXPECT_DOUBLE_EQ(s.cutDiscrepancy, t.cutDiscrepancy);
+}
+
+TEST(SegmentationMetrics, UnlabelledFacesAreLeftOut)
+{
+  const TriangleMesh grid = makeGrid(4.0, 1.0, 4, 1);
+  // The last column is unlabelled in S1: only the first three columns are compared.
+  const SegmentationScores s = compareSegmentations(grid, byColumn({ 0, 0, 1, -1 }), byColumn({ 0, 0, 1, 2 }));
+  EXPECT_EQ(s.comparedFaces, 6);
+  EXPECT_EQ(s.segments2, 3);
+  EXPECT_DOUBLE_EQ(s.randIndexError, 0.0);
+  EXPECT_DOUBLE_EQ(s.hammingDistance, 0.0);
+}
+
+TEST(SegmentationMetrics, OneSegmentHasNoCut)
+{
+  const TriangleMesh grid = makeGrid(4.0, 1.0, 4, 1);
+  const SegmentationScores s = compareSegmentations(grid, byColumn({ 0, 0, 0, 0 }), byColumn({ 0, 0, 1, 1 }));
+  EXPECT_FALSE(s.cutsCompared);
+  EXPECT_EQ(s.cutDiscrepancy, 0.0);
+  // Each reference segment lies inside S1's single segment: nothing is missed, but half of S1's
+  // segment lies outside its best match.
+  EXPECT_DOUBLE_EQ(s.missingRate, 0.0);
+  EXPECT_DOUBLE_EQ(s.falseAlarmRate, 0.5);
+  EXPECT_DOUBLE_EQ(s.globalConsistencyError, 0.0); // a refinement: no consistency error
+}
+
+TEST(SegmentationMetrics, BadInputIsRefused)
+{
+  const TriangleMesh grid = makeGrid(4.0, 1.0, 4, 1);
+  const SegmentationEvaluator evaluator(grid);
+  EXPECT_THROW(evaluator.prepare({ 0, 1, 2 }), Error);
+  EXPECT_THROW(evaluator.prepare(byColumn({ 0, -2, 1, 1 })), Error);
+}
+
+TEST(SegmentationMetrics, HumanAgreementOnPrincetonModel)
+{
+  // Model 1 of the benchmark: the mean 1 - RI over all pairs of its 16 human segmentations is
+  // 0.073 (psb-dev/README.md).
+  const std::filesystem::path root = std::filesystem::path(KERF_SHARED_DATA) / "psb-dev";
+  if (!std::filesystem::exists(root / "off" / "1.off"))
+  {
+    GTEST_SKIP() << "../shared/data/psb-dev is absent";
+  }
+  PolygonMesh polygons = readOFF((root / "off" / "1.off").string());
+  Triangulation triangles = triangulatePolygons(polygons);
+  const TriangleMesh mesh(polygons.points, triangles.triangles);
+  const SegmentationEvaluator evaluator(mesh);
+  std::vector<PreparedSegmentation> humans;
+  for (int j = 0; j < 16; ++j)
+  {
+    humans.push_back(evaluator.prepare(readSegmentation((root / "seg" / "1" / ("1_" + std::to_string(j) + ".seg")).string())));
+  }
+  double sum = 0.0;
+  int count = 0;
+  for (std::size_t a = 0; a < humans.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < humans.size(); ++b)
+    {
+      sum += evaluator.compare(humans[a], humans[b]).randIndexError;
+      ++count;
+    }
+  }
+  EXPECT_NEAR(sum / count, 0.073, 0.0005);
+}

@@ -1,0 +1,61 @@
+# The Kerf ParaView plugin end to end in pvbatch or pvpython: load it, run its proxies, check menus.
+import os
+import unittest
+
+from paraview import servermanager
+from paraview import simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
+
+RADIUS = 2.0
+CAMEL = os.path.join(os.environ["KERF_SOURCE_DIR"], "Data", "camel.off")
+
+simple.LoadPlugin(os.environ["KERF_PLUGIN"])
+
+
+def proxy_definitions(group):
+    """Yields (name, XML definition) of every proxy in `group`."""
+    definitions = servermanager.ProxyManager().SMProxyManager.GetProxyDefinitionManager()
+    iterator = definitions.NewSingleGroupIterator(group)
+    iterator.GoToFirstItem()
+    while not iterator.IsDoneWithTraversal():
+        name = iterator.GetProxyName()
+        yield name, definitions.GetProxyDefinition(group, name)
+        iterator.GoToNextItem()
+
+
+class KerfPluginTest(unittest.TestCase):
+    def test_surface_descriptors_on_a_sphere(self):
+        sphere = simple.Sphere(Radius=RADIUS, ThetaResolution=64, PhiResolution=64)
+        descriptors = simple.SurfaceDescriptors(Input=sphere)
+        descriptors.UpdatePipeline()
+        low, high = descriptors.PointData["MeanCurvature"].GetRange()
+        self.assertAlmostEqual(low * RADIUS, 1.0, delta=0.01)
+        self.assertAlmostEqual(high * RADIUS, 1.0, delta=0.01)
+
+        output = servermanager.Fetch(descriptors)
+        self.assertEqual(output.GetNumberOfPoints(), 64 * 62 + 2)
+        mean = vtk_to_numpy(output.GetPointData().GetArray("MeanCurvature"))
+        self.assertEqual(len(mean), output.GetNumberOfPoints())
+        self.assertLess(abs(mean * RADIUS - 1).mean(), 0.01)
+
+    def test_off_files_open_with_the_kerf_reader(self):
+        for reader in (simple.OpenDataFile(CAMEL), simple.OFFMeshReader(FileName=CAMEL)):
+            self.assertEqual(reader.SMProxy.GetXMLName(), "KerfOFFReader")
+            reader.UpdatePipeline()
+            information = reader.GetDataInformation()
+            self.assertEqual(information.GetNumberOfPoints(), 9770)
+            self.assertEqual(information.GetNumberOfCells(), 19536)
+
+    def test_filters_are_in_the_kerf_menu(self):
+        categories = {}
+        for name, definition in proxy_definitions("filters"):
+            if name.startswith("Kerf"):
+                hints = definition.FindNestedElementByName("Hints")
+                menu = hints.FindNestedElementByName("ShowInMenu") if hints is not None else None
+                categories[name] = menu.GetAttribute("category") if menu is not None else None
+        self.assertLessEqual({"KerfSurfaceDescriptors", "KerfSegmentationReader"}, set(categories))
+        self.assertEqual(set(categories.values()), {"Kerf"})
+
+
+if __name__ == "__main__":
+    unittest.main()
