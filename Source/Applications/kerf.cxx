@@ -31,7 +31,6 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -450,50 +449,6 @@ std::string quoted(const std::string& text)
   return out + "\"";
 }
 
-// Relabels `shown` so that each of its segments takes the label (hence the colour) of the
-// reference segment it overlaps most, largest segments first; the rest get fresh labels.
-void matchColors(vtkDataArray* shown, vtkDataArray* reference)
-{
-  std::map<int, std::map<int, int>> overlap;
-  std::map<int, int> size;
-  int freshLabel = 0;
-  for (vtkIdType c = 0; c < shown->GetNumberOfTuples(); ++c)
-  {
-    const int a = static_cast<int>(shown->GetComponent(c, 0));
-    const int b = static_cast<int>(reference->GetComponent(c, 0));
-    ++overlap[a][b];
-    ++size[a];
-    freshLabel = std::max(freshLabel, b + 1);
-  }
-  std::vector<std::pair<int, int>> bySize;
-  for (const auto& entry : size)
-  {
-    bySize.emplace_back(-entry.second, entry.first);
-  }
-  std::sort(bySize.begin(), bySize.end());
-  std::map<int, int> relabel;
-  std::set<int> taken;
-  for (const auto& entry : bySize)
-  {
-    const int label = entry.second;
-    int best = -1, bestCount = 0;
-    for (const auto& candidate : overlap[label])
-    {
-      if (!taken.count(candidate.first) && candidate.second > bestCount)
-      {
-        best = candidate.first;
-        bestCount = candidate.second;
-      }
-    }
-    relabel[label] = best >= 0 ? best : freshLabel++;
-    taken.insert(relabel[label]);
-  }
-  for (vtkIdType c = 0; c < shown->GetNumberOfTuples(); ++c)
-  {
-    shown->SetComponent(c, 0, relabel[static_cast<int>(shown->GetComponent(c, 0))]);
-  }
-}
-
 // Runs the method on one model, writes its picture, and returns its row.
 ModelRow runModel(const std::string& data, const std::string& method, const std::string& parameters,
   int model, const std::string& pictures)
@@ -533,7 +488,6 @@ ModelRow runModel(const std::string& data, const std::string& method, const std:
     right.colorArray = "Human";
     right.caption = method == "human" ? "another human" : "a human";
     vtkPolyData* shown = vtkPolyData::SafeDownCast(benchmark->GetOutputDataObject(1));
-    matchColors(shown->GetCellData()->GetArray("Method"), shown->GetCellData()->GetArray("Human"));
     std::string error;
     vtkSmartPointer<vtkRenderWindow> window = kerf::RenderSideBySide(shown, left, right, error);
     if (!window || !kerf::WritePNG(window, pictures + "/" + std::to_string(model) + ".png", error))

@@ -279,7 +279,8 @@ int vtkSegmentationBenchmark::RequestData(
     if (index + 1 == models.size())
     {
       shown->ShallowCopy(mesh);
-      shown->GetCellData()->AddArray(labelArray("Method", result.shownMethod));
+      shown->GetCellData()->AddArray(
+        labelArray("Method", kerf::matchLabels(result.shownMethod, result.shownHuman)));
       shown->GetCellData()->AddArray(labelArray("Human", result.shownHuman));
     }
     this->UpdateProgress(static_cast<double>(index + 1) / static_cast<double>(models.size()));

@@ -17,7 +17,8 @@
  * the method took, 0 for "human").
  * Output 1 (vtkPolyData): the last model's mesh with the cell arrays "Method" (the method's
  * segmentation; for "human", human 0) and "Human" (the human it is shown beside; human 1 for
- * "human", else human 0), for pictures.
+ * "human", else human 0), for pictures. "Method" is renumbered with kerf::matchLabels so that
+ * each segment carries the label of the human segment it overlaps most and colours match.
  *
  * A missing folder, an unknown method, a requested model that is not in the folder, a model with
  * too few human segmentations, and unreadable files are reported with vtkErrorMacro.

@@ -193,3 +193,12 @@ TEST(SegmentationMetrics, HumanAgreementOnPrincetonModel)
   }
   EXPECT_NEAR(sum / count, 0.073, 0.0005);
 }
+
+TEST(SegmentationMetrics, MatchLabelsFollowsTheLargestOverlap)
+{
+  // Segment 7 overlaps reference 2 most, segment 4 reference 0; segment 9 has no free match.
+  const std::vector<int> labels{ 7, 7, 7, 4, 4, 9, -1 };
+  const std::vector<int> reference{ 2, 2, 0, 0, 0, 2, 1 };
+  EXPECT_EQ(matchLabels(labels, reference), (std::vector<int>{ 2, 2, 2, 0, 0, 3, -1 }));
+  EXPECT_THROW(matchLabels({ 1 }, { 1, 2 }), Error);
+}

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <set>
 #include <unordered_map>
 
 namespace kerf
@@ -308,6 +310,52 @@ SegmentationScores SegmentationEvaluator::compare(
     scores.randIndexError = (rowPairs + columnPairs - 2.0 * samePairs) / pairs(static_cast<double>(faces));
   }
   return scores;
+}
+
+std::vector<int> matchLabels(const std::vector<int>& labels, const std::vector<int>& reference)
+{
+  if (labels.size() != reference.size())
+  {
+    throw Error("the two segmentations have different lengths");
+  }
+  std::map<int, std::map<int, int>> overlap;
+  std::map<int, int> size;
+  int fresh = 0;
+  for (std::size_t f = 0; f < labels.size(); ++f)
+  {
+    ++overlap[labels[f]][reference[f]];
+    ++size[labels[f]];
+    fresh = std::max(fresh, reference[f] + 1);
+  }
+  std::vector<std::pair<int, int>> bySize; // (-size, label): largest first, ties by label
+  for (const auto& entry : size)
+  {
+    bySize.emplace_back(-entry.second, entry.first);
+  }
+  std::sort(bySize.begin(), bySize.end());
+  std::map<int, int> renumber;
+  std::set<int> taken;
+  for (const auto& entry : bySize)
+  {
+    const int label = entry.second;
+    int best = -1, bestCount = 0;
+    for (const auto& candidate : overlap[label])
+    {
+      if (candidate.first >= 0 && !taken.count(candidate.first) && candidate.second > bestCount)
+      {
+        best = candidate.first;
+        bestCount = candidate.second;
+      }
+    }
+    renumber[label] = label < 0 ? label : (best >= 0 ? best : fresh++);
+    taken.insert(renumber[label]);
+  }
+  std::vector<int> out(labels.size());
+  for (std::size_t f = 0; f < labels.size(); ++f)
+  {
+    out[f] = renumber[labels[f]];
+  }
+  return out;
 }
 
 SegmentationScores compareSegmentations(

@@ -73,6 +73,12 @@ private:
   double AverageRadius = 0.0;
 };
 
+/// Renumbers `labels` so that each segment takes the label of the reference segment it overlaps
+/// most (by face count), largest segments first and each reference label at most once; the
+/// others get labels above the reference's largest. Comparisons do not need this (the metrics
+/// ignore label values); pictures do, so that matching segments get the same colour.
+std::vector<int> matchLabels(const std::vector<int>& labels, const std::vector<int>& reference);
+
 /// One comparison, for convenience.
 SegmentationScores compareSegmentations(
   const TriangleMesh& mesh, const std::vector<int>& evaluated, const std::vector<int>& reference);

@@ -1,0 +1,89 @@
+"""The benchmark runner: the human baseline reproduces the benchmark's numbers, and the C++ and
+Python runners agree row for row."""
+import csv
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+DATA = os.path.join(os.environ["KERF_SHARED_DATA"], "psb-dev")
+PROGRAM = os.environ["KERF_PROGRAM"]
+
+
+def readme_human_rand_index():
+    """Model id -> the "human 1-RI" column of psb-dev/README.md."""
+    values = {}
+    with open(os.path.join(DATA, "README.md")) as readme:
+        for line in readme:
+            cells = [c.strip() for c in line.split("|")]
+            if len(cells) > 7 and cells[1].isdigit():
+                values[int(cells[1])] = float(cells[7])
+    return values
+
+
+def read_rows(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+class BenchmarkRunner(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.folder = tempfile.mkdtemp(prefix="kerf-benchmark-", dir=os.environ.get("KERF_TEST_OUTPUT"))
+        cls.cli = subprocess.run([PROGRAM, "benchmark", "--data", DATA, "--method", "human",
+                                  "--jobs", "2", "--no-pictures", "-o", os.path.join(cls.folder, "cli")],
+                                 capture_output=True, text=True, timeout=600)
+
+    def test_human_baseline_matches_the_benchmark(self):
+        self.assertEqual(self.cli.returncode, 0, self.cli.stderr)
+        expected = readme_human_rand_index()
+        rows = read_rows(os.path.join(self.folder, "cli", "results.csv"))
+        self.assertEqual(sorted(int(r["Model"]) for r in rows), sorted(expected))
+        for row in rows:
+            model = int(row["Model"])
+            self.assertEqual(round(float(row["RandIndexError"]), 3), expected[model], "model %d" % model)
+            self.assertEqual(row["Method"], "human")
+            humans = len([f for f in os.listdir(os.path.join(DATA, "seg", str(model))) if f.endswith(".seg")])
+            self.assertEqual(int(row["Comparisons"]), humans * (humans - 1) // 2)
+        summary = {r["Category"]: r for r in read_rows(os.path.join(self.folder, "cli", "summary.csv"))}
+        self.assertEqual(int(summary["all"]["Models"]), len(expected))
+        mean = sum(expected.values()) / len(expected)
+        self.assertAlmostEqual(float(summary["all"]["RandIndexError"]), mean, delta=0.0006)
+        self.assertEqual(int(summary["Bearing"]["Models"]), 3)
+        self.assertIn("[ 40/40]", self.cli.stdout)
+
+    def test_python_runner_agrees_with_the_program(self):
+        out = os.path.join(self.folder, "python")
+        result = subprocess.run([sys.executable, "-m", "kerf.benchmark", "--data", DATA,
+                                 "--models", "9,142,353", "--jobs", "2", "-o", out],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        ours = {r["Model"]: r for r in read_rows(os.path.join(out, "results.csv"))}
+        cli = {r["Model"]: r for r in read_rows(os.path.join(self.folder, "cli", "results.csv"))}
+        self.assertEqual(sorted(ours), ["142", "353", "9"])
+        for model, row in ours.items():
+            self.assertEqual(row, cli[model])
+        for model in ("9", "142", "353"):
+            with open(os.path.join(out, "pictures", model + ".png"), "rb") as png:
+                self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
+
+    def test_errors_are_reported(self):
+        for arguments, message in (
+                (["--data", "/nonexistent/psb"], "no off/ subfolder"),
+                (["--data", DATA, "--method", "nonsense", "--models", "1"], "Unknown method 'nonsense'"),
+                (["--data", DATA, "--models", "12345"], "Model 12345 is not in"),
+                (["--data", DATA, "--jobs", "0"], "--jobs expects")):
+            for command in ([PROGRAM, "benchmark"], [sys.executable, "-m", "kerf.benchmark"]):
+                result = subprocess.run(command + arguments + ["--no-pictures", "-o", os.path.join(self.folder, "bad")],
+                                        capture_output=True, text=True, timeout=120)
+                self.assertEqual(result.returncode, 1, command + arguments)
+                self.assertIn(message, result.stderr, command + arguments)
+                self.assertNotIn("ERROR:", result.stderr)
+
+
+if __name__ == "__main__":
+    if not os.path.isdir(os.path.join(DATA, "off")):
+        print("../shared/data/psb-dev is absent: skipped")
+        sys.exit(125)
+    unittest.main(argv=[sys.argv[0]])
