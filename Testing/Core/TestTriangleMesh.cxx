@@ -3,6 +3,7 @@
 #include "Mesh/MeshGenerators.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/OpenMeshAdapter.h"
+#include "Mesh/PointWelding.h"
 #include "Mesh/TriangleMesh.h"
 
 #include <gtest/gtest.h>
@@ -288,4 +289,25 @@ TEST(OpenMeshAdapter, RefusesNonManifoldInput)
   const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
     { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
   EXPECT_THROW(toEditableMesh(mesh), Error);
+}
+
+TEST(PointWelding, IdenticalCoordinatesShareTheFirstIndex)
+{
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<Vector3> points = { { 0, 0, 0 }, { 1, 2, 3 }, { -0.0, 0, 0 }, { 1, 2, 3 },
+    { 1, 2, 3.0000000001 }, { nan, 0, 0 }, { nan, 0, 0 } };
+  EXPECT_EQ(findCoincidentPoints(points), (std::vector<int>{ 0, 1, 0, 1, 4, 5, 6 }));
+  std::vector<Triangle> triangles = { { 3, 2, 4 } };
+  weldTriangles(findCoincidentPoints(points), triangles);
+  EXPECT_EQ(triangles[0], (Triangle{ 1, 0, 4 }));
+  // Many points: a torus's own points are distinct; every duplicate finds its original.
+  const TriangleMesh torus = makeTorus(2.0, 0.5, 200, 100);
+  std::vector<Vector3> doubled = torus.points();
+  doubled.insert(doubled.end(), torus.points().begin(), torus.points().end());
+  const std::vector<int> rep = findCoincidentPoints(doubled);
+  for (int v = 0; v < torus.vertexCount(); ++v)
+  {
+    ASSERT_EQ(rep[v], v);
+    ASSERT_EQ(rep[v + torus.vertexCount()], v);
+  }
 }

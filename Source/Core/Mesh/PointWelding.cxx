@@ -1,63 +1,71 @@
-// Exact coincident-point detection with a hash table on the coordinates' bit patterns.
+// Exact coincident-point detection with an open-addressing hash table on the coordinates' bits.
 #include "Mesh/PointWelding.h"
 
 #include <cstdint>
 #include <cstring>
-#include <unordered_map>
 
 namespace kerf
 {
 
 namespace
 {
-struct Coordinates
+// Bit pattern of a coordinate, with -0.0 turned into 0.0 so that both compare equal.
+std::uint64_t bits(double value)
 {
-  std::uint64_t bits[3];
-  bool operator==(const Coordinates& other) const
-  {
-    return bits[0] == other.bits[0] && bits[1] == other.bits[1] && bits[2] == other.bits[2];
-  }
-};
+  value += 0.0;
+  std::uint64_t b;
+  std::memcpy(&b, &value, sizeof b);
+  return b;
+}
 
-struct CoordinatesHash
+std::uint64_t mix(std::uint64_t h)
 {
-  std::size_t operator()(const Coordinates& c) const
-  {
-    std::uint64_t h = 0x9E3779B97F4A7C15ull;
-    for (std::uint64_t b : c.bits)
-    {
-      h ^= b + 0x9E3779B97F4A7C15ull + (h << 6) + (h >> 2);
-    }
-    return static_cast<std::size_t>(h * 0xFF51AFD7ED558CCDull);
-  }
-};
-
-Coordinates key(const Vector3& p)
-{
-  Coordinates c;
-  for (int k = 0; k < 3; ++k)
-  {
-    const double value = p[k] + 0.0; // turns -0.0 into 0.0
-    std::memcpy(&c.bits[k], &value, sizeof(double));
-  }
-  return c;
+  h ^= h >> 33;
+  h *= 0xFF51AFD7ED558CCDull;
+  h ^= h >> 33;
+  h *= 0xC4CEB9FE1A85EC53ull;
+  h ^= h >> 33;
+  return h;
 }
 } // namespace
 
 std::vector<int> findCoincidentPoints(const std::vector<Vector3>& points)
 {
-  std::vector<int> representative(points.size());
-  std::unordered_map<Coordinates, int, CoordinatesHash> first;
-  first.reserve(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
+  const std::size_t n = points.size();
+  std::vector<int> representative(n);
+  std::size_t capacity = 16;
+  while (capacity < 2 * n)
+  {
+    capacity *= 2;
+  }
+  std::vector<int> table(capacity, -1); // point index, or -1 for an empty slot
+  const std::size_t mask = capacity - 1;
+  for (std::size_t i = 0; i < n; ++i)
   {
     representative[i] = static_cast<int>(i);
-    if (!points[i].allFinite())
+    const Vector3& p = points[i];
+    if (!p.allFinite())
     {
       continue;
     }
-    const auto inserted = first.emplace(key(points[i]), static_cast<int>(i));
-    representative[i] = inserted.first->second;
+    const std::uint64_t x = bits(p.x()), y = bits(p.y()), z = bits(p.z());
+    std::size_t slot = static_cast<std::size_t>(mix(x ^ mix(y ^ mix(z)))) & mask;
+    while (true)
+    {
+      const int other = table[slot];
+      if (other < 0)
+      {
+        table[slot] = static_cast<int>(i);
+        break;
+      }
+      const Vector3& q = points[other];
+      if (bits(q.x()) == x && bits(q.y()) == y && bits(q.z()) == z)
+      {
+        representative[i] = other;
+        break;
+      }
+      slot = (slot + 1) & mask;
+    }
   }
   return representative;
 }
