@@ -5,7 +5,9 @@
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkContourFilter.h>
 #include <vtkDataArray.h>
+#include <vtkDataObject.h>
 #include <vtkDiscretizableColorTransferFunction.h>
 #include <vtkIdList.h>
 #include <vtkLookupTable.h>
@@ -208,7 +210,8 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
         {
           m = std::abs(m);
         }
-        hi = std::max(quantile(magnitudes, options.rangeFraction), 1e-12);
+        hi = options.symmetricRange > 0.0 ? options.symmetricRange
+                                          : std::max(quantile(magnitudes, options.rangeFraction), 1e-12);
         lo = -hi;
         ctf->AddRGBPoint(lo, 0.230, 0.299, 0.754);
         ctf->AddRGBPoint(0.0, 0.865, 0.865, 0.865);
@@ -263,6 +266,49 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
       legend->GetLabelTextProperty()->SetFontSize(12);
       renderer->AddActor2D(legend);
     }
+  }
+
+  if (options.isolineCount > 0 && !options.colorArray.empty() &&
+    surface->GetPointData()->GetArray(options.colorArray.c_str()))
+  {
+    double range[2];
+    surface->GetPointData()->GetArray(options.colorArray.c_str())->GetRange(range);
+    const double* tableRange = mapper->GetLookupTable()->GetRange();
+    const double lo = std::max(range[0], tableRange[0]), hi = std::min(range[1], tableRange[1]);
+    vtkNew<vtkContourFilter> contours;
+    contours->SetInputData(surface);
+    contours->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, options.colorArray.c_str());
+    contours->GenerateValues(options.isolineCount, lo + (hi - lo) / (options.isolineCount + 1),
+      hi - (hi - lo) / (options.isolineCount + 1));
+    contours->ComputeScalarsOff();
+    vtkNew<vtkPolyDataMapper> contourMapper;
+    contourMapper->SetInputConnection(contours->GetOutputPort());
+    contourMapper->ScalarVisibilityOff();
+    contourMapper->SetResolveCoincidentTopologyToPolygonOffset();
+    vtkNew<vtkActor> contourActor;
+    contourActor->SetMapper(contourMapper);
+    contourActor->GetProperty()->SetColor(0.15, 0.15, 0.15);
+    contourActor->GetProperty()->SetLineWidth(1.0);
+    contourActor->GetProperty()->LightingOff();
+    renderer->AddActor(contourActor);
+    mapper->SetResolveCoincidentTopologyToPolygonOffset();
+  }
+
+  for (const SceneOptions::Overlay& overlay : options.overlays)
+  {
+    vtkNew<vtkPolyDataMapper> overlayMapper;
+    overlayMapper->SetInputData(overlay.data);
+    overlayMapper->ScalarVisibilityOff();
+    overlayMapper->SetResolveCoincidentTopologyToPolygonOffset();
+    vtkNew<vtkActor> overlayActor;
+    overlayActor->SetMapper(overlayMapper);
+    overlayActor->GetProperty()->SetColor(overlay.color[0], overlay.color[1], overlay.color[2]);
+    overlayActor->GetProperty()->SetLineWidth(static_cast<float>(overlay.width));
+    overlayActor->GetProperty()->SetPointSize(static_cast<float>(overlay.width));
+    overlayActor->GetProperty()->SetRenderPointsAsSpheres(true);
+    overlayActor->GetProperty()->SetRenderLinesAsTubes(true);
+    renderer->AddActor(overlayActor);
+    mapper->SetResolveCoincidentTopologyToPolygonOffset();
   }
 
   vtkNew<vtkActor> actor;
@@ -373,6 +419,30 @@ vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const Sc
   window->AddRenderer(b);
   window->Render();
   return window;
+}
+
+vtkSmartPointer<vtkRenderWindow> RenderCutScene(vtkPolyData* labelledSurface, vtkPolyData* stroke,
+  vtkPolyData* constraints, vtkPolyData* cut, const std::string& caption, std::string& error)
+{
+  SceneOptions left;
+  left.colorArray = "HarmonicField";
+  left.legendTitle = "Harmonic\nfield";
+  left.symmetricRange = 3.0; // the constraints are I - 1 and I + 1 around the cut
+  left.isolineCount = 11;
+  left.width = 1200;
+  left.height = 600;
+  left.zoom = 1.15;
+  left.azimuth = 45.0;
+  left.elevation = 10.0;
+  left.caption = caption;
+  left.overlays = { { stroke, { { 0.1, 0.7, 0.1 } }, 7.0 }, { constraints, { { 0.95, 0.85, 0.1 } }, 7.0 } };
+  SceneOptions right = left;
+  right.colorArray = "Segment";
+  right.colorMap = SceneOptions::ColorMap::Categorical;
+  right.isolineCount = 0;
+  right.caption = "segments and the cut";
+  right.overlays = { { cut, { { 0.9, 0.1, 0.1 } }, 4.0 } };
+  return RenderSideBySide(labelledSurface, left, right, error);
 }
 
 bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error)

@@ -3,7 +3,9 @@
 
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 class vtkRenderWindow;
@@ -27,12 +29,25 @@ struct SceneOptions
   ColorMap colorMap = ColorMap::Diverging;
   /// The colour range covers this fraction of the values (robust to outliers); 1 for all.
   double rangeFraction = 0.95;
+  /// If > 0, a diverging map spans [-symmetricRange, symmetricRange] instead.
+  double symmetricRange = 0.0;
   /// Point vector array drawn as short strokes on the surface ("" for none).
   std::string directionArray;
   /// Approximate number of strokes.
   int directionCount = 3000;
   /// Title shown above the colour legend.
   std::string legendTitle;
+  /// Number of isolines of the colour array drawn over the surface (point arrays; 0 for none).
+  int isolineCount = 0;
+  /// Extra geometry drawn over the surface: lines as tubes of the given width (pixels), points
+  /// as round sprites of that size.
+  struct Overlay
+  {
+    vtkSmartPointer<vtkPolyData> data;
+    std::array<double, 3> color{ { 0.0, 0.0, 0.0 } };
+    double width = 3.0;
+  };
+  std::vector<Overlay> overlays;
   /// Caption drawn in the top-left corner.
   std::string caption;
   int width = 900;
@@ -60,6 +75,12 @@ vtkSmartPointer<vtkRenderWindow> RenderScene(
 /// segmentation beside a human's. The window takes the left options' size; each view gets half.
 vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
   const SceneOptions& right, std::string& error);
+
+/// A harmonic cut in two views: on the left the field "HarmonicField" with isolines, the stroke
+/// (green) and its constraint points (yellow); on the right the cell array "Segment" and the cut
+/// curve (red). 1200 x 600 pixels.
+vtkSmartPointer<vtkRenderWindow> RenderCutScene(vtkPolyData* labelledSurface, vtkPolyData* stroke,
+  vtkPolyData* constraints, vtkPolyData* cut, const std::string& caption, std::string& error);
 
 /// Writes the window's image as PNG; false and `error` on failure.
 bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error);

@@ -2,13 +2,18 @@
 #include "KerfErrorCollector.h"
 #include "KerfScene.h"
 #include "vtkMeshFileReader.h"
+#include "vtkHarmonicField.h"
+#include "vtkIsolineScoring.h"
 #include "vtkMeshFileWriter.h"
+#include "vtkStrokeConstraints.h"
 #include "vtkSegmentationBenchmark.h"
 #include "vtkSurfaceDescriptors.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkStringArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -347,6 +352,146 @@ int descriptors(const Arguments& args)
   return 0;
 }
 
+
+// ---- harmonic cuts --------------------------------------------------------------------------
+
+// The stages of a stroke cut, kept alive together so that their outputs stay valid.
+struct CutPipeline
+{
+  vtkNew<vtkSurfaceDescriptors> descriptors;
+  vtkNew<vtkStrokeConstraints> constraints;
+  vtkNew<vtkHarmonicField> field;
+  vtkNew<vtkIsolineScoring> cut;
+  std::map<std::string, double> milliseconds;
+};
+
+int weightingCode(const std::string& name)
+{
+  if (name == "uniform")
+  {
+    return vtkHarmonicField::UNIFORM;
+  }
+  if (name == "cotangent")
+  {
+    return vtkHarmonicField::COTANGENT;
+  }
+  if (name == "concavity")
+  {
+    return vtkHarmonicField::CONCAVITY_AWARE;
+  }
+  if (name == "smooth-concavity")
+  {
+    return vtkHarmonicField::SMOOTH_CONCAVITY;
+  }
+  throw CommandError{ "--weighting must be uniform, cotangent, concavity or smooth-concavity, got '" + name + "'" };
+}
+
+// mesh -> descriptors -> stroke constraints -> harmonic field -> cut nearest the stroke.
+void runCut(CutPipeline& p, vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& args)
+{
+  auto timed = [&p](vtkAlgorithm* algorithm, const std::string& stage) {
+    const auto start = std::chrono::steady_clock::now();
+    run(algorithm, stage);
+    p.milliseconds[stage] = millisecondsSince(start);
+  };
+  p.descriptors->SetInputData(mesh);
+  timed(p.descriptors, "surface descriptors");
+  p.constraints->SetInputConnection(p.descriptors->GetOutputPort());
+  p.constraints->SetInputData(1, stroke);
+  p.constraints->SetSamplesPerSegment(static_cast<int>(args.number("samples", 4)));
+  p.constraints->SetOffset(args.number("offset", 0.01));
+  p.constraints->SetIsoValue(args.number("iso-value", 0.0));
+  timed(p.constraints, "stroke constraints");
+  p.field->SetInputConnection(p.descriptors->GetOutputPort());
+  p.field->SetInputConnection(1, p.constraints->GetOutputPort());
+  p.field->SetWeighting(weightingCode(args.get("weighting", "cotangent")));
+  p.field->SetSoftConstraintWeight(args.number("soft-weight", 1.0));
+  timed(p.field, "harmonic field");
+  p.cut->SetInputConnection(p.field->GetOutputPort());
+  p.cut->SetInputData(1, stroke);
+  p.cut->SetModeToNearStroke();
+  p.cut->SetIsoValue(args.number("iso-value", 0.0));
+  timed(p.cut, "cut");
+}
+
+// Left: the field with isolines, the stroke and its constraints; right: the segments and the cut.
+void renderCut(CutPipeline& p, vtkPolyData* stroke, const std::string& caption, const std::string& file)
+{
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderCutScene(p.cut->GetLabelledSurface(), stroke,
+    p.constraints->GetOutput(), p.cut->GetOutput(), caption, error);
+  if (!window || !kerf::WritePNG(window, file, error))
+  {
+    throw CommandError{ "cannot draw the cut: " + error };
+  }
+}
+
+std::string segmentSizes(vtkPolyData* surface)
+{
+  vtkDataArray* labels = surface->GetCellData()->GetArray("Segment");
+  std::map<int, int> sizes;
+  for (vtkIdType c = 0; c < labels->GetNumberOfTuples(); ++c)
+  {
+    ++sizes[static_cast<int>(labels->GetComponent(c, 0))];
+  }
+  std::ostringstream out;
+  out << sizes.size() << " segments (";
+  bool first = true;
+  for (const auto& entry : sizes)
+  {
+    out << (first ? "" : ", ") << entry.second;
+    first = false;
+  }
+  out << " triangles)";
+  return out.str();
+}
+
+std::string cutSummary(vtkPolyData* curve)
+{
+  std::ostringstream out;
+  double length = 0.0;
+  int closed = 0;
+  for (vtkIdType c = 0; c < curve->GetNumberOfCells(); ++c)
+  {
+    length += curve->GetCellData()->GetArray("Length")->GetComponent(c, 0);
+    closed += static_cast<int>(curve->GetCellData()->GetArray("Closed")->GetComponent(c, 0));
+  }
+  out << curve->GetNumberOfCells() << (curve->GetNumberOfCells() == 1 ? " curve" : " curves") << " ("
+      << closed << " closed), length " << std::setprecision(4) << length;
+  return out.str();
+}
+
+int cut(const Arguments& args)
+{
+  const std::string input = requireOne(args, "mesh file");
+  if (!args.has("stroke"))
+  {
+    throw CommandError{ "cut needs --stroke FILE (a polyline drawn on the surface)" };
+  }
+  vtkSmartPointer<vtkPolyData> mesh = readMesh(input);
+  vtkSmartPointer<vtkPolyData> stroke = readMesh(args.get("stroke"));
+  CutPipeline pipeline;
+  runCut(pipeline, mesh, stroke, args);
+  if (args.has("output"))
+  {
+    writeMesh(pipeline.cut->GetLabelledSurface(), args.get("output"));
+  }
+  if (args.has("curve"))
+  {
+    writeMesh(pipeline.cut->GetOutput(), args.get("curve"));
+  }
+  if (args.has("png"))
+  {
+    renderCut(pipeline, stroke, "harmonic field from one stroke", args.get("png"));
+  }
+  if (!args.has("quiet"))
+  {
+    std::cout << "cut of " << input << ": " << cutSummary(pipeline.cut->GetOutput()) << "; "
+              << segmentSizes(pipeline.cut->GetLabelledSurface()) << "\n";
+  }
+  return 0;
+}
+
 std::string defaultShowcaseMesh(const char* program)
 {
   // Installed: <prefix>/bin/kerf and <prefix>/share/kerf/Data; in the build tree: the sources.
@@ -367,60 +512,64 @@ int showcase(const Arguments& args, const char* program)
     throw CommandError{ "expected at most one mesh file (see --help)" };
   }
   const std::string input = args.positional.empty() ? defaultShowcaseMesh(program) : args.positional[0];
+  const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(input);
+  const std::string strokeFile = args.has("stroke") ? args.get("stroke")
+    : vtksys::SystemTools::GetFilenamePath(input) + "/" + stem + "-neck-stroke.vtk";
+  if (!vtksys::SystemTools::FileExists(strokeFile, true))
+  {
+    throw CommandError{ "no stroke for " + input + ": give one with --stroke FILE" };
+  }
   const std::string folder = args.get("output", "kerf-output");
   if (!vtksys::SystemTools::MakeDirectory(folder))
   {
     throw CommandError{ "cannot create the output folder " + folder };
   }
-  const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(input);
   const auto start = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkPolyData> mesh = readMesh(input);
+  vtkSmartPointer<vtkPolyData> stroke = readMesh(strokeFile);
   const double readTime = millisecondsSince(start);
+  CutPipeline pipeline;
+  runCut(pipeline, mesh, stroke, args);
+  vtkPolyData* surface = pipeline.cut->GetLabelledSurface();
+  vtkPolyData* curve = pipeline.cut->GetOutput();
 
-  vtkNew<vtkSurfaceDescriptors> filter;
-  filter->SetInputData(mesh);
-  const auto computeStart = std::chrono::steady_clock::now();
-  run(filter, "surface descriptors");
-  const double computeTime = millisecondsSince(computeStart);
-  vtkPolyData* output = filter->GetOutput();
+  const std::string surfaceFile = folder + "/" + stem + "-cut.vtp";
+  const std::string curveFile = folder + "/" + stem + "-cut-curve.vtp";
+  const std::string imageFile = folder + "/" + stem + "-cut.png";
+  writeMesh(surface, surfaceFile);
+  writeMesh(curve, curveFile);
+  renderCut(pipeline, stroke, stem + ": a cut from one stroke", imageFile);
 
-  const std::string surfaceFile = folder + "/" + stem + "-descriptors.vtp";
-  writeMesh(output, surfaceFile);
-  kerf::SceneOptions options = sceneOptions(args);
-  options.colorArray = "MeanCurvature";
-  options.legendTitle = "Mean\ncurvature";
-  options.rangeFraction = 0.85;
-  options.directionArray = "MinimumCurvatureDirection";
-  options.directionCount = 5000;
-  options.caption = stem + ": mean curvature and minimum-curvature directions";
-  const std::string imageFile = folder + "/" + stem + "-descriptors.png";
-  renderPNG(output, options, imageFile);
-
-  vtkDataArray* concave = output->GetPointData()->GetArray("Concave");
-  double concaveCount = 0.0;
-  for (vtkIdType i = 0; i < concave->GetNumberOfTuples(); ++i)
+  vtkFieldData* solve = pipeline.field->GetOutput()->GetFieldData();
+  std::string cellArrays;
+  for (int i = 0; i < surface->GetCellData()->GetNumberOfArrays(); ++i)
   {
-    concaveCount += concave->GetComponent(i, 0);
+    cellArrays += (cellArrays.empty() ? "" : ", ") + std::string(surface->GetCellData()->GetArrayName(i));
   }
-  double range[2];
-  output->GetPointData()->GetArray("MeanCurvature")->GetRange(range);
   std::cout << std::fixed << std::setprecision(1);
-  std::cout << "Kerf showcase: surface descriptors\n"
-            << "  mesh:      " << input << "\n"
-            << "  size:      " << output->GetNumberOfPoints() << " points, "
-            << output->GetNumberOfPolys() << " triangles\n"
-            << "  computed:  " << arrayList(output) << "\n"
-            << "  concave:   " << std::setprecision(1)
-            << 100.0 * concaveCount / std::max<double>(1.0, concave->GetNumberOfTuples())
-            << "% of the vertices; mean curvature from " << std::setprecision(3) << range[0]
-            << " to " << range[1] << "\n"
-            << std::setprecision(1) << "  time:      read " << readTime << " ms, descriptors "
-            << computeTime << " ms, total " << millisecondsSince(start) << " ms\n"
+  std::cout << "Kerf showcase: a harmonic cut from one stroke\n"
+            << "  mesh:      " << input << " (" << surface->GetNumberOfPoints() << " points, "
+            << surface->GetNumberOfPolys() << " triangles)\n"
+            << "  stroke:    " << strokeFile << " (" << stroke->GetNumberOfPoints() << " points -> "
+            << pipeline.constraints->GetOutput()->GetNumberOfPoints() << " constraints)\n"
+            << "  computed:  point arrays " << arrayList(surface) << "\n"
+            << "             cell arrays " << cellArrays << "\n"
+            << "  cut:       " << cutSummary(curve) << "; " << segmentSizes(surface) << "\n"
+            << "  solve:     " << args.get("weighting", "cotangent") << " weights, "
+            << vtkStringArray::SafeDownCast(solve->GetAbstractArray("SolverWork"))->GetValue(0)
+            << ", relative residual " << std::scientific << std::setprecision(1)
+            << solve->GetArray("RelativeResidual")->GetComponent(0, 0) << std::fixed << "\n"
+            << "  time:      read " << readTime << " ms";
+  for (const char* stage : { "surface descriptors", "stroke constraints", "harmonic field", "cut" })
+  {
+    std::cout << ", " << stage << " " << pipeline.milliseconds[stage] << " ms";
+  }
+  std::cout << "; total " << millisecondsSince(start) << " ms\n"
             << "  surface:   " << vtksys::SystemTools::CollapseFullPath(surfaceFile) << "\n"
+            << "  cut curve: " << vtksys::SystemTools::CollapseFullPath(curveFile) << "\n"
             << "  picture:   " << vtksys::SystemTools::CollapseFullPath(imageFile) << "\n";
   return 0;
 }
-
 
 // ---- the benchmark runner -------------------------------------------------------------------
 
@@ -823,9 +972,19 @@ struct Command
 };
 
 const Command Commands[] = {
-  { "showcase", "kerf showcase [MESH] [-o FOLDER]",
-    "Runs the showcase pipeline on MESH (default: the bundled camel) and writes a .vtp with every\n"
-    "computed array and a PNG into FOLDER (default: kerf-output), then prints a summary." },
+  { "showcase", "kerf showcase [MESH] [--stroke FILE] [-o FOLDER]",
+    "The showcase pipeline: cuts MESH (default: the bundled camel) along a stroke (default:\n"
+    "<mesh>-neck-stroke.vtk beside the mesh): surface descriptors, stroke constraints, harmonic\n"
+    "field, the isoline nearest the stroke and the segments it bounds. Writes the surface with\n"
+    "every computed array (.vtp), the cut curve (.vtp) and a picture (.png) into FOLDER\n"
+    "(default: kerf-output), then prints a summary." },
+  { "cut", "kerf cut MESH --stroke FILE [-o OUT.vtp] [--curve CURVE.vtp] [--png OUT.png] [cut options]",
+    "Cuts MESH along the isoline of a harmonic field built from a stroke (SeamCut): the stroke\n"
+    "becomes +1/-1 constraints on both sides, the field is solved, and the isoline nearest the\n"
+    "stroke splits the mesh into segments (cell array Segment).\n"
+    "Cut options: --weighting uniform|cotangent|concavity|smooth-concavity (cotangent),\n"
+    "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.01),\n"
+    "--soft-weight W (1)." },
   { "descriptors", "kerf descriptors MESH [-o OUT.vtp] [--png OUT.png] [render options]",
     "Computes the surface descriptors (normals, principal curvatures and directions, mean and\n"
     "Gaussian curvature, concavity, normal-cone angle) and writes them and/or a picture." },
@@ -911,6 +1070,10 @@ int main(int argc, char* argv[])
       if (name == "benchmark")
       {
         return benchmark(args);
+      }
+      if (name == "cut")
+      {
+        return cut(args);
       }
       if (name == "convert")
       {

@@ -172,13 +172,13 @@ bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements
       this->Source[t] = polygonCell[triangulation.sourcePolygon[t]];
     }
     TriangleMesh::checkIndices(triangulation.triangles, static_cast<int>(polygons.points.size()));
-    this->Representative = findCoincidentPoints(polygons.points);
+    this->Representatives = findCoincidentPoints(polygons.points);
     this->Welded = 0;
-    for (std::size_t i = 0; i < this->Representative.size(); ++i)
+    for (std::size_t i = 0; i < this->Representatives.size(); ++i)
     {
-      this->Welded += this->Representative[i] != static_cast<int>(i) ? 1 : 0;
+      this->Welded += this->Representatives[i] != static_cast<int>(i) ? 1 : 0;
     }
-    weldTriangles(this->Representative, triangulation.triangles);
+    weldTriangles(this->Representatives, triangulation.triangles);
     this->Surface = TriangleMesh(std::move(polygons.points), std::move(triangulation.triangles));
     this->Inspection = inspectMesh(this->Surface);
     const std::string problems = describeProblems(this->Inspection, requirements);
@@ -198,6 +198,25 @@ bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements
     error = "out of memory while converting the input surface";
     return false;
   }
+  return true;
+}
+
+bool SurfaceInput::LoadIfChanged(
+  vtkPolyData* input, const MeshRequirements& requirements, std::string& error, bool& reused)
+{
+  reused = this->Loaded && input && input == this->LoadedObject && input->GetMTime() == this->LoadedTime;
+  if (reused)
+  {
+    return true;
+  }
+  this->Loaded = false;
+  if (!this->Load(input, requirements, error))
+  {
+    return false;
+  }
+  this->LoadedObject = input;
+  this->LoadedTime = input->GetMTime();
+  this->Loaded = true;
   return true;
 }
 

@@ -34,6 +34,12 @@ public:
   /// Converts and validates. Returns false and sets `error` to a sentence naming the problem.
   bool Load(vtkPolyData* input, const MeshRequirements& requirements, std::string& error);
 
+  /// As Load, but keeps the current mesh when `input` is the data object loaded last time and
+  /// has not been modified since, so that a filter re-executing for a parameter change (an
+  /// iso-value, new constraints) does not convert its mesh again. `reused` tells which happened.
+  bool LoadIfChanged(vtkPolyData* input, const MeshRequirements& requirements, std::string& error,
+    bool& reused);
+
   const TriangleMesh& Mesh() const { return this->Surface; }
   const MeshReport& Report() const { return this->Inspection; }
   /// Input cell id of each triangle.
@@ -41,13 +47,16 @@ public:
   /// Number of input points that were welded onto an earlier point with the same coordinates.
   int WeldedPointCount() const { return this->Welded; }
 
+  /// The Core vertex that stands for input point `point` (itself unless welded).
+  int Representative(int point) const { return this->Representatives[static_cast<std::size_t>(point)]; }
+
   /// Copies each representative's value to the input points welded onto it.
   template <typename T>
   void ExpandToInputPoints(std::vector<T>& values) const
   {
-    for (std::size_t i = 0; i < this->Representative.size() && i < values.size(); ++i)
+    for (std::size_t i = 0; i < this->Representatives.size() && i < values.size(); ++i)
     {
-      values[i] = values[static_cast<std::size_t>(this->Representative[i])];
+      values[i] = values[static_cast<std::size_t>(this->Representatives[i])];
     }
   }
 
@@ -61,9 +70,13 @@ private:
   TriangleMesh Surface;
   MeshReport Inspection;
   std::vector<vtkIdType> Source;
-  std::vector<int> Representative;
+  std::vector<int> Representatives;
   int Welded = 0;
   bool Rebuild = false;
+  // What LoadIfChanged loaded last.
+  const void* LoadedObject = nullptr;
+  vtkMTimeType LoadedTime = 0;
+  bool Loaded = false;
 };
 
 /// Copies a tuple-per-point or tuple-per-cell array into doubles; false if the component count

@@ -22,18 +22,21 @@ class CommandLine(unittest.TestCase):
     def test_help_lists_every_command(self):
         result = run("--help")
         self.assertEqual(result.returncode, 0)
-        for command in ("showcase", "descriptors", "info", "convert", "render"):
+        for command in ("showcase", "cut", "descriptors", "info", "convert", "render", "benchmark"):
             self.assertIn(command, result.stdout)
         self.assertEqual(run("descriptors", "--help").returncode, 0)
         self.assertEqual(run().returncode, 2)
 
-    def test_showcase_writes_surface_picture_and_summary(self):
+    def test_showcase_writes_surface_curve_picture_and_summary(self):
         result = run("showcase", "-o", self.folder)
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("9770 points, 19536 triangles", result.stdout)
-        surface = os.path.join(self.folder, "camel-descriptors.vtp")
-        picture = os.path.join(self.folder, "camel-descriptors.png")
-        self.assertIn(surface, result.stdout)
+        self.assertIn("2 segments", result.stdout)
+        surface = os.path.join(self.folder, "camel-cut.vtp")
+        curve = os.path.join(self.folder, "camel-cut-curve.vtp")
+        picture = os.path.join(self.folder, "camel-cut.png")
+        for path in (surface, curve, picture):
+            self.assertIn(path, result.stdout)
         with open(picture, "rb") as png:
             self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
         self.assertGreater(os.path.getsize(picture), 50000)
@@ -45,8 +48,34 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(data.GetNumberOfCells(), 19536)
         names = {data.GetPointData().GetArrayName(i) for i in range(data.GetPointData().GetNumberOfArrays())}
         self.assertTrue({"Normals", "MaximumCurvature", "MinimumCurvature", "MeanCurvature",
-                         "GaussianCurvature", "Concave", "NormalConeAngle",
+                         "GaussianCurvature", "Concave", "NormalConeAngle", "HarmonicField",
                          "MaximumCurvatureDirection", "MinimumCurvatureDirection"} <= names)
+        cells = {data.GetCellData().GetArrayName(i) for i in range(data.GetCellData().GetNumberOfArrays())}
+        self.assertTrue({"Segment", "FieldGradient", "FieldGradientMagnitude"} <= cells)
+        segments = data.GetCellData().GetArray("Segment")
+        self.assertEqual(segments.GetRange(), (0.0, 1.0))
+        reader.SetFileName(curve)
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetNumberOfCells(), 1)
+        self.assertEqual(reader.GetOutput().GetCellData().GetArray("Closed").GetValue(0), 1)
+
+    def test_descriptors_and_cut_commands(self):
+        out = os.path.join(self.folder, "hand-descriptors.vtp")
+        result = run("descriptors", os.path.join(SOURCE, "Data", "hand.off"), "-o", out,
+                     "--png", os.path.join(self.folder, "hand.png"))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("1197 points, 2390 triangles", result.stdout)
+        cut = os.path.join(self.folder, "camel-cut.vtk")
+        result = run("cut", os.path.join(SOURCE, "Data", "camel.off"), "--stroke",
+                     os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"), "-o", cut,
+                     "--weighting", "concavity")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("1 curve (1 closed)", result.stdout)
+        self.assertIn("2 segments", result.stdout)
+        result = run("cut", os.path.join(SOURCE, "Data", "camel.off"), "--stroke",
+                     os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"), "--weighting", "mystery")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--weighting must be", result.stderr)
 
     def test_convert_round_trip_keeps_the_surface(self):
         for extension in (".ply", ".obj", ".stl", ".vtk", ".vtp", ".off"):

@@ -3,6 +3,7 @@
 
 #include "Error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -160,6 +161,34 @@ TriangleMesh makeGrid(double width, double height, int columns, int rows)
     }
   }
   return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& lobeRadii,
+  double neckHeight, double neckDepth)
+{
+  const double s = std::clamp(z / halfLength, -1.0, 1.0);
+  const double neck = neckHeight / halfLength;
+  // Smooth step between the two lobe radii across the neck.
+  const double blend = 0.5 * (1.0 + std::tanh((s - neck) / 0.15));
+  const double lobe = (1.0 - blend) * lobeRadii[0] + blend * lobeRadii[1];
+  const double pinch = 1.0 - neckDepth * std::exp(-((s - neck) / 0.2) * ((s - neck) / 0.2));
+  return std::sqrt(std::max(0.0, 1.0 - s * s)) * lobe * pinch;
+}
+
+TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
+  double neckHeight, double neckDepth, int levels)
+{
+  const TriangleMesh sphere = makeIcosphere(1.0, levels);
+  std::vector<Vector3> points = sphere.points();
+  for (Vector3& p : points)
+  {
+    const double z = halfLength * p.z();
+    const double around = std::hypot(p.x(), p.y());
+    const double r = dumbbellRadius(z, halfLength, lobeRadii, neckHeight, neckDepth);
+    const double scale = around > 0.0 ? r / around : 0.0;
+    p = Vector3(p.x() * scale, p.y() * scale, z);
+  }
+  return TriangleMesh(std::move(points), sphere.triangles());
 }
 
 } // namespace kerf

@@ -23,4 +23,15 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings);
 /// each quad split along its diagonal. Vertex (i, j) has index j * (columns + 1) + i.
 TriangleMesh makeGrid(double width, double height, int columns, int rows);
 
+/// Two lobes joined by a neck: an icosphere (`levels` subdivisions) stretched along z to
+/// [-halfLength, halfLength], with radius `lobeRadii[0]` below the neck and `lobeRadii[1]` above
+/// it (blended smoothly), pinched by the factor (1 - neckDepth) around z = neckHeight. A surface
+/// of revolution about the z axis, closed and outward oriented, with a concave neck.
+TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
+  double neckHeight, double neckDepth, int levels);
+
+/// The radius of makeDumbbell's surface at height z (the profile it is built from).
+double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& lobeRadii,
+  double neckHeight, double neckDepth);
+
 } // namespace kerf

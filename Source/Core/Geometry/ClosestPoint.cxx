@@ -1,0 +1,177 @@
+// Bounding-volume hierarchy (median splits) and point-triangle distance (Ericson, RTCD 5.1.5).
+#include "Geometry/ClosestPoint.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kerf
+{
+
+Vector3 closestPointOnTriangle(const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c,
+  Vector3& barycentric)
+{
+  const Vector3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    barycentric = Vector3(1, 0, 0);
+    return a;
+  }
+  const Vector3 bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    barycentric = Vector3(0, 1, 0);
+    return b;
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0 && d1 - d3 > 0.0)
+  {
+    const double v = d1 / (d1 - d3);
+    barycentric = Vector3(1 - v, v, 0);
+    return a + v * ab;
+  }
+  const Vector3 cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    barycentric = Vector3(0, 0, 1);
+    return c;
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0 && d2 - d6 > 0.0)
+  {
+    const double w = d2 / (d2 - d6);
+    barycentric = Vector3(1 - w, 0, w);
+    return a + w * ac;
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0 && (d4 - d3) + (d5 - d6) > 0.0)
+  {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    barycentric = Vector3(0, 1 - w, w);
+    return b + w * (c - b);
+  }
+  const double sum = va + vb + vc;
+  if (!(sum > 0.0))
+  {
+    // A degenerate triangle: its nearest corner.
+    const double da = (p - a).squaredNorm(), db = (p - b).squaredNorm(), dc = (p - c).squaredNorm();
+    barycentric = da <= db && da <= dc ? Vector3(1, 0, 0) : (db <= dc ? Vector3(0, 1, 0) : Vector3(0, 0, 1));
+    return da <= db && da <= dc ? a : (db <= dc ? b : c);
+  }
+  const double v = vb / sum, w = vc / sum;
+  barycentric = Vector3(1 - v - w, v, w);
+  return a + ab * v + ac * w;
+}
+
+ClosestPointLocator::ClosestPointLocator(const TriangleMesh& mesh)
+  : Mesh(mesh)
+{
+  const int faces = mesh.faceCount();
+  this->FaceOrder.resize(faces);
+  std::vector<Vector3> centroids(faces);
+  for (int f = 0; f < faces; ++f)
+  {
+    this->FaceOrder[f] = f;
+    const Triangle& t = mesh.triangle(f);
+    centroids[f] = (mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0;
+  }
+  if (faces > 0)
+  {
+    this->Nodes.reserve(2 * static_cast<std::size_t>(faces) / 4 + 1);
+    this->build(0, faces, centroids);
+  }
+}
+
+int ClosestPointLocator::build(int first, int count, std::vector<Vector3>& centroids)
+{
+  const int index = static_cast<int>(this->Nodes.size());
+  this->Nodes.emplace_back();
+  Eigen::AlignedBox3d box;
+  Eigen::AlignedBox3d centroidBox;
+  for (int i = first; i < first + count; ++i)
+  {
+    const Triangle& t = this->Mesh.triangle(this->FaceOrder[i]);
+    for (int corner : t)
+    {
+      box.extend(this->Mesh.point(corner));
+    }
+    centroidBox.extend(centroids[this->FaceOrder[i]]);
+  }
+  this->Nodes[index].box = box;
+  if (count <= 4)
+  {
+    this->Nodes[index].first = first;
+    this->Nodes[index].count = count;
+    return index;
+  }
+  int axis;
+  centroidBox.sizes().maxCoeff(&axis);
+  const int half = count / 2;
+  auto begin = this->FaceOrder.begin() + first;
+  std::nth_element(begin, begin + half, begin + count, [&](int a, int b) {
+    return centroids[a][axis] < centroids[b][axis] || (centroids[a][axis] == centroids[b][axis] && a < b);
+  });
+  const int left = this->build(first, half, centroids);
+  const int right = this->build(first + half, count - half, centroids);
+  this->Nodes[index].first = left;
+  this->Nodes[index].right = right;
+  this->Nodes[index].count = 0;
+  return index;
+}
+
+void ClosestPointLocator::search(int node, const Vector3& query, Hit& best) const
+{
+  const Node& n = this->Nodes[node];
+  if (n.count > 0)
+  {
+    for (int i = n.first; i < n.first + n.count; ++i)
+    {
+      const int f = this->FaceOrder[i];
+      const Triangle& t = this->Mesh.triangle(f);
+      Vector3 barycentric;
+      const Vector3 p = closestPointOnTriangle(query, this->Mesh.point(t[0]), this->Mesh.point(t[1]),
+        this->Mesh.point(t[2]), barycentric);
+      const double d = (p - query).squaredNorm();
+      if (d < best.distance || (d == best.distance && f < best.face))
+      {
+        best.distance = d;
+        best.face = f;
+        best.barycentric = barycentric;
+        best.position = p;
+      }
+    }
+    return;
+  }
+  const int left = n.first;
+  const int right = n.right;
+  const double dl = this->Nodes[left].box.squaredExteriorDistance(query);
+  const double dr = this->Nodes[right].box.squaredExteriorDistance(query);
+  const int nearer = dl <= dr ? left : right;
+  const int farther = dl <= dr ? right : left;
+  const double dNear = std::min(dl, dr), dFar = std::max(dl, dr);
+  if (dNear <= best.distance)
+  {
+    this->search(nearer, query, best);
+  }
+  if (dFar <= best.distance)
+  {
+    this->search(farther, query, best);
+  }
+}
+
+ClosestPointLocator::Hit ClosestPointLocator::closest(const Vector3& query) const
+{
+  Hit best;
+  best.distance = std::numeric_limits<double>::infinity();
+  if (!this->Nodes.empty())
+  {
+    this->search(0, query, best);
+  }
+  best.distance = std::sqrt(best.distance);
+  return best;
+}
+
+} // namespace kerf

@@ -1,0 +1,50 @@
+// Closest points on a triangle mesh: a bounding-volume hierarchy over its triangles.
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+
+#include <vector>
+
+namespace kerf
+{
+
+/// Finds the point of a mesh nearest to a query point. Built once per mesh in O(F log F);
+/// each query visits the boxes that can hold a nearer point. Ties go to the lower face index, so
+/// results are deterministic.
+class ClosestPointLocator
+{
+public:
+  explicit ClosestPointLocator(const TriangleMesh& mesh);
+
+  struct Hit
+  {
+    int face = -1;
+    Vector3 barycentric = Vector3::Zero(); ///< w.r.t. the face's corners 0, 1, 2
+    Vector3 position = Vector3::Zero();
+    double distance = 0.0;
+  };
+
+  /// The nearest point; face -1 for an empty mesh.
+  Hit closest(const Vector3& query) const;
+
+private:
+  struct Node
+  {
+    Eigen::AlignedBox3d box;
+    int first = 0; // leaves: start in FaceOrder; inner nodes: the left child
+    int count = 0; // leaves: number of faces; 0 for inner nodes
+    int right = -1; // inner nodes: the right child
+  };
+  int build(int first, int count, std::vector<Vector3>& centroids);
+  void search(int node, const Vector3& query, Hit& best) const;
+
+  const TriangleMesh& Mesh;
+  std::vector<int> FaceOrder;
+  std::vector<Node> Nodes;
+};
+
+/// The point of triangle (a, b, c) nearest to p, with its barycentric coordinates.
+Vector3 closestPointOnTriangle(const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c,
+  Vector3& barycentric);
+
+} // namespace kerf

@@ -1,0 +1,87 @@
+// Harmonic fields on a mesh from hard vertex values and soft constraints at points inside faces.
+#pragma once
+
+#include "Harmonic/SparseCholesky.h"
+#include "Mesh/TriangleMesh.h"
+
+#include <memory>
+#include <vector>
+
+namespace kerf
+{
+
+/// A point inside triangle `face` (barycentric coordinates w.r.t. its corners 0, 1, 2) whose field
+/// value should be `value`, in the least-squares sense.
+struct SoftConstraint
+{
+  int face = -1;
+  Vector3 barycentric = Vector3::Zero();
+  double value = 0.0;
+};
+
+/// The constraints of one field: any combination of hard Dirichlet values on vertices and soft
+/// constraints inside faces with weight w.
+struct FieldConstraints
+{
+  std::vector<int> dirichletVertices;
+  std::vector<double> dirichletValues;
+  std::vector<SoftConstraint> soft;
+  double softWeight = 1.0;
+};
+
+/// A solved field and how it was obtained.
+struct HarmonicFieldSolution
+{
+  std::vector<double> field;    ///< per vertex; 0 on points used by no triangle
+  double relativeResidual = 0.0; ///< ||M x - b|| / ||b|| of the system solved
+  /// What the solve cost: a new factorization, an update of the cached one (new soft
+  /// constraint locations), or only a back-substitution (new values).
+  enum class Work
+  {
+    Factorization,
+    Update,
+    BackSubstitution
+  };
+  Work work = Work::Factorization;
+};
+
+/// Solves for the field f, reusing its factorization while the mesh, the weights and the
+/// constraint locations stay the same.
+///
+/// With hard constraints only, f is harmonic: L_FF f_F = -L_FD f_D (roi-scissor.txt Eq. 1),
+/// free boundaries getting the natural (zero-flux) condition. With soft constraints (seamcut.txt
+/// Eq. 1), f minimises ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2 over the free values, where L_F are
+/// the Laplacian rows of the free vertices and C_i interpolates f at the constraint's point with
+/// its barycentric weights: (L_FF^T L_FF + w^2 C_F^T C_F) f_F = -L_FF^T L_FD f_D +
+/// w^2 C_F^T (c - C_D f_D). The first term is factored once; the constraint term is a rank-k
+/// update of it, so new strokes cost an update and new values a back-substitution. In a
+/// component without hard values the factored term is singular; one vertex is pinned with weight
+/// 1e-10 of the system's scale to factor it, and the update removes the pin again, so the
+/// solution is that of the system itself.
+///
+/// Throws kerf::Error for: no constraint, a component without any constraint (its field would
+/// be undefined), indices out of range, NaN values or weights, a vertex given two different
+/// hard values, and a failed factorization.
+class HarmonicFieldSolver
+{
+public:
+  HarmonicFieldSolver();
+  ~HarmonicFieldSolver();
+
+  HarmonicFieldSolution solve(
+    const TriangleMesh& mesh, const std::vector<double>& edgeWeights, const FieldConstraints& constraints);
+
+  /// Forgets the cached factorization.
+  void reset();
+
+private:
+  struct Cache;
+  std::unique_ptr<Cache> State;
+};
+
+/// The constant gradient of the piecewise-linear field on each triangle,
+/// grad f_T = (1 / 2A) sum_j f_j (n x e_j) with e_j the edge opposite corner j
+/// (roi-scissor.txt 4.2). Zero on zero-area triangles.
+std::vector<Vector3> computeFaceGradients(const TriangleMesh& mesh, const std::vector<double>& field);
+
+} // namespace kerf

@@ -1,0 +1,329 @@
+// Isoline extraction by chaining per-face segments through shared edges, scores, and cut sides.
+#include "Harmonic/Isolines.h"
+
+#include "Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace kerf
+{
+
+namespace
+{
+// Crossings closer than this fraction of their edge to a vertex are placed on the vertex.
+constexpr double VertexSnap = 1e-12;
+
+// The crossing point of f = value on edge e (computed in the edge's own vertex order, so both
+// faces of the edge get the same point).
+Vector3 crossing(const TriangleMesh& mesh, const std::vector<double>& field, double value, int e)
+{
+  const std::array<int, 2>& ev = mesh.edgeVertices(e);
+  const double f0 = field[ev[0]];
+  const double f1 = field[ev[1]];
+  // At a vertex, or within rounding of it: the vertex's own coordinates, so that every edge
+  // through it gives the same point and the isoline has no vanishing segments there.
+  const double t = (value - f0) / (f1 - f0);
+  if (value == f0 || t <= VertexSnap)
+  {
+    return mesh.point(ev[0]);
+  }
+  if (value == f1 || t >= 1.0 - VertexSnap)
+  {
+    return mesh.point(ev[1]);
+  }
+  return mesh.point(ev[0]) + t * (mesh.point(ev[1]) - mesh.point(ev[0]));
+}
+
+// The edges where face f's corners go from below to above `value` (entry) and back (exit), in
+// the face's corner order; false if the face is not crossed.
+bool crossedEdges(const TriangleMesh& mesh, const std::vector<double>& field, double value, int f,
+  int& entry, int& exit)
+{
+  const Triangle& t = mesh.triangle(f);
+  const bool above[3] = { field[t[0]] >= value, field[t[1]] >= value, field[t[2]] >= value };
+  if (above[0] == above[1] && above[1] == above[2])
+  {
+    return false;
+  }
+  entry = exit = -1;
+  for (int k = 0; k < 3; ++k)
+  {
+    const bool from = above[k];
+    const bool to = above[(k + 1) % 3];
+    if (!from && to)
+    {
+      entry = mesh.faceEdge(f, k);
+    }
+    else if (from && !to)
+    {
+      exit = mesh.faceEdge(f, k);
+    }
+  }
+  return entry >= 0 && exit >= 0;
+}
+
+// Drops zero-length segments (where the isoline passes exactly through a vertex) and measures it.
+void removeRepeatedPoints(Isoline& line)
+{
+  const std::size_t n = line.points.size();
+  if (n == 0)
+  {
+    return;
+  }
+  std::vector<Vector3> points{ line.points[0] };
+  std::vector<int> faces;
+  for (std::size_t i = 1; i < n; ++i)
+  {
+    if (line.points[i] == points.back())
+    {
+      continue; // segment i - 1 has zero length
+    }
+    faces.push_back(line.faces[i - 1]);
+    points.push_back(line.points[i]);
+  }
+  if (line.closed)
+  {
+    if (points.size() > 1 && points.back() == points.front())
+    {
+      points.pop_back(); // the segment into it now closes the loop
+    }
+    else
+    {
+      faces.push_back(line.faces[n - 1]);
+    }
+  }
+  line.points = std::move(points);
+  line.faces = std::move(faces);
+  line.length = 0.0;
+  const std::size_t m = line.points.size();
+  for (std::size_t i = 0; i < line.faces.size() && m > 1; ++i)
+  {
+    line.length += (line.points[(i + 1) % m] - line.points[i]).norm();
+  }
+}
+
+double pointSegmentDistance(const Vector3& p, const Vector3& a, const Vector3& b)
+{
+  const Vector3 ab = b - a;
+  const double lengthSquared = ab.squaredNorm();
+  const double t = lengthSquared > 0.0 ? std::clamp((p - a).dot(ab) / lengthSquared, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+} // namespace
+
+std::vector<Isoline> extractIsolines(const TriangleMesh& mesh, const std::vector<double>& field, double value)
+{
+  if (static_cast<int>(field.size()) != mesh.vertexCount())
+  {
+    throw Error("the field must have one value per vertex");
+  }
+  const int faces = mesh.faceCount();
+  std::vector<int> entry(faces, -1), exit(faces, -1);
+  std::vector<int> faceEntering(mesh.edgeCount(), -1), faceExiting(mesh.edgeCount(), -1);
+  for (int f = 0; f < faces; ++f)
+  {
+    if (crossedEdges(mesh, field, value, f, entry[f], exit[f]))
+    {
+      faceEntering[entry[f]] = f;
+      faceExiting[exit[f]] = f;
+    }
+  }
+  auto next = [&](int f) { return faceEntering[exit[f]] != f ? faceEntering[exit[f]] : -1; };
+  auto previous = [&](int f) { return faceExiting[entry[f]] != f ? faceExiting[entry[f]] : -1; };
+
+  std::vector<char> visited(faces, 0);
+  std::vector<Isoline> lines;
+  for (int seed = 0; seed < faces; ++seed)
+  {
+    if (entry[seed] < 0 || visited[seed])
+    {
+      continue;
+    }
+    // Walk back to the start of an open isoline (or around a closed one).
+    int start = seed;
+    bool closed = false;
+    for (int f = previous(seed); f >= 0; f = previous(f))
+    {
+      if (f == seed)
+      {
+        closed = true;
+        break;
+      }
+      start = f;
+    }
+    if (closed)
+    {
+      start = seed;
+    }
+    Isoline line;
+    line.closed = closed;
+    line.points.push_back(crossing(mesh, field, value, entry[start]));
+    for (int f = start; f >= 0 && !visited[f]; f = next(f))
+    {
+      visited[f] = 1;
+      line.faces.push_back(f);
+      line.points.push_back(crossing(mesh, field, value, exit[f]));
+    }
+    if (closed)
+    {
+      line.points.pop_back(); // the exit of the last face is the entry of the first
+    }
+    removeRepeatedPoints(line);
+    if (line.points.size() >= 2 && line.length > 0.0)
+    {
+      lines.push_back(std::move(line));
+    }
+  }
+  return lines;
+}
+
+double isolineScore(const std::vector<Isoline>& isolines, const std::vector<double>& gradientMagnitudes)
+{
+  double weighted = 0.0, length = 0.0;
+  for (const Isoline& line : isolines)
+  {
+    const std::size_t n = line.points.size();
+    for (std::size_t i = 0; i < line.faces.size(); ++i)
+    {
+      const double segment = (line.points[(i + 1) % n] - line.points[i]).norm();
+      weighted += segment * gradientMagnitudes[line.faces[i]];
+      length += segment;
+    }
+  }
+  return length > 0.0 ? weighted / length : 0.0;
+}
+
+std::vector<IsovalueScore> scoreIsovalues(const TriangleMesh& mesh, const std::vector<double>& field,
+  const std::vector<double>& gradientMagnitudes, int count)
+{
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (!mesh.vertexFaces(v).empty())
+    {
+      lo = std::min(lo, field[v]);
+      hi = std::max(hi, field[v]);
+    }
+  }
+  if (count < 1 || !(hi > lo))
+  {
+    return {};
+  }
+  const double step = (hi - lo) / (count + 1);
+  std::vector<IsovalueScore> scores(count);
+  std::vector<double> weighted(count, 0.0);
+  for (int i = 0; i < count; ++i)
+  {
+    scores[i].value = lo + (i + 1) * step;
+  }
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    const double fmin = std::min({ field[t[0]], field[t[1]], field[t[2]] });
+    const double fmax = std::max({ field[t[0]], field[t[1]], field[t[2]] });
+    // Face f is crossed by value_i when fmin < value_i <= fmax.
+    int first = std::max(0, static_cast<int>(std::floor((fmin - lo) / step)) - 1);
+    for (int i = first; i < count && scores[i].value <= fmax; ++i)
+    {
+      int entry, exit;
+      if (!(fmin < scores[i].value) || !crossedEdges(mesh, field, scores[i].value, f, entry, exit))
+      {
+        continue;
+      }
+      const double segment =
+        (crossing(mesh, field, scores[i].value, exit) - crossing(mesh, field, scores[i].value, entry)).norm();
+      scores[i].length += segment;
+      weighted[i] += segment * gradientMagnitudes[f];
+    }
+  }
+  for (int i = 0; i < count; ++i)
+  {
+    scores[i].score = scores[i].length > 0.0 ? weighted[i] / scores[i].length : 0.0;
+  }
+  return scores;
+}
+
+int nearestIsoline(const std::vector<Isoline>& isolines, const std::vector<Vector3>& points)
+{
+  int best = -1;
+  double bestDistance = std::numeric_limits<double>::infinity();
+  for (std::size_t c = 0; c < isolines.size(); ++c)
+  {
+    const Isoline& line = isolines[c];
+    double sum = 0.0;
+    for (const Vector3& p : points)
+    {
+      double nearest = std::numeric_limits<double>::infinity();
+      const std::size_t n = line.points.size();
+      const std::size_t segments = line.closed ? n : n - 1;
+      for (std::size_t i = 0; i < segments; ++i)
+      {
+        nearest = std::min(nearest, pointSegmentDistance(p, line.points[i], line.points[(i + 1) % n]));
+      }
+      sum += nearest;
+    }
+    const double mean = points.empty() ? 0.0 : sum / static_cast<double>(points.size());
+    if (mean < bestDistance)
+    {
+      bestDistance = mean;
+      best = static_cast<int>(c);
+    }
+  }
+  return best;
+}
+
+std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
+  const std::vector<const Isoline*>& cut)
+{
+  const int faces = mesh.faceCount();
+  std::vector<char> upper(faces), onCut(faces, 0);
+  for (int f = 0; f < faces; ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    upper[f] = (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= value ? 1 : 0;
+  }
+  for (const Isoline* line : cut)
+  {
+    for (int f : line->faces)
+    {
+      onCut[f] = 1;
+    }
+  }
+  std::vector<int> labels(faces, -1);
+  std::vector<int> stack;
+  int next = 0;
+  for (int seed = 0; seed < faces; ++seed)
+  {
+    if (labels[seed] >= 0)
+    {
+      continue;
+    }
+    labels[seed] = next;
+    stack.push_back(seed);
+    while (!stack.empty())
+    {
+      const int f = stack.back();
+      stack.pop_back();
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = mesh.faceNeighbor(f, k);
+        if (g < 0 || labels[g] >= 0)
+        {
+          continue;
+        }
+        if (upper[f] != upper[g] && (onCut[f] || onCut[g]))
+        {
+          continue; // the cut separates f and g
+        }
+        labels[g] = next;
+        stack.push_back(g);
+      }
+    }
+    ++next;
+  }
+  return labels;
+}
+
+} // namespace kerf

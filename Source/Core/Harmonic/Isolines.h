@@ -1,0 +1,61 @@
+// Isolines of a piecewise-linear field: extraction, ROI Scissor's score, and the cut's two sides.
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+
+#include <vector>
+
+namespace kerf
+{
+
+/// One connected component of an isoline, as a polyline across faces.
+struct Isoline
+{
+  std::vector<Vector3> points;
+  /// faces[i] holds the segment from points[i] to points[i + 1]; for a closed isoline the last
+  /// face holds the segment from the last point back to the first.
+  std::vector<int> faces;
+  bool closed = false;
+  double length = 0.0;
+};
+
+/// Extracts the isoline f = value as polylines. A vertex whose value equals `value` exactly
+/// counts as above it (symbolic perturbation), so each triangle is crossed by at most one
+/// segment, flat regions are bounded rather than filled, and components never branch. Crossing
+/// points are computed once per edge; points where the isoline passes through a vertex are not
+/// repeated. Segments follow the faces' orientation consistently: walking along an isoline, the
+/// values above `value` lie on the same side everywhere. Needs an edge-manifold, consistently
+/// oriented mesh. Components are ordered by their first face. A crossing within 1e-12 of its
+/// edge's length from a vertex is placed on the vertex, so near-ties give no vanishing segments.
+std::vector<Isoline> extractIsolines(const TriangleMesh& mesh, const std::vector<double>& field, double value);
+
+/// ROI Scissor's score of a set of polylines (roi-scissor.txt 4.2):
+/// S = sum_T |I cap T| / |I| * |grad f_T|, the length-weighted mean gradient magnitude.
+double isolineScore(const std::vector<Isoline>& isolines, const std::vector<double>& gradientMagnitudes);
+
+/// The score of every candidate isovalue.
+struct IsovalueScore
+{
+  double value = 0.0;
+  double score = 0.0;
+  double length = 0.0;
+};
+
+/// Scores `count` isovalues sampled uniformly strictly inside the field's range
+/// (value_i = min + i (max - min) / (count + 1), i = 1..count) in one pass over the faces,
+/// without building polylines. Empty if the field is constant.
+std::vector<IsovalueScore> scoreIsovalues(const TriangleMesh& mesh, const std::vector<double>& field,
+  const std::vector<double>& gradientMagnitudes, int count);
+
+/// Index of the isoline nearest to a set of points (smallest mean distance from the points to
+/// the polyline), or -1 if there is none.
+int nearestIsoline(const std::vector<Isoline>& isolines, const std::vector<Vector3>& points);
+
+/// Per-face segment labels for a cut along the given isoline components of f = value: a face is
+/// on the upper side when the mean of its corner values is >= value; faces are then grouped into
+/// connected components that do not cross the cut, and numbered in order of their first face.
+/// Only the given components separate; elsewhere both sides stay connected.
+std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
+  const std::vector<const Isoline*>& cut);
+
+} // namespace kerf

@@ -1,0 +1,306 @@
+// vtkHarmonicField: gathers constraints, keeps mesh, weights and factorization between runs.
+#include "vtkHarmonicField.h"
+
+#include "Error.h"
+#include "Geometry/ClosestPoint.h"
+#include "Geometry/SurfaceDescriptors.h"
+#include "Harmonic/HarmonicField.h"
+#include "Harmonic/LaplacianWeights.h"
+#include "KerfSurfaceInput.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <cmath>
+#include <string>
+
+vtkStandardNewMacro(vtkHarmonicField);
+
+struct vtkHarmonicField::Internals
+{
+  kerf::SurfaceInput surface;
+  std::unique_ptr<kerf::ClosestPointLocator> locator;
+  // The weights and what they were computed from.
+  bool weightsValid = false;
+  kerf::LaplacianWeightOptions weightOptions;
+  std::vector<double> weights;
+  double meanDiagonal = 1.0;
+  kerf::HarmonicFieldSolver solver;
+};
+
+namespace
+{
+kerf::LaplacianWeighting toWeighting(int w)
+{
+  switch (w)
+  {
+    case vtkHarmonicField::UNIFORM:
+      return kerf::LaplacianWeighting::Uniform;
+    case vtkHarmonicField::CONCAVITY_AWARE:
+      return kerf::LaplacianWeighting::ConcavityAware;
+    case vtkHarmonicField::SMOOTH_CONCAVITY:
+      return kerf::LaplacianWeighting::SmoothConcavity;
+    default:
+      return kerf::LaplacianWeighting::Cotangent;
+  }
+}
+
+const char* workName(kerf::HarmonicFieldSolution::Work work)
+{
+  switch (work)
+  {
+    case kerf::HarmonicFieldSolution::Work::Factorization:
+      return "factorization";
+    case kerf::HarmonicFieldSolution::Work::Update:
+      return "update";
+    default:
+      return "back-substitution";
+  }
+}
+
+// True when input array `index` was given a name with SetInputArrayToProcess.
+bool arrayRequested(vtkAlgorithm* algorithm, int index)
+{
+  vtkInformation* info = algorithm->GetInputArrayInformation(index);
+  const char* name = info && info->Has(vtkDataObject::FIELD_NAME()) ? info->Get(vtkDataObject::FIELD_NAME()) : nullptr;
+  return name && *name;
+}
+} // namespace
+
+vtkHarmonicField::vtkHarmonicField()
+  : State(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetFieldArrayName("HarmonicField");
+  this->SetGradientArrayName("FieldGradient");
+  this->SetGradientMagnitudeArrayName("FieldGradientMagnitude");
+  this->SetInputArrayToProcess(1, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "ConstraintValue");
+}
+
+vtkHarmonicField::~vtkHarmonicField()
+{
+  this->SetFieldArrayName(nullptr);
+  this->SetGradientArrayName(nullptr);
+  this->SetGradientMagnitudeArrayName(nullptr);
+}
+
+int vtkHarmonicField::FillInputPortInformation(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkHarmonicField::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPointSet* constraintPoints = vtkPointSet::GetData(inputVector[1], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  Internals& state = *this->State;
+
+  for (const char* name : { this->FieldArrayName, this->GradientArrayName, this->GradientMagnitudeArrayName })
+  {
+    if (!name || !*name)
+    {
+      vtkErrorMacro("Every output array needs a non-empty name.");
+      return 0;
+    }
+  }
+
+  kerf::MeshRequirements requirements;
+  requirements.manifold = true;
+  requirements.consistentOrientation = true;
+  bool reused = false;
+  std::string error;
+  if (!state.surface.LoadIfChanged(input, requirements, error, reused))
+  {
+    vtkErrorMacro("Cannot compute the harmonic field: " << error);
+    return 0;
+  }
+  const kerf::TriangleMesh& mesh = state.surface.Mesh();
+  if (!reused)
+  {
+    state.locator.reset(new kerf::ClosestPointLocator(mesh));
+    state.weightsValid = false;
+  }
+  this->UpdateProgress(0.1);
+
+  try
+  {
+    kerf::LaplacianWeightOptions options;
+    options.weighting = toWeighting(this->Weighting);
+    options.concaveBeta = this->ConcaveBeta;
+    options.concavityQuantile = this->ConcavityQuantile;
+    if (!state.weightsValid || options.weighting != state.weightOptions.weighting ||
+      options.concaveBeta != state.weightOptions.concaveBeta ||
+      options.concavityQuantile != state.weightOptions.concavityQuantile)
+    {
+      const bool needsCurvature = options.weighting == kerf::LaplacianWeighting::ConcavityAware ||
+        options.weighting == kerf::LaplacianWeighting::SmoothConcavity;
+      kerf::SurfaceDescriptors descriptors;
+      if (needsCurvature)
+      {
+        descriptors = kerf::computeSurfaceDescriptors(mesh);
+      }
+      state.weights = kerf::computeLaplacianWeights(mesh, options, needsCurvature ? &descriptors : nullptr);
+      double sum = 0.0;
+      int used = 0;
+      for (double w : state.weights)
+      {
+        sum += 2.0 * w;
+      }
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+      {
+        used += mesh.vertexFaces(v).empty() ? 0 : 1;
+      }
+      state.meanDiagonal = used > 0 && sum > 0.0 ? sum / used : 1.0;
+      state.weightOptions = options;
+      state.weightsValid = true;
+    }
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Cannot compute the Laplacian weights: " << e.what());
+    return 0;
+  }
+  this->UpdateProgress(0.3);
+
+  // Constraints.
+  kerf::FieldConstraints constraints;
+  constraints.softWeight = this->SoftConstraintWeight * state.meanDiagonal;
+  if (arrayRequested(this, 0))
+  {
+    vtkDataArray* hard = this->GetInputArrayToProcess(0, inputVector);
+    if (!hard || hard->GetNumberOfComponents() != 1 || hard->GetNumberOfTuples() != input->GetNumberOfPoints())
+    {
+      vtkErrorMacro("The hard-value array must be a one-component point array of the surface.");
+      return 0;
+    }
+    std::vector<double> values(static_cast<std::size_t>(hard->GetNumberOfTuples()));
+    for (vtkIdType i = 0; i < hard->GetNumberOfTuples(); ++i)
+    {
+      values[static_cast<std::size_t>(i)] = hard->GetComponent(i, 0);
+    }
+    for (std::size_t i = 0; i < values.size(); ++i)
+    {
+      const int vertex = state.surface.Representative(static_cast<int>(i));
+      if (!std::isnan(values[i]) && !mesh.vertexFaces(vertex).empty())
+      {
+        constraints.dirichletVertices.push_back(vertex);
+        constraints.dirichletValues.push_back(values[i]);
+      }
+    }
+  }
+  if (constraintPoints && constraintPoints->GetNumberOfPoints() > 0)
+  {
+    vtkDataArray* values = this->GetInputArrayToProcess(1, inputVector);
+    if (!values || values->GetNumberOfComponents() != 1)
+    {
+      vtkErrorMacro("The constraint points have no one-component value array (select it with "
+                    "SetInputArrayToProcess(1, 1, 0, points, name); default \"ConstraintValue\").");
+      return 0;
+    }
+    const double limit = this->MaximumProjectionDistance * mesh.boundingBoxDiagonal();
+    for (vtkIdType i = 0; i < constraintPoints->GetNumberOfPoints(); ++i)
+    {
+      kerf::Vector3 p;
+      constraintPoints->GetPoint(i, p.data());
+      const double value = values->GetComponent(i, 0);
+      if (!p.allFinite() || !std::isfinite(value))
+      {
+        vtkErrorMacro("Constraint point " << i << " has a NaN or infinite coordinate or value.");
+        return 0;
+      }
+      const kerf::ClosestPointLocator::Hit hit = state.locator->closest(p);
+      if (hit.distance > limit)
+      {
+        vtkErrorMacro("Constraint point " << i << " is " << hit.distance
+                                          << " away from the surface, farther than the allowed "
+                                          << limit << " (MaximumProjectionDistance).");
+        return 0;
+      }
+      if (this->HardConstraints)
+      {
+        int corner;
+        hit.barycentric.maxCoeff(&corner);
+        constraints.dirichletVertices.push_back(mesh.triangle(hit.face)[corner]);
+        constraints.dirichletValues.push_back(value);
+      }
+      else
+      {
+        constraints.soft.push_back({ hit.face, hit.barycentric, value });
+      }
+    }
+  }
+  this->UpdateProgress(0.4);
+
+  kerf::HarmonicFieldSolution solution;
+  try
+  {
+    solution = state.solver.solve(mesh, state.weights, constraints);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro("Cannot compute the harmonic field: " << e.what());
+    return 0;
+  }
+  this->UpdateProgress(0.9);
+
+  const std::vector<kerf::Vector3> gradients = kerf::computeFaceGradients(mesh, solution.field);
+  std::vector<double> magnitudes(gradients.size());
+  for (std::size_t f = 0; f < gradients.size(); ++f)
+  {
+    magnitudes[f] = gradients[f].norm();
+  }
+  state.surface.ExpandToInputPoints(solution.field);
+
+  state.surface.MakeOutput(input, output);
+  output->GetPointData()->AddArray(kerf::MakeArray(this->FieldArrayName, solution.field));
+  output->GetPointData()->SetActiveScalars(this->FieldArrayName);
+  output->GetCellData()->AddArray(kerf::MakeArray(this->GradientArrayName, gradients));
+  output->GetCellData()->AddArray(kerf::MakeArray(this->GradientMagnitudeArrayName, magnitudes));
+  vtkNew<vtkDoubleArray> residual;
+  residual->SetName("RelativeResidual");
+  residual->InsertNextValue(solution.relativeResidual);
+  output->GetFieldData()->AddArray(residual);
+  vtkNew<vtkStringArray> work;
+  work->SetName("SolverWork");
+  work->InsertNextValue(workName(solution.work));
+  output->GetFieldData()->AddArray(work);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkHarmonicField::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Weighting: " << this->Weighting << "\n";
+  os << indent << "ConcaveBeta: " << this->ConcaveBeta << "\n";
+  os << indent << "ConcavityQuantile: " << this->ConcavityQuantile << "\n";
+  os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
+  os << indent << "HardConstraints: " << this->HardConstraints << "\n";
+  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
+  os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(none)") << "\n";
+  os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
+  os << indent << "GradientMagnitudeArrayName: "
+     << (this->GradientMagnitudeArrayName ? this->GradientMagnitudeArrayName : "(none)") << "\n";
+}

@@ -1,0 +1,43 @@
+// Regression image: the camel cut along the bundled neck stroke, field and segments side by side.
+#include "KerfScene.h"
+#include "KerfTestUtilities.h"
+#include "vtkHarmonicField.h"
+#include "vtkIsolineScoring.h"
+#include "vtkMeshFileReader.h"
+#include "vtkStrokeConstraints.h"
+
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+#include <vtkRegressionTestImage.h>
+#include <vtkRenderWindow.h>
+
+#include <iostream>
+
+int TestHarmonicCutImage(int argc, char* argv[])
+{
+  vtkNew<vtkMeshFileReader> camel;
+  camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
+  vtkNew<vtkMeshFileReader> stroke;
+  stroke->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
+  vtkNew<vtkStrokeConstraints> constraints;
+  constraints->SetInputConnection(0, camel->GetOutputPort());
+  constraints->SetInputConnection(1, stroke->GetOutputPort());
+  vtkNew<vtkHarmonicField> field;
+  field->SetInputConnection(0, camel->GetOutputPort());
+  field->SetInputConnection(1, constraints->GetOutputPort());
+  vtkNew<vtkIsolineScoring> cut;
+  cut->SetInputConnection(0, field->GetOutputPort());
+  cut->SetInputConnection(1, stroke->GetOutputPort());
+  cut->SetModeToNearStroke();
+  cut->Update();
+
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderCutScene(cut->GetLabelledSurface(),
+    stroke->GetOutput(), constraints->GetOutput(), cut->GetOutput(), "camel: a cut from one stroke", error);
+  if (!window)
+  {
+    std::cerr << "cannot render: " << error << std::endl;
+    return EXIT_FAILURE;
+  }
+  return vtkRegressionTestImage(window) == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}

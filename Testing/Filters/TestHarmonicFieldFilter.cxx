@@ -1,0 +1,239 @@
+// vtkHarmonicField as a VTK filter: hard values from a point array, soft constraints from a
+// second input, the cached factorization across executions, and its errors.
+#include "KerfTestUtilities.h"
+#include "Mesh/MeshGenerators.h"
+#include "vtkHarmonicField.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <limits>
+
+namespace
+{
+std::string work(vtkHarmonicField* filter)
+{
+  vtkStringArray* array =
+    vtkStringArray::SafeDownCast(filter->GetOutput()->GetFieldData()->GetAbstractArray("SolverWork"));
+  return array ? array->GetValue(0) : "";
+}
+
+double residual(vtkHarmonicField* filter)
+{
+  return filter->GetOutput()->GetFieldData()->GetArray("RelativeResidual")->GetComponent(0, 0);
+}
+
+vtkSmartPointer<vtkPolyData> pointsWithValues(
+  const std::vector<std::array<double, 3>>& points, const std::vector<double>& values)
+{
+  auto data = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkDoubleArray> array;
+  array->SetName("ConstraintValue");
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    pts->InsertNextPoint(points[i].data());
+    array->InsertNextValue(values[i]);
+  }
+  data->SetPoints(pts);
+  data->GetPointData()->AddArray(array);
+  return data;
+}
+
+bool sameField(vtkDataArray* a, vtkDataArray* b)
+{
+  if (a->GetNumberOfTuples() != b->GetNumberOfTuples())
+  {
+    return false;
+  }
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
+  {
+    if (a->GetComponent(i, 0) != b->GetComponent(i, 0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+} // namespace
+
+int TestHarmonicFieldFilter(int, char*[])
+{
+  bool ok = true;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+
+  // Hard values 0 and 1 on the two ends of a plane: the field is x / width, its gradient constant.
+  const double width = 3.0;
+  vtkSmartPointer<vtkPolyData> plane = kerf::test::ToPolyData(kerf::makeGrid(width, 1.0, 30, 10));
+  vtkNew<vtkDoubleArray> hard;
+  hard->SetName("Hard");
+  for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
+  {
+    const double x = plane->GetPoint(i)[0];
+    hard->InsertNextValue(x == 0.0 ? 0.0 : (x == width ? 1.0 : nan));
+  }
+  plane->GetPointData()->AddArray(hard);
+  vtkNew<vtkHarmonicField> field;
+  field->SetInputData(plane);
+  field->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Hard");
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(field).empty());
+  vtkDataArray* f = field->GetOutput()->GetPointData()->GetArray("HarmonicField");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
+  {
+    worst = std::max(worst, std::abs(f->GetComponent(i, 0) - plane->GetPoint(i)[0] / width));
+  }
+  ok &= KERF_CHECK(worst < 1e-9);
+  ok &= KERF_CHECK(residual(field) <= 1e-10);
+  ok &= KERF_CHECK(work(field) == "factorization");
+  vtkDataArray* gradient = field->GetOutput()->GetCellData()->GetArray("FieldGradient");
+  vtkDataArray* magnitude = field->GetOutput()->GetCellData()->GetArray("FieldGradientMagnitude");
+  ok &= KERF_CHECK(gradient && magnitude && gradient->GetNumberOfTuples() == plane->GetNumberOfCells());
+  for (vtkIdType c = 0; gradient && c < gradient->GetNumberOfTuples(); ++c)
+  {
+    if (std::abs(gradient->GetComponent(c, 0) - 1.0 / width) > 1e-9 ||
+      std::abs(gradient->GetComponent(c, 1)) > 1e-9 || std::abs(magnitude->GetComponent(c, 0) - 1.0 / width) > 1e-9)
+    {
+      ok &= KERF_CHECK(false && "gradient of a linear field");
+      break;
+    }
+  }
+  ok &= KERF_CHECK(plane->GetPointData()->GetArray("HarmonicField") == nullptr);
+
+  // New hard values at the same vertices: a back-substitution.
+  for (vtkIdType i = 0; i < plane->GetNumberOfPoints(); ++i)
+  {
+    if (plane->GetPoint(i)[0] == width)
+    {
+      hard->SetValue(i, 2.0);
+    }
+  }
+  hard->Modified();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(field).empty());
+  ok &= KERF_CHECK(work(field) == "back-substitution");
+  f = field->GetOutput()->GetPointData()->GetArray("HarmonicField");
+  ok &= KERF_CHECK(std::abs(f->GetComponent(15, 0) - 2.0 * plane->GetPoint(15)[0] / width) < 1e-9);
+
+  // Soft constraints from a second input, on a closed surface.
+  vtkSmartPointer<vtkPolyData> sphere = kerf::test::ToPolyData(kerf::makeIcosphere(1.0, 3));
+  vtkSmartPointer<vtkPolyData> soft = pointsWithValues(
+    { { { 0, 0, 1 } }, { { 0, 0, -1 } }, { { 1, 0, 0 } } }, { 1.0, -1.0, 0.0 });
+  vtkNew<vtkHarmonicField> cached;
+  cached->SetInputData(0, sphere);
+  cached->SetInputData(1, soft);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cached).empty());
+  ok &= KERF_CHECK(work(cached) == "factorization");
+  f = cached->GetOutput()->GetPointData()->GetArray("HarmonicField");
+  ok &= KERF_CHECK(std::abs(f->GetComponent(sphere->FindPoint(0, 0, 1), 0) - 1.0) < 0.05);
+  ok &= KERF_CHECK(std::abs(f->GetComponent(sphere->FindPoint(0, 0, -1), 0) + 1.0) < 0.05);
+
+  // Only the values change: a back-substitution, equal bit for bit to a fresh filter's result.
+  soft->GetPointData()->GetArray("ConstraintValue")->SetComponent(0, 0, 2.0);
+  soft->Modified();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cached).empty());
+  ok &= KERF_CHECK(work(cached) == "back-substitution");
+  vtkNew<vtkHarmonicField> fresh;
+  fresh->SetInputData(0, sphere);
+  fresh->SetInputData(1, soft);
+  fresh->Update();
+  ok &= KERF_CHECK(sameField(cached->GetOutput()->GetPointData()->GetArray("HarmonicField"),
+    fresh->GetOutput()->GetPointData()->GetArray("HarmonicField")));
+
+  // The constraints move: an update of the cached factorization, again equal to a fresh result.
+  soft->GetPoints()->SetPoint(2, 0, 1, 0);
+  soft->Modified();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cached).empty());
+  ok &= KERF_CHECK(work(cached) == "update");
+  fresh->Modified();
+  fresh->Update();
+  ok &= KERF_CHECK(work(fresh) == "update");
+  vtkNew<vtkHarmonicField> fresher;
+  fresher->SetInputData(0, sphere);
+  fresher->SetInputData(1, soft);
+  fresher->Update();
+  ok &= KERF_CHECK(work(fresher) == "factorization");
+  ok &= KERF_CHECK(sameField(cached->GetOutput()->GetPointData()->GetArray("HarmonicField"),
+    fresher->GetOutput()->GetPointData()->GetArray("HarmonicField")));
+
+  // A new weighting: a new factorization.
+  cached->SetWeightingToUniform();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cached).empty());
+  ok &= KERF_CHECK(work(cached) == "factorization");
+
+  // Hard constraints from the second input fix their nearest vertices.
+  vtkNew<vtkHarmonicField> snapped;
+  snapped->SetInputData(0, sphere);
+  snapped->SetInputData(1, pointsWithValues({ { { 0, 0, 1.01 } }, { { 0, 0, -0.99 } } }, { 5.0, -5.0 }));
+  snapped->HardConstraintsOn();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(snapped).empty());
+  f = snapped->GetOutput()->GetPointData()->GetArray("HarmonicField");
+  ok &= KERF_CHECK(f->GetComponent(sphere->FindPoint(0, 0, 1), 0) == 5.0);
+  ok &= KERF_CHECK(f->GetComponent(sphere->FindPoint(0, 0, -1), 0) == -5.0);
+  ok &= KERF_CHECK(residual(snapped) <= 1e-10);
+
+  // Errors.
+  vtkNew<vtkPoints> twoPoints;
+  vtkNew<vtkCellArray> twoTriangles;
+  for (int copy = 0; copy < 2; ++copy)
+  {
+    const kerf::TriangleMesh s = kerf::makeIcosphere(1.0, 1);
+    const vtkIdType offset = twoPoints->GetNumberOfPoints();
+    for (int v = 0; v < s.vertexCount(); ++v)
+    {
+      twoPoints->InsertNextPoint(s.point(v).x() + 3.0 * copy, s.point(v).y(), s.point(v).z());
+    }
+    for (const kerf::Triangle& t : s.triangles())
+    {
+      const vtkIdType ids[3] = { t[0] + offset, t[1] + offset, t[2] + offset };
+      twoTriangles->InsertNextCell(3, ids);
+    }
+  }
+  vtkNew<vtkPolyData> twoSpheres;
+  twoSpheres->SetPoints(twoPoints);
+  twoSpheres->SetPolys(twoTriangles);
+  vtkSmartPointer<vtkPolyData> noValues = pointsWithValues({ { { 0, 0, 1 } } }, { 1.0 });
+  noValues->GetPointData()->RemoveArray("ConstraintValue");
+  struct Case
+  {
+    const char* name;
+    vtkSmartPointer<vtkPolyData> surface;
+    vtkSmartPointer<vtkPolyData> constraints;
+    const char* expected;
+  };
+  const Case cases[] = {
+    { "no constraint", sphere, nullptr, "has no constraint" },
+    { "constraint off the surface", sphere, pointsWithValues({ { { 0, 0, 3 } } }, { 1.0 }),
+      "away from the surface" },
+    { "a component without constraint", twoSpheres, pointsWithValues({ { { 0, 0, 1 } } }, { 1.0 }),
+      "connected component 1" },
+    { "NaN value", sphere, pointsWithValues({ { { 0, 0, 1 } } }, { nan }), "NaN" },
+    { "no value array", sphere, noValues, "no one-component value array" },
+  };
+  for (const Case& c : cases)
+  {
+    vtkNew<vtkHarmonicField> failing;
+    failing->SetInputData(0, c.surface);
+    if (c.constraints)
+    {
+      failing->SetInputData(1, c.constraints);
+    }
+    int succeeded = 1;
+    const std::string error = kerf::test::UpdateAndCaptureError(failing, &succeeded);
+    std::cout << c.name << ": " << error << std::endl;
+    ok &= KERF_CHECK(succeeded == 0 && error.find(c.expected) != std::string::npos);
+    ok &= KERF_CHECK(failing->GetOutput()->GetNumberOfPoints() == 0);
+  }
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
