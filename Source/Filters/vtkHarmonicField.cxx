@@ -162,17 +162,7 @@ int vtkHarmonicField::RequestData(
         descriptors = kerf::computeSurfaceDescriptors(mesh);
       }
       state.weights = kerf::computeLaplacianWeights(mesh, options, needsCurvature ? &descriptors : nullptr);
-      double sum = 0.0;
-      int used = 0;
-      for (double w : state.weights)
-      {
-        sum += 2.0 * w;
-      }
-      for (int v = 0; v < mesh.vertexCount(); ++v)
-      {
-        used += mesh.vertexFaces(v).empty() ? 0 : 1;
-      }
-      state.meanDiagonal = used > 0 && sum > 0.0 ? sum / used : 1.0;
+      state.meanDiagonal = kerf::laplacianMeanDiagonal(mesh, state.weights);
       state.weightOptions = options;
       state.weightsValid = true;
     }

@@ -4,6 +4,13 @@
 #include "Error.h"
 #include "Evaluation/PrincetonBenchmark.h"
 #include "Evaluation/SegmentationMetrics.h"
+#include "Evaluation/SimulatedStrokes.h"
+#include "Geometry/ClosestPoint.h"
+#include "Geometry/SurfaceDescriptors.h"
+#include "Harmonic/HarmonicField.h"
+#include "Harmonic/Isolines.h"
+#include "Harmonic/LaplacianWeights.h"
+#include "Harmonic/StrokeConstraints.h"
 #include "IO/MeshFormats.h"
 #include "KerfErrorCollector.h"
 #include "KerfSurfaceInput.h"
@@ -22,7 +29,10 @@
 #include <vtkStringArray.h>
 #include <vtkTable.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <map>
 
 vtkStandardNewMacro(vtkSegmentationBenchmark);
 
@@ -76,6 +86,142 @@ ModelResult runHumans(const kerf::SegmentationEvaluator& evaluator,
   return result;
 }
 
+// "name=value;name=value" into a map; throws on malformed pairs or unknown names.
+std::map<std::string, std::string> parseParameters(const std::string& text, const std::vector<std::string>& known)
+{
+  std::map<std::string, std::string> values;
+  std::size_t start = 0;
+  while (start < text.size())
+  {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const std::string pair = text.substr(start, end - start);
+    start = end + 1;
+    if (pair.empty())
+    {
+      continue;
+    }
+    const std::size_t equals = pair.find('=');
+    const std::string name = pair.substr(0, equals);
+    if (equals == std::string::npos || std::find(known.begin(), known.end(), name) == known.end())
+    {
+      throw kerf::Error("unknown or malformed method parameter '" + pair + "'");
+    }
+    values[name] = pair.substr(equals + 1);
+  }
+  return values;
+}
+
+double numberParameter(const std::map<std::string, std::string>& values, const std::string& name, double fallback)
+{
+  const auto found = values.find(name);
+  if (found == values.end())
+  {
+    return fallback;
+  }
+  try
+  {
+    std::size_t used = 0;
+    const double value = std::stod(found->second, &used);
+    if (used == found->second.size() && std::isfinite(value) && value > 0.0)
+    {
+      return value;
+    }
+  }
+  catch (const std::exception&)
+  {
+  }
+  throw kerf::Error("method parameter " + name + " must be a positive number, got '" + found->second + "'");
+}
+
+// SeamCut's harmonic cuts with simulated strokes: one stroke along each boundary between two
+// segments of human 0, one field and cut per stroke, all cuts together segmenting the mesh;
+// scored against the other humans.
+ModelResult runHarmonicCuts(const kerf::TriangleMesh& mesh, const kerf::SegmentationEvaluator& evaluator,
+  const std::vector<kerf::PreparedSegmentation>& humans, const std::vector<std::vector<int>>& raw,
+  const std::string& parameterText)
+{
+  const std::map<std::string, std::string> parameters =
+    parseParameters(parameterText, { "weighting", "samples", "offset", "spacing", "weight" });
+  kerf::LaplacianWeightOptions weighting;
+  const std::string weightingName = parameters.count("weighting") ? parameters.at("weighting") : "cotangent";
+  if (weightingName == "cotangent")
+  {
+    weighting.weighting = kerf::LaplacianWeighting::Cotangent;
+  }
+  else if (weightingName == "uniform")
+  {
+    weighting.weighting = kerf::LaplacianWeighting::Uniform;
+  }
+  else if (weightingName == "concavity")
+  {
+    weighting.weighting = kerf::LaplacianWeighting::ConcavityAware;
+  }
+  else if (weightingName == "smooth-concavity")
+  {
+    weighting.weighting = kerf::LaplacianWeighting::SmoothConcavity;
+  }
+  else
+  {
+    throw kerf::Error("weighting must be cotangent, uniform, concavity or smooth-concavity, got '" + weightingName + "'");
+  }
+  const double diagonal = mesh.boundingBoxDiagonal();
+  kerf::StrokeOptions strokeOptions;
+  strokeOptions.samplesPerSegment = static_cast<int>(numberParameter(parameters, "samples", 4));
+  strokeOptions.offset = numberParameter(parameters, "offset", 0.01) * diagonal;
+  strokeOptions.maximumDistance = 0.05 * diagonal;
+  const double spacing = numberParameter(parameters, "spacing", 0.03) * diagonal;
+  const double softWeight = numberParameter(parameters, "weight", 1.0);
+
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<kerf::BoundaryStroke> strokes = kerf::boundaryStrokes(mesh, raw[0], spacing);
+  const bool needsCurvature = weighting.weighting == kerf::LaplacianWeighting::ConcavityAware ||
+    weighting.weighting == kerf::LaplacianWeighting::SmoothConcavity;
+  kerf::SurfaceDescriptors descriptors;
+  if (needsCurvature)
+  {
+    descriptors = kerf::computeSurfaceDescriptors(mesh);
+  }
+  const std::vector<double> weights =
+    kerf::computeLaplacianWeights(mesh, weighting, needsCurvature ? &descriptors : nullptr);
+  const kerf::ClosestPointLocator locator(mesh);
+  const std::vector<kerf::Vector3> normals = kerf::computeVertexNormals(mesh);
+  kerf::HarmonicFieldSolver solver;
+  std::vector<std::vector<double>> fields;
+  std::vector<std::vector<kerf::Isoline>> isolines;
+  fields.reserve(strokes.size());
+  isolines.reserve(strokes.size());
+  std::vector<kerf::FieldCut> cuts;
+  for (const kerf::BoundaryStroke& stroke : strokes)
+  {
+    const kerf::StrokeConstraintSet set =
+      kerf::strokeConstraints(mesh, locator, normals, { stroke.points }, strokeOptions);
+    kerf::FieldConstraints constraints;
+    constraints.soft = set.constraints;
+    constraints.softWeight = softWeight * kerf::laplacianMeanDiagonal(mesh, weights);
+    fields.push_back(solver.solve(mesh, weights, constraints).field);
+    isolines.push_back(kerf::extractIsolines(mesh, fields.back(), 0.0));
+    const int nearest = kerf::nearestIsoline(isolines.back(), set.strokeSamples);
+    if (nearest >= 0)
+    {
+      cuts.push_back({ &fields.back(), 0.0, { &isolines.back()[static_cast<std::size_t>(nearest)] } });
+    }
+  }
+  const std::vector<int> labels = kerf::labelCuts(mesh, cuts);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  ModelResult result;
+  const kerf::PreparedSegmentation prepared = evaluator.prepare(labels);
+  for (std::size_t h = 1; h < humans.size(); ++h)
+  {
+    accumulate(result, evaluator.compare(prepared, humans[h]), nullptr);
+  }
+  result.segments = prepared.segmentCount;
+  result.seconds = seconds;
+  result.shownMethod = labels;
+  result.shownHuman = raw[0];
+  return result;
+}
+
 vtkSmartPointer<vtkIntArray> labelArray(const char* name, const std::vector<int>& labels)
 {
   auto array = vtkSmartPointer<vtkIntArray>::New();
@@ -118,7 +264,7 @@ void vtkSegmentationBenchmark::ClearModels()
 
 std::vector<std::string> vtkSegmentationBenchmark::GetMethodNames()
 {
-  return { "human" };
+  return { "human", "harmonic-cuts" };
 }
 
 std::vector<int> vtkSegmentationBenchmark::FindModels(const std::string& directory, std::string& error)
@@ -159,7 +305,7 @@ int vtkSegmentationBenchmark::RequestData(
   const std::vector<std::string> methods = GetMethodNames();
   if (std::find(methods.begin(), methods.end(), method) == methods.end())
   {
-    vtkErrorMacro("Unknown method '" << method << "'; the methods are: human.");
+    vtkErrorMacro("Unknown method '" << method << "'; the methods are: human, harmonic-cuts.");
     return 0;
   }
   if (!this->DataDirectory || !*this->DataDirectory)
@@ -253,11 +399,9 @@ int vtkSegmentationBenchmark::RequestData(
         raw.push_back(kerf::readSegmentation(file));
         humans.push_back(evaluator.prepare(raw.back()));
       }
-      const auto start = std::chrono::steady_clock::now();
-      result = runHumans(evaluator, humans, raw);
-      result.seconds = method == "human"
-        ? 0.0
-        : std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      result = method == "human"
+        ? runHumans(evaluator, humans, raw)
+        : runHarmonicCuts(surface.Mesh(), evaluator, humans, raw, this->MethodParameters ? this->MethodParameters : "");
     }
     catch (const kerf::Error& e)
     {

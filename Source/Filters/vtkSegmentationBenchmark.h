@@ -10,14 +10,22 @@
  * - "human": the humans against each other: every unordered pair of the model's human
  *   segmentations (the benchmark's human baseline). Missing and false-alarm rates are averaged
  *   over both orders of each pair.
+ * - "harmonic-cuts": SeamCut's cuts from strokes, with simulated input made from human 0: one
+ *   stroke along each boundary between two of its segments (kerf::boundaryStrokes, points about
+ *   `spacing` of the diagonal apart), one harmonic field per stroke (its constraints as in
+ *   vtkStrokeConstraints), the isoline f = 0 nearest each stroke as that stroke's cut, and the
+ *   segments all cuts bound together (kerf::labelCuts). Scored against humans 1 to n-1, so the
+ *   input human is never a reference. Parameters: weighting (cotangent, uniform, concavity,
+ *   smooth-concavity; default cotangent), samples (N_S, 4), offset (eps_C, 0.01 of the
+ *   diagonal), spacing (0.03 of the diagonal), weight (soft-constraint weight, 1).
  *
  * Output 0 (vtkTable): Model, Category, Method, Parameters, Comparisons, CutDiscrepancy,
  * HammingDistance, MissingRate, FalseAlarmRate, RandIndexError, GlobalConsistencyError,
  * LocalConsistencyError, Segments (mean number of segments the method produced), Seconds (time
  * the method took, 0 for "human").
  * Output 1 (vtkPolyData): the last model's mesh with the cell arrays "Method" (the method's
- * segmentation; for "human", human 0) and "Human" (the human it is shown beside; human 1 for
- * "human", else human 0), for pictures. "Method" is renumbered with kerf::matchLabels so that
+ * segmentation; for "human", human 0) and "Human" (the human it is shown beside: human 1 for
+ * "human", the input human 0 for the interactive methods), for pictures. "Method" is renumbered with kerf::matchLabels so that
  * each segment carries the label of the human segment it overlaps most and colours match.
  *
  * A missing folder, an unknown method, a requested model that is not in the folder, a model with

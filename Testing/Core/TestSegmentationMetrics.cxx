@@ -1,6 +1,7 @@
 // Segmentation metrics against hand-computed values, invariances and the benchmark's human agreement.
 #include "Error.h"
 #include "Evaluation/SegmentationMetrics.h"
+#include "Evaluation/SimulatedStrokes.h"
 #include "Geodesic/GraphDistance.h"
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshGenerators.h"
@@ -201,4 +202,42 @@ TEST(SegmentationMetrics, MatchLabelsFollowsTheLargestOverlap)
   const std::vector<int> reference{ 2, 2, 0, 0, 0, 2, 1 };
   EXPECT_EQ(matchLabels(labels, reference), (std::vector<int>{ 2, 2, 2, 0, 0, 3, -1 }));
   EXPECT_THROW(matchLabels({ 1 }, { 1, 2 }), Error);
+}
+
+TEST(SimulatedStrokes, OneStrokePerBoundaryChain)
+{
+  // A cylinder cut into three bands: two boundaries, each a loop around the axis.
+  const TriangleMesh cylinder = makeCylinder(1.0, 3.0, 48, 31);
+  std::vector<int> labels(cylinder.faceCount());
+  for (int f = 0; f < cylinder.faceCount(); ++f)
+  {
+    const Triangle& t = cylinder.triangle(f);
+    const double z = (cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])).z() / 3.0;
+    labels[f] = z < 1.0 ? 0 : (z < 2.0 ? 5 : 9);
+  }
+  const std::vector<BoundaryStroke> strokes = boundaryStrokes(cylinder, labels, 0.2);
+  ASSERT_EQ(strokes.size(), 2u);
+  EXPECT_EQ(strokes[0].label1, 0);
+  EXPECT_EQ(strokes[0].label2, 5);
+  EXPECT_EQ(strokes[1].label1, 5);
+  EXPECT_EQ(strokes[1].label2, 9);
+  for (const BoundaryStroke& stroke : strokes)
+  {
+    const double height = stroke.label1 == 0 ? 1.0 : 2.0;
+    // A closed loop of circumference 2 pi, sampled about 0.2 apart.
+    EXPECT_NEAR(static_cast<double>(stroke.points.size()), 2.0 * 3.14159265 / 0.2 + 1.0, 2.0);
+    EXPECT_LT((stroke.points.front() - stroke.points.back()).norm(), 1e-12);
+    for (const Vector3& p : stroke.points)
+    {
+      EXPECT_NEAR(p.z(), height, 1e-12);
+      EXPECT_NEAR(std::hypot(p.x(), p.y()), 1.0, 0.01);
+    }
+  }
+  // A second, disjoint boundary between the same pair gives a second stroke.
+  for (int f = 0; f < cylinder.faceCount(); ++f)
+  {
+    labels[f] = labels[f] == 9 ? 0 : labels[f];
+  }
+  EXPECT_EQ(boundaryStrokes(cylinder, labels, 0.2).size(), 2u);
+  EXPECT_THROW(boundaryStrokes(cylinder, { 1, 2 }, 0.2), Error);
 }

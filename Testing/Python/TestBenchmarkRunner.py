@@ -68,6 +68,30 @@ class BenchmarkRunner(unittest.TestCase):
             with open(os.path.join(out, "pictures", model + ".png"), "rb") as png:
                 self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
 
+    def test_harmonic_cuts_from_simulated_strokes(self):
+        out = os.path.join(self.folder, "harmonic")
+        result = subprocess.run([PROGRAM, "benchmark", "--data", DATA, "--method", "harmonic-cuts",
+                                 "--models", "36,125,342", "--jobs", "2", "--no-pictures", "-o", out],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        rows = {int(r["Model"]): r for r in read_rows(os.path.join(out, "results.csv"))}
+        humans = readme_human_rand_index()
+        for model, row in rows.items():
+            segs = len([f for f in os.listdir(os.path.join(DATA, "seg", str(model))) if f.endswith(".seg")])
+            # Drawn from human 0, scored against the others.
+            self.assertEqual(int(row["Comparisons"]), segs - 1)
+            self.assertEqual(row["Method"], "harmonic-cuts")
+            self.assertGreater(float(row["Seconds"]), 0.0)
+            self.assertGreaterEqual(float(row["Segments"]), 2)
+            # Strokes along a human's boundaries give a segmentation about as close to the other
+            # humans as the humans are to each other.
+            self.assertLess(float(row["RandIndexError"]), humans[model] + 0.05, "model %d" % model)
+        bad = subprocess.run([PROGRAM, "benchmark", "--data", DATA, "--method", "harmonic-cuts",
+                              "--models", "36", "--parameters", "weighting=magic", "--no-pictures",
+                              "-o", os.path.join(self.folder, "bad")], capture_output=True, text=True, timeout=120)
+        self.assertEqual(bad.returncode, 1)
+        self.assertIn("weighting must be", bad.stderr)
+
     def test_errors_are_reported(self):
         for arguments, message in (
                 (["--data", "/nonexistent/psb"], "no off/ subfolder"),

@@ -274,23 +274,38 @@ int nearestIsoline(const std::vector<Isoline>& isolines, const std::vector<Vecto
   return best;
 }
 
-std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
-  const std::vector<const Isoline*>& cut)
+std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>& cuts)
 {
   const int faces = mesh.faceCount();
-  std::vector<char> upper(faces), onCut(faces, 0);
-  for (int f = 0; f < faces; ++f)
+  // Per cut: which side each face is on, and which faces hold a segment of the cut.
+  std::vector<std::vector<char>> upper(cuts.size(), std::vector<char>(faces));
+  std::vector<std::vector<char>> onCut(cuts.size(), std::vector<char>(faces, 0));
+  for (std::size_t c = 0; c < cuts.size(); ++c)
   {
-    const Triangle& t = mesh.triangle(f);
-    upper[f] = (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= value ? 1 : 0;
-  }
-  for (const Isoline* line : cut)
-  {
-    for (int f : line->faces)
+    const std::vector<double>& field = *cuts[c].field;
+    for (int f = 0; f < faces; ++f)
     {
-      onCut[f] = 1;
+      const Triangle& t = mesh.triangle(f);
+      upper[c][f] = (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= cuts[c].value ? 1 : 0;
+    }
+    for (const Isoline* line : cuts[c].components)
+    {
+      for (int f : line->faces)
+      {
+        onCut[c][f] = 1;
+      }
     }
   }
+  auto separated = [&](int f, int g) {
+    for (std::size_t c = 0; c < cuts.size(); ++c)
+    {
+      if (upper[c][f] != upper[c][g] && (onCut[c][f] || onCut[c][g]))
+      {
+        return true;
+      }
+    }
+    return false;
+  };
   std::vector<int> labels(faces, -1);
   std::vector<int> stack;
   int next = 0;
@@ -309,21 +324,22 @@ std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<doubl
       for (int k = 0; k < 3; ++k)
       {
         const int g = mesh.faceNeighbor(f, k);
-        if (g < 0 || labels[g] >= 0)
+        if (g >= 0 && labels[g] < 0 && !separated(f, g))
         {
-          continue;
+          labels[g] = next;
+          stack.push_back(g);
         }
-        if (upper[f] != upper[g] && (onCut[f] || onCut[g]))
-        {
-          continue; // the cut separates f and g
-        }
-        labels[g] = next;
-        stack.push_back(g);
       }
     }
     ++next;
   }
   return labels;
+}
+
+std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
+  const std::vector<const Isoline*>& cut)
+{
+  return labelCuts(mesh, { FieldCut{ &field, value, cut } });
 }
 
 } // namespace kerf

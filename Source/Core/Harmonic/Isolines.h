@@ -51,10 +51,22 @@ std::vector<IsovalueScore> scoreIsovalues(const TriangleMesh& mesh, const std::v
 /// the polyline), or -1 if there is none.
 int nearestIsoline(const std::vector<Isoline>& isolines, const std::vector<Vector3>& points);
 
-/// Per-face segment labels for a cut along the given isoline components of f = value: a face is
-/// on the upper side when the mean of its corner values is >= value; faces are then grouped into
-/// connected components that do not cross the cut, and numbered in order of their first face.
-/// Only the given components separate; elsewhere both sides stay connected.
+/// A cut: chosen components of the isoline f = value of one field.
+struct FieldCut
+{
+  const std::vector<double>* field = nullptr;
+  double value = 0.0;
+  std::vector<const Isoline*> components;
+};
+
+/// Per-face segment labels for any number of cuts: for each cut, a face is on its upper side when
+/// the mean of its corner values is >= the cut's value; two neighbouring faces are separated when
+/// some cut puts them on different sides and one of them holds a segment of that cut's chosen
+/// components. Faces are grouped into connected components that are not separated, numbered in
+/// order of their first face. Elsewhere both sides of an isoline stay connected.
+std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>& cuts);
+
+/// labelCuts for a single cut.
 std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
   const std::vector<const Isoline*>& cut);
 

@@ -195,6 +195,21 @@ std::vector<double> computeLaplacianWeights(
   return weights;
 }
 
+double laplacianMeanDiagonal(const TriangleMesh& mesh, const std::vector<double>& edgeWeights)
+{
+  double sum = 0.0;
+  for (double w : edgeWeights)
+  {
+    sum += 2.0 * w;
+  }
+  int used = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    used += mesh.vertexFaces(v).empty() ? 0 : 1;
+  }
+  return used > 0 && sum > 0.0 ? sum / used : 1.0;
+}
+
 Eigen::SparseMatrix<double> assembleLaplacian(const TriangleMesh& mesh, const std::vector<double>& edgeWeights)
 {
   const int n = mesh.vertexCount();

@@ -59,6 +59,10 @@ constexpr double WeightFloor = 1e-6;
 std::vector<double> computeLaplacianWeights(const TriangleMesh& mesh,
   const LaplacianWeightOptions& options, const SurfaceDescriptors* descriptors = nullptr);
 
+/// The mean diagonal entry of the Laplacian over the vertices used by triangles (1 if none): the
+/// scale soft-constraint weights are given relative to.
+double laplacianMeanDiagonal(const TriangleMesh& mesh, const std::vector<double>& edgeWeights);
+
 /// The positive semi-definite Laplacian L = D - W (D the diagonal of row sums of W).
 Eigen::SparseMatrix<double> assembleLaplacian(const TriangleMesh& mesh, const std::vector<double>& edgeWeights);
 

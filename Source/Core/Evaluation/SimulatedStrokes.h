@@ -1,0 +1,28 @@
+// Simulated user input made from a segmentation, for benchmarking interactive methods.
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+
+#include <vector>
+
+namespace kerf
+{
+
+/// A stroke drawn along the boundary between two segments.
+struct BoundaryStroke
+{
+  int label1 = -1; ///< the smaller of the two labels
+  int label2 = -1;
+  std::vector<Vector3> points;
+};
+
+/// One stroke along each boundary between two segments of a per-face segmentation: for every
+/// pair of labels whose faces share edges, each connected chain of those edges (a handle
+/// attached at two places has two) at least `spacing` long, walked from an end (or around, if it
+/// is a loop) and resampled by arc length to points about `spacing` apart (at least 4, at most
+/// 64). Unlabelled faces (-1) have no boundary. Strokes are ordered by label pair and then by
+/// their first edge, so the result is deterministic.
+std::vector<BoundaryStroke> boundaryStrokes(
+  const TriangleMesh& mesh, const std::vector<int>& labels, double spacing);
+
+} // namespace kerf
