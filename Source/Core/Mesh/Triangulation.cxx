@@ -1,7 +1,11 @@
 // Ear-clipping triangulation of polygons in their Newell plane.
 #include "Mesh/Triangulation.h"
 
+#include "Error.h"
+
 #include <Eigen/Geometry>
+
+#include <string>
 
 namespace kerf
 {
@@ -106,6 +110,18 @@ void earClip(const PolygonMesh& mesh, std::vector<int> corners, int polygon, Tri
 
 Triangulation triangulatePolygons(const PolygonMesh& mesh)
 {
+  const int points = static_cast<int>(mesh.points.size());
+  for (int f = 0; f < mesh.polygonCount(); ++f)
+  {
+    for (int k = mesh.polygonOffsets[f]; k < mesh.polygonOffsets[f + 1]; ++k)
+    {
+      if (mesh.polygonIndices[k] < 0 || mesh.polygonIndices[k] >= points)
+      {
+        throw Error("polygon " + std::to_string(f) + " uses point " + std::to_string(mesh.polygonIndices[k]) +
+          ", but the mesh has " + std::to_string(points) + " points");
+      }
+    }
+  }
   Triangulation out;
   out.triangles.reserve(mesh.polygonIndices.size() / 3);
   out.sourcePolygon.reserve(mesh.polygonIndices.size() / 3);

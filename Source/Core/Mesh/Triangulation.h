@@ -19,7 +19,8 @@ struct Triangulation
 
 /// Triangulates every polygon: triangles are kept as they are; larger polygons are projected
 /// onto their Newell plane and split by ear clipping, which is exact for simple polygons and
-/// keeps the polygon's orientation. Polygons that are not simple fall back to a fan.
+/// keeps the polygon's orientation. Polygons that are not simple fall back to a fan. Throws
+/// kerf::Error if a polygon uses an index outside the points.
 Triangulation triangulatePolygons(const PolygonMesh& mesh);
 
 } // namespace kerf
