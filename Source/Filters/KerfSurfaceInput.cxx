@@ -201,10 +201,31 @@ bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements
   return true;
 }
 
+namespace
+{
+std::vector<std::pair<const void*, vtkMTimeType>> geometryKey(vtkPolyData* input)
+{
+  std::vector<std::pair<const void*, vtkMTimeType>> key;
+  vtkDataArray* points = input && input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
+  key.emplace_back(points, points ? points->GetMTime() : 0);
+  for (vtkCellArray* cells : { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
+  {
+    key.emplace_back(cells, cells ? cells->GetMTime() : 0);
+  }
+  return key;
+}
+} // namespace
+
 bool SurfaceInput::LoadIfChanged(
   vtkPolyData* input, const MeshRequirements& requirements, std::string& error, bool& reused)
 {
-  reused = this->Loaded && input && input == this->LoadedObject && input->GetMTime() == this->LoadedTime;
+  if (!input)
+  {
+    error = "the input is not a vtkPolyData";
+    return false;
+  }
+  const std::vector<std::pair<const void*, vtkMTimeType>> key = geometryKey(input);
+  reused = this->Loaded && key == this->LoadedGeometry;
   if (reused)
   {
     return true;
@@ -214,8 +235,7 @@ bool SurfaceInput::LoadIfChanged(
   {
     return false;
   }
-  this->LoadedObject = input;
-  this->LoadedTime = input->GetMTime();
+  this->LoadedGeometry = key;
   this->Loaded = true;
   return true;
 }

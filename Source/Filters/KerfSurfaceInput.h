@@ -34,9 +34,10 @@ public:
   /// Converts and validates. Returns false and sets `error` to a sentence naming the problem.
   bool Load(vtkPolyData* input, const MeshRequirements& requirements, std::string& error);
 
-  /// As Load, but keeps the current mesh when `input` is the data object loaded last time and
-  /// has not been modified since, so that a filter re-executing for a parameter change (an
-  /// iso-value, new constraints) does not convert its mesh again. `reused` tells which happened.
+  /// As Load, but keeps the current mesh while the input's geometry is the one loaded last time:
+  /// the same point array and cell arrays, none modified since. Only the geometry counts, so a
+  /// filter re-executing for a parameter change, or downstream of a filter that only adds data
+  /// arrays to a shared structure, does not convert its mesh again. `reused` tells which happened.
   bool LoadIfChanged(vtkPolyData* input, const MeshRequirements& requirements, std::string& error,
     bool& reused);
 
@@ -73,9 +74,9 @@ private:
   std::vector<int> Representatives;
   int Welded = 0;
   bool Rebuild = false;
-  // What LoadIfChanged loaded last.
-  const void* LoadedObject = nullptr;
-  vtkMTimeType LoadedTime = 0;
+  // The geometry LoadIfChanged loaded last: objects and modification times of the point array and
+  // the four cell arrays.
+  std::vector<std::pair<const void*, vtkMTimeType>> LoadedGeometry;
   bool Loaded = false;
 };
 

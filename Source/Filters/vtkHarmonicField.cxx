@@ -69,13 +69,6 @@ const char* workName(kerf::HarmonicFieldSolution::Work work)
   }
 }
 
-// True when input array `index` was given a name with SetInputArrayToProcess.
-bool arrayRequested(vtkAlgorithm* algorithm, int index)
-{
-  vtkInformation* info = algorithm->GetInputArrayInformation(index);
-  const char* name = info && info->Has(vtkDataObject::FIELD_NAME()) ? info->Get(vtkDataObject::FIELD_NAME()) : nullptr;
-  return name && *name;
-}
 } // namespace
 
 vtkHarmonicField::vtkHarmonicField()
@@ -85,11 +78,13 @@ vtkHarmonicField::vtkHarmonicField()
   this->SetFieldArrayName("HarmonicField");
   this->SetGradientArrayName("FieldGradient");
   this->SetGradientMagnitudeArrayName("FieldGradientMagnitude");
-  this->SetInputArrayToProcess(1, 1, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "ConstraintValue");
+  this->SetConstraintValueArrayName("ConstraintValue");
 }
 
 vtkHarmonicField::~vtkHarmonicField()
 {
+  this->SetHardValueArrayName(nullptr);
+  this->SetConstraintValueArrayName(nullptr);
   this->SetFieldArrayName(nullptr);
   this->SetGradientArrayName(nullptr);
   this->SetGradientMagnitudeArrayName(nullptr);
@@ -177,12 +172,13 @@ int vtkHarmonicField::RequestData(
   // Constraints.
   kerf::FieldConstraints constraints;
   constraints.softWeight = this->SoftConstraintWeight * state.meanDiagonal;
-  if (arrayRequested(this, 0))
+  if (this->HardValueArrayName && *this->HardValueArrayName)
   {
-    vtkDataArray* hard = this->GetInputArrayToProcess(0, inputVector);
-    if (!hard || hard->GetNumberOfComponents() != 1 || hard->GetNumberOfTuples() != input->GetNumberOfPoints())
+    vtkDataArray* hard = input->GetPointData()->GetArray(this->HardValueArrayName);
+    if (!hard || hard->GetNumberOfComponents() != 1)
     {
-      vtkErrorMacro("The hard-value array must be a one-component point array of the surface.");
+      vtkErrorMacro("The surface has no one-component point array named '" << this->HardValueArrayName
+                                                                             << "' (HardValueArrayName).");
       return 0;
     }
     std::vector<double> values(static_cast<std::size_t>(hard->GetNumberOfTuples()));
@@ -202,11 +198,14 @@ int vtkHarmonicField::RequestData(
   }
   if (constraintPoints && constraintPoints->GetNumberOfPoints() > 0)
   {
-    vtkDataArray* values = this->GetInputArrayToProcess(1, inputVector);
+    vtkDataArray* values = this->ConstraintValueArrayName
+      ? constraintPoints->GetPointData()->GetArray(this->ConstraintValueArrayName)
+      : nullptr;
     if (!values || values->GetNumberOfComponents() != 1)
     {
-      vtkErrorMacro("The constraint points have no one-component value array (select it with "
-                    "SetInputArrayToProcess(1, 1, 0, points, name); default \"ConstraintValue\").");
+      vtkErrorMacro("The constraint points have no one-component point array named '"
+        << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "")
+        << "' (ConstraintValueArrayName).");
       return 0;
     }
     const double limit = this->MaximumProjectionDistance * mesh.boundingBoxDiagonal();
@@ -289,6 +288,9 @@ void vtkHarmonicField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
   os << indent << "HardConstraints: " << this->HardConstraints << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
+  os << indent << "HardValueArrayName: " << (this->HardValueArrayName ? this->HardValueArrayName : "(none)") << "\n";
+  os << indent << "ConstraintValueArrayName: "
+     << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "(none)") << "\n";
   os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(none)") << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   os << indent << "GradientMagnitudeArrayName: "

@@ -4,12 +4,12 @@
  * constraints, with its per-face gradient.
  *
  * Constraints, in any combination:
- * - hard (Dirichlet) values on vertices: a point array of the surface, chosen with
- *   SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, name), whose
- *   non-NaN entries are fixed values (NaN marks a free vertex);
+ * - hard (Dirichlet) values on vertices: the point array of the surface named
+ *   HardValueArrayName, whose non-NaN entries are fixed values (NaN marks a free vertex); no
+ *   name (the default) means no hard values, a name the surface lacks is an error;
  * - points on the second input (any vtkPointSet, for example vtkStrokeConstraints' output) with a
- *   value array, chosen with SetInputArrayToProcess(1, 1, 0, ..., name) (default
- *   "ConstraintValue"). Each point is projected onto the surface; its nearest face and
+ *   value array named ConstraintValueArrayName (default "ConstraintValue"). Each point is
+ *   projected onto the surface; its nearest face and
  *   barycentric coordinates make a soft least-squares constraint of weight
  *   SoftConstraintWeight (seamcut.txt Eq. 1), or, with HardConstraints on, a hard value at the
  *   nearest vertex.
@@ -105,6 +105,19 @@ public:
   ///@}
 
   ///@{
+  /// Name of the point array of the surface holding hard values (NaN: free vertex). Default
+  /// none.
+  vtkSetStringMacro(HardValueArrayName);
+  vtkGetStringMacro(HardValueArrayName);
+  ///@}
+
+  ///@{
+  /// Name of the value array of the constraint points (second input). Default "ConstraintValue".
+  vtkSetStringMacro(ConstraintValueArrayName);
+  vtkGetStringMacro(ConstraintValueArrayName);
+  ///@}
+
+  ///@{
   /// Output array names. Defaults "HarmonicField", "FieldGradient", "FieldGradientMagnitude".
   vtkSetStringMacro(FieldArrayName);
   vtkGetStringMacro(FieldArrayName);
@@ -131,6 +144,8 @@ protected:
   double SoftConstraintWeight = 1.0;
   bool HardConstraints = false;
   double MaximumProjectionDistance = 0.02;
+  char* HardValueArrayName = nullptr;
+  char* ConstraintValueArrayName = nullptr;
   char* FieldArrayName = nullptr;
   char* GradientArrayName = nullptr;
   char* GradientMagnitudeArrayName = nullptr;

@@ -123,10 +123,14 @@ int vtkIsolineScoring::RequestData(
     return 0;
   }
 
-  std::vector<double> magnitudes;
-  for (const kerf::Vector3& g : kerf::computeFaceGradients(mesh, field))
+  // Gradient magnitudes: every face's to score candidates, else only those the cut crosses.
+  std::vector<double> magnitudes(static_cast<std::size_t>(mesh.faceCount()), 0.0);
+  if (this->Mode == BEST_SCORE)
   {
-    magnitudes.push_back(g.norm());
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      magnitudes[f] = kerf::faceGradient(mesh, field, f).norm();
+    }
   }
 
   double value = this->IsoValue;
@@ -173,6 +177,13 @@ int vtkIsolineScoring::RequestData(
   for (const kerf::Isoline& line : isolines)
   {
     cut.push_back(&line);
+    if (this->Mode != BEST_SCORE)
+    {
+      for (int f : line.faces)
+      {
+        magnitudes[f] = kerf::faceGradient(mesh, field, f).norm();
+      }
+    }
   }
   const std::vector<int> labels = kerf::labelCutSides(mesh, field, value, cut);
   this->UpdateProgress(0.8);

@@ -140,7 +140,7 @@ int TestHarmonicCut(int, char*[])
   dumbbell->GetPointData()->AddArray(tips);
   vtkNew<vtkHarmonicField> neckField;
   neckField->SetInputData(dumbbell);
-  neckField->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Tips");
+  neckField->SetHardValueArrayName("Tips");
   neckField->SetWeightingToConcavityAware();
   vtkNew<vtkIsolineScoring> best;
   best->SetInputConnection(neckField->GetOutputPort());

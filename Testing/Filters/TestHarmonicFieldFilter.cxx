@@ -87,7 +87,7 @@ int TestHarmonicFieldFilter(int, char*[])
   plane->GetPointData()->AddArray(hard);
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(plane);
-  field->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Hard");
+  field->SetHardValueArrayName("Hard");
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(field).empty());
   vtkDataArray* f = field->GetOutput()->GetPointData()->GetArray("HarmonicField");
   double worst = 0.0;
@@ -219,7 +219,7 @@ int TestHarmonicFieldFilter(int, char*[])
     { "a component without constraint", twoSpheres, pointsWithValues({ { { 0, 0, 1 } } }, { 1.0 }),
       "connected component 1" },
     { "NaN value", sphere, pointsWithValues({ { { 0, 0, 1 } } }, { nan }), "NaN" },
-    { "no value array", sphere, noValues, "no one-component value array" },
+    { "no value array", sphere, noValues, "no one-component point array named" },
   };
   for (const Case& c : cases)
   {

@@ -32,7 +32,7 @@ int TestHarmonicFieldImage(int argc, char* argv[])
   shape->GetPointData()->AddArray(tips);
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(shape);
-  field->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Tips");
+  field->SetHardValueArrayName("Tips");
   field->SetWeightingToSmoothConcavity();
   field->Update();
 

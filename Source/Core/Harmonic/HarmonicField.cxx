@@ -383,27 +383,31 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   return solution;
 }
 
+Vector3 faceGradient(const TriangleMesh& mesh, const std::vector<double>& field, int face)
+{
+  const Triangle& t = mesh.triangle(face);
+  const Vector3& p0 = mesh.point(t[0]);
+  const Vector3& p1 = mesh.point(t[1]);
+  const Vector3& p2 = mesh.point(t[2]);
+  const Vector3 normal = (p1 - p0).cross(p2 - p0);
+  const double twiceArea = normal.norm();
+  const double longest = std::max({ (p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm() });
+  if (twiceArea <= ZeroAreaTolerance * longest)
+  {
+    return Vector3::Zero();
+  }
+  const Vector3 n = normal / twiceArea;
+  // e_j is the edge opposite corner j, counter-clockwise.
+  return (field[t[0]] * n.cross(p2 - p1) + field[t[1]] * n.cross(p0 - p2) + field[t[2]] * n.cross(p1 - p0)) /
+    twiceArea;
+}
+
 std::vector<Vector3> computeFaceGradients(const TriangleMesh& mesh, const std::vector<double>& field)
 {
-  std::vector<Vector3> gradients(mesh.faceCount(), Vector3::Zero());
+  std::vector<Vector3> gradients(mesh.faceCount());
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
-    const Triangle& t = mesh.triangle(f);
-    const Vector3& p0 = mesh.point(t[0]);
-    const Vector3& p1 = mesh.point(t[1]);
-    const Vector3& p2 = mesh.point(t[2]);
-    const Vector3 normal = (p1 - p0).cross(p2 - p0);
-    const double twiceArea = normal.norm();
-    const double longest = std::max({ (p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm() });
-    if (twiceArea <= ZeroAreaTolerance * longest)
-    {
-      continue;
-    }
-    const Vector3 n = normal / twiceArea;
-    // e_j is the edge opposite corner j, counter-clockwise.
-    gradients[f] = (field[t[0]] * n.cross(p2 - p1) + field[t[1]] * n.cross(p0 - p2) +
-                     field[t[2]] * n.cross(p1 - p0)) /
-      twiceArea;
+    gradients[f] = faceGradient(mesh, field, f);
   }
   return gradients;
 }

@@ -84,4 +84,7 @@ private:
 /// (roi-scissor.txt 4.2). Zero on zero-area triangles.
 std::vector<Vector3> computeFaceGradients(const TriangleMesh& mesh, const std::vector<double>& field);
 
+/// The gradient of the field on one triangle (as computeFaceGradients).
+Vector3 faceGradient(const TriangleMesh& mesh, const std::vector<double>& field, int face);
+
 } // namespace kerf

@@ -1,0 +1,227 @@
+# The plugin's stroke cut in pvbatch or pvpython: Stroke Constraints, Harmonic Field and Isoline Cut on the camel.
+import math
+import os
+import unittest
+
+import numpy
+from paraview import servermanager
+from paraview import simple
+from vtkmodules.util.misc import calldata_type
+from vtkmodules.util.numpy_support import vtk_to_numpy
+from vtkmodules.util.vtkConstants import VTK_STRING
+from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList
+from vtkmodules.vtkIOLegacy import vtkPolyDataReader
+
+CAMEL = os.path.join(os.environ["KERF_SOURCE_DIR"], "Data", "camel.off")
+NECK_STROKE = os.path.join(os.environ["KERF_SOURCE_DIR"], "Data", "camel-neck-stroke.vtk")
+
+STROKE_POINTS = 9
+SAMPLES_PER_SEGMENT = 4  # the proxy's default
+NECK_HEIGHT = 0.3  # every point of the bundled stroke has y = 0.3
+# The cut stays within 0.35% of the diagonal of the neck plane y = 0.3; 1% leaves room
+# for solver and platform differences while still failing for a cut through the head or the body.
+PLANE_TOLERANCE = 0.01
+RESIDUAL_LIMIT = 1e-9
+SLID_ISO_VALUE = 0.5
+# Sliding to 0.5 moves the cut's mean height by 0.5% of the diagonal; a fifth of that is a move.
+SLIDE_DISTANCE = 0.001
+
+simple.LoadPlugin(os.environ["KERF_PLUGIN"])
+
+
+def stroke_points():
+    """The points of the bundled neck stroke, flattened as a ParaView property wants them."""
+    reader = vtkPolyDataReader()
+    reader.SetFileName(NECK_STROKE)
+    reader.Update()
+    stroke = reader.GetOutput()
+    return [c for i in range(stroke.GetNumberOfPoints()) for c in stroke.GetPoint(i)]
+
+
+def points_of(data):
+    return vtk_to_numpy(data.GetPoints().GetData()).astype(float)
+
+
+def field_data_value(data, name):
+    """The first value of field data array `name` (a string or a number), or None."""
+    array = data.GetFieldData().GetAbstractArray(name)
+    if array is None or array.GetNumberOfValues() == 0:
+        return None
+    return array.GetValue(0)
+
+
+class Watch:
+    """Counts the executions of proxies' VTK algorithms and collects their errors (so that none
+    prints "ERR|" or "ERROR:")."""
+
+    def __init__(self):
+        self.errors = {}
+        self.executions = {}
+
+    def add(self, name, proxy):
+        algorithm = proxy.GetClientSideObject()
+        self.errors[name] = []
+        self.executions[name] = 0
+
+        def started(caller, event):
+            self.executions[name] += 1
+
+        @calldata_type(VTK_STRING)
+        def failed(caller, event, message):
+            # The first line, without VTK's "ERROR: In file, line n / class (address): " preamble.
+            self.errors[name].append(message.split("): ", 1)[-1].strip().splitlines()[0])
+
+        algorithm.AddObserver(vtkCommand.StartEvent, started)
+        for observed in (algorithm, algorithm.GetExecutive()):
+            observed.AddObserver(vtkCommand.ErrorEvent, failed)
+
+
+class CutPipeline:
+    """The cut as a user builds it in ParaView, applying each filter before adding the next."""
+
+    def __init__(self):
+        self.watch = Watch()
+        self.camel = simple.OpenDataFile(CAMEL)
+        self.camel.UpdatePipeline()
+        self.constraints = simple.StrokeConstraints(Input=self.camel)
+        self.constraints.SetPropertyWithName("StrokePoints", stroke_points())
+        self.watch.add("constraints", self.constraints)
+        self.constraints.UpdatePipeline()
+        self.field = simple.HarmonicField(Input=self.camel, Constraints=self.constraints)
+        self.watch.add("field", self.field)
+        self.field.UpdatePipeline()
+        self.stroke = simple.PolyLineSource(Points=stroke_points())
+        self.cut = simple.IsolineCut(Input=self.field, Stroke=self.stroke)
+        self.cut.Mode = "Near stroke"
+        self.watch.add("cut", self.cut)
+        self.cut.UpdatePipeline()
+
+    def delete(self):
+        for proxy in (self.cut, self.stroke, self.field, self.constraints, self.camel):
+            simple.Delete(proxy)
+
+
+class KerfCutTest(unittest.TestCase):
+    def setUp(self):
+        self.pipeline = CutPipeline()
+        low, high = numpy.array(self.pipeline.camel.GetDataInformation().GetBounds()).reshape(3, 2).T
+        self.diagonal = float(numpy.linalg.norm(high - low))
+
+    def tearDown(self):
+        self.pipeline.delete()
+
+    def fetch_cut(self, proxy):
+        """Fetches the cut of an Isoline Cut proxy, checks it is one closed polyline and returns it
+        with its points in order."""
+        curve = servermanager.Fetch(proxy)
+        self.assertEqual(curve.GetNumberOfCells(), 1)
+        self.assertEqual(curve.GetNumberOfLines(), 1)
+        self.assertEqual(curve.GetCellData().GetArray("Closed").GetValue(0), 1)
+        cell = curve.GetCell(0)
+        ids = [cell.GetPointId(k) for k in range(cell.GetNumberOfPoints())]
+        self.assertGreater(len(ids), 3)
+        self.assertEqual(ids[0], ids[-1])
+        return curve, points_of(curve)[ids]
+
+    def assert_no_errors(self, *names):
+        """Checks that the proxies `names` (all when none is given) reported no error."""
+        errors = self.pipeline.watch.errors
+        self.assertEqual({name: errors[name] for name in names or errors if errors[name]}, {})
+
+    def test_default_array_selections(self):
+        field = self.pipeline.field
+        with self.subTest(property="Harmonic Field's Constraint Values"):
+            self.assertEqual(field.ConstraintValues, "ConstraintValue")
+        with self.subTest(property="Isoline Cut's Field"):
+            self.assertEqual(list(self.pipeline.cut.Field), ["POINTS", "HarmonicField"])
+        with self.subTest(property="Harmonic Field's Hard Values"):
+            self.assertEqual(field.HardValues, "")
+
+    def test_stroke_gives_paired_constraints(self):
+        self.assert_no_errors("constraints")
+        constraints = servermanager.Fetch(self.pipeline.constraints)
+        expected = 2 * SAMPLES_PER_SEGMENT * (STROKE_POINTS - 1)
+        self.assertEqual(expected, 64)
+        self.assertEqual(constraints.GetNumberOfPoints(), expected)
+        values = vtk_to_numpy(constraints.GetPointData().GetArray("ConstraintValue"))
+        self.assertEqual(sorted(set(values.tolist())), [-1.0, 1.0])
+        self.assertEqual(int((values == 1.0).sum()), expected // 2)
+
+    def test_first_solve_factors(self):
+        self.assert_no_errors("constraints", "field")
+        field = servermanager.Fetch(self.pipeline.field)
+        self.assertEqual(field_data_value(field, "SolverWork"), "factorization")
+        residual = field_data_value(field, "RelativeResidual")
+        self.assertIsNotNone(residual)
+        self.assertLessEqual(residual, RESIDUAL_LIMIT)
+        values = field.GetPointData().GetArray("HarmonicField")
+        self.assertIsNotNone(values)
+        self.assertTrue(numpy.all(numpy.isfinite(vtk_to_numpy(values))))
+
+    def test_cut_around_the_neck(self):
+        self.assert_no_errors()
+        curve, points = self.fetch_cut(self.pipeline.cut)
+        self.assertLessEqual(numpy.abs(points[:, 1] - NECK_HEIGHT).max(), PLANE_TOLERANCE * self.diagonal)
+        length = curve.GetCellData().GetArray("Length").GetValue(0)
+        self.assertTrue(math.isfinite(length))
+        self.assertGreater(length, 0.0)
+        self.assertAlmostEqual(curve.GetCellData().GetArray("IsoValue").GetValue(0), 0.0)
+        # The candidate table is for the best-score mode only.
+        self.assertEqual(servermanager.Fetch(self.pipeline.cut, idx=2).GetNumberOfRows(), 0)
+
+    def test_stroke_constraints_as_the_stroke(self):
+        self.assert_no_errors()
+        cut = simple.IsolineCut(Input=self.pipeline.field, Stroke=self.pipeline.constraints)
+        try:
+            cut.Mode = "Near stroke"
+            self.pipeline.watch.add("second cut", cut)
+            cut.UpdatePipeline()
+            self.assert_no_errors()
+            _, points = self.fetch_cut(cut)
+            _, expected = self.fetch_cut(self.pipeline.cut)
+            numpy.testing.assert_allclose(points, expected, rtol=0.0, atol=1e-12)
+        finally:
+            simple.Delete(cut)
+
+    def test_segments_split_head_from_body(self):
+        self.assert_no_errors()
+        surface = servermanager.Fetch(self.pipeline.cut, idx=1)
+        self.assertEqual(surface.GetNumberOfCells(), 19536)
+        segments = vtk_to_numpy(surface.GetCellData().GetArray("Segment"))
+        labels, counts = numpy.unique(segments, return_counts=True)
+        self.assertEqual(len(labels), 2)
+        # The head is the side of the nose, the point with the largest z.
+        cells = vtkIdList()
+        surface.GetPointCells(int(numpy.argmax(points_of(surface)[:, 2])), cells)
+        head = segments[cells.GetId(0)]
+        head_fraction = counts[labels == head][0] / len(segments)
+        self.assertGreater(head_fraction, 0.05)
+        self.assertLess(head_fraction, 0.5)
+
+    def test_sliding_reexecutes_only_the_cut(self):
+        self.assert_no_errors()
+        watch = self.pipeline.watch
+        before = dict(watch.executions)
+        self.assertEqual(before, {"constraints": 1, "field": 1, "cut": 1})
+        field_before = servermanager.Fetch(self.pipeline.field)
+        _, points_before = self.fetch_cut(self.pipeline.cut)
+
+        self.pipeline.cut.IsoValue = SLID_ISO_VALUE
+        self.pipeline.cut.UpdatePipeline()
+        self.assert_no_errors()
+        self.assertEqual(watch.executions["cut"], before["cut"] + 1)
+        self.assertEqual(watch.executions["field"], before["field"])
+        self.assertEqual(watch.executions["constraints"], before["constraints"])
+        field_after = servermanager.Fetch(self.pipeline.field)
+        self.assertEqual(field_data_value(field_after, "SolverWork"), "factorization")
+        self.assertEqual(
+            vtk_to_numpy(field_after.GetPointData().GetArray("HarmonicField")).tobytes(),
+            vtk_to_numpy(field_before.GetPointData().GetArray("HarmonicField")).tobytes())
+        curve, points_after = self.fetch_cut(self.pipeline.cut)
+        self.assertAlmostEqual(curve.GetCellData().GetArray("IsoValue").GetValue(0), SLID_ISO_VALUE)
+        moved = numpy.linalg.norm(points_after.mean(axis=0) - points_before.mean(axis=0))
+        self.assertGreater(moved, SLIDE_DISTANCE * self.diagonal)
+
+
+if __name__ == "__main__":
+    unittest.main()
