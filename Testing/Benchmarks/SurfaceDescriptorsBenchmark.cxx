@@ -10,17 +10,8 @@
 //   BM_CoreMeshBuildAndValidation/<size>  kerf::TriangleMesh constructor + kerf::inspectMesh
 // The meshes and their vtkPolyData are built once per size, outside the timed loops. Everything
 // runs on one thread.
-//
-// Run from the build directory, for example:
-//   bin/KerfBenchmarks
-//   bin/KerfBenchmarks --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
-//   bin/KerfBenchmarks --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
-//     --benchmark_filter='Descriptors|Curvatures'
-//   bin/KerfBenchmarks --benchmark_filter=/100k --benchmark_format=json
-// Each size has its own minimum time (longer for 1M, so it runs several iterations);
-// --benchmark_min_time=<seconds> replaces it for every benchmark. The exit code is 1 if a
-// benchmark failed (for example the filter reported an error), which the ctest smoke test uses.
 #include "BenchmarkPolyData.h"
+#include "KerfBenchmarks.h"
 #include "vtkSurfaceDescriptors.h"
 
 #include "Geometry/SurfaceDescriptors.h"
@@ -35,12 +26,9 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkSMPTools.h>
 #include <vtkSmartPointer.h>
-#include <vtkVersion.h>
 
 #include <array>
-#include <cstring>
 #include <exception>
 #include <map>
 #include <memory>
@@ -88,13 +76,7 @@ const BenchmarkSurface& surfaceOfSize(const SurfaceSize& size)
   return *surface;
 }
 
-bool AnyBenchmarkFailed = false;
-
-void fail(benchmark::State& state, const std::string& message)
-{
-  AnyBenchmarkFailed = true;
-  state.SkipWithError(message.c_str());
-}
+using kerf::benchmarks::Fail;
 
 // Fetches the surface, or marks the benchmark failed and returns null.
 const BenchmarkSurface* surfaceOrFail(benchmark::State& state, const SurfaceSize& size)
@@ -105,7 +87,7 @@ const BenchmarkSurface* surfaceOrFail(benchmark::State& state, const SurfaceSize
   }
   catch (const std::exception& e)
   {
-    fail(state, std::string("cannot build the ") + size.label + " torus: " + e.what());
+    Fail(state, std::string("cannot build the ") + size.label + " torus: " + e.what());
     return nullptr;
   }
 }
@@ -145,7 +127,7 @@ void surfaceDescriptorsFilter(benchmark::State& state, const SurfaceSize& size)
   // errors with vtkErrorMacro, which prints "ERROR:".
   if (!hasPointArray(filter->GetOutput(), filter->GetMeanCurvatureArrayName()))
   {
-    fail(state, "vtkSurfaceDescriptors produced no MeanCurvature array");
+    Fail(state, "vtkSurfaceDescriptors produced no MeanCurvature array");
   }
   setCounters(state, *surface, size);
 }
@@ -167,7 +149,7 @@ void vtkCurvaturesMean(benchmark::State& state, const SurfaceSize& size)
   }
   if (!hasPointArray(curvatures->GetOutput(), "Mean_Curvature"))
   {
-    fail(state, "vtkCurvatures produced no Mean_Curvature array");
+    Fail(state, "vtkCurvatures produced no Mean_Curvature array");
   }
   setCounters(state, *surface, size);
 }
@@ -188,7 +170,7 @@ void coreSurfaceDescriptors(benchmark::State& state, const SurfaceSize& size)
   }
   if (computed != static_cast<std::size_t>(surface->mesh.vertexCount()))
   {
-    fail(state, "kerf::computeSurfaceDescriptors returned the wrong number of values");
+    Fail(state, "kerf::computeSurfaceDescriptors returned the wrong number of values");
   }
   setCounters(state, *surface, size);
 }
@@ -218,12 +200,19 @@ void coreMeshBuildAndValidation(benchmark::State& state, const SurfaceSize& size
     kerf::describeProblems(report, kerf::MeshRequirements()).empty();
   if (!clean)
   {
-    fail(state, "unexpected mesh report: " + report.summary());
+    Fail(state, "unexpected mesh report: " + report.summary());
   }
   setCounters(state, *surface, size);
 }
 
-void registerBenchmarks(bool useSizeMinimumTimes)
+} // namespace
+
+namespace kerf
+{
+namespace benchmarks
+{
+
+void RegisterSurfaceDescriptorsBenchmarks(bool useSizeMinimumTimes)
 {
   using Function = void (*)(benchmark::State&, const SurfaceSize&);
   const std::pair<const char*, Function> benchmarks[] = {
@@ -248,25 +237,5 @@ void registerBenchmarks(bool useSizeMinimumTimes)
   }
 }
 
-} // namespace
-
-int main(int argc, char** argv)
-{
-  // A per-benchmark MinTime overrides the flag, so the sizes' own times apply only without it.
-  bool minimumTimeGiven = false;
-  for (int i = 1; i < argc; ++i)
-  {
-    minimumTimeGiven = minimumTimeGiven || std::strncmp(argv[i], "--benchmark_min_time", 20) == 0;
-  }
-  benchmark::Initialize(&argc, argv);
-  if (benchmark::ReportUnrecognizedArguments(argc, argv))
-  {
-    return 1;
-  }
-  benchmark::AddCustomContext("vtk_version", vtkVersion::GetVTKVersionFull());
-  benchmark::AddCustomContext("vtk_smp_backend", vtkSMPTools::GetBackend());
-  registerBenchmarks(!minimumTimeGiven);
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return AnyBenchmarkFailed ? 1 : 0;
-}
+} // namespace benchmarks
+} // namespace kerf

@@ -1,0 +1,75 @@
+// The KerfBenchmarks program: registers every benchmark family and runs the selected ones.
+//
+// Families, each in its own file (see there for what is measured):
+//   SurfaceDescriptorsBenchmark.cxx     descriptors filter, vtkCurvatures, Core steps (/10k /100k /1M)
+//   HarmonicCutBenchmark.cxx            harmonic cuts from strokes: factorization, solve, isolines,
+//                                       scoring, the filter pipeline (/22k /100k /1M)
+//   SegmentationEvaluationBenchmark.cxx segmentation metrics (/50k) and the human baseline over
+//                                       psb-dev (/1model /all; only when the folder exists)
+// Run from the build directory with OPENBLAS_NUM_THREADS=1 (CHOLMOD's BLAS on one thread, like
+// everything else), for example:
+//   bin/KerfBenchmarks
+//   bin/KerfBenchmarks --benchmark_filter=/100k --benchmark_format=json
+// and the full run (one command; about 6 minutes, most of it the 1M factorizations, which run
+// once per repetition; under 7 GB of memory):
+//   bin/KerfBenchmarks --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
+//     --benchmark_min_time=0.2
+// Each size has its own minimum time (longer for larger sizes, so that they run several
+// iterations); --benchmark_min_time=<seconds> replaces it for every benchmark. The exit code is
+// 1 if a benchmark failed (a filter error, a wrong result), which the ctest smoke test uses.
+#include "KerfBenchmarks.h"
+
+#include "Harmonic/SparseCholesky.h"
+
+#include <vtkSMPTools.h>
+#include <vtkVersion.h>
+
+#include <cstring>
+
+namespace
+{
+bool Failed = false;
+} // namespace
+
+namespace kerf
+{
+namespace benchmarks
+{
+
+void Fail(benchmark::State& state, const std::string& message)
+{
+  Failed = true;
+  state.SkipWithError(message.c_str());
+}
+
+bool AnyBenchmarkFailed()
+{
+  return Failed;
+}
+
+} // namespace benchmarks
+} // namespace kerf
+
+int main(int argc, char** argv)
+{
+  // A per-benchmark MinTime overrides the flag, so the sizes' own times apply only without it.
+  bool minimumTimeGiven = false;
+  for (int i = 1; i < argc; ++i)
+  {
+    minimumTimeGiven = minimumTimeGiven || std::strncmp(argv[i], "--benchmark_min_time", 20) == 0;
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv))
+  {
+    return 1;
+  }
+  benchmark::AddCustomContext("vtk_version", vtkVersion::GetVTKVersionFull());
+  benchmark::AddCustomContext("vtk_smp_backend", vtkSMPTools::GetBackend());
+  benchmark::AddCustomContext("sparse_cholesky", kerf::SparseCholesky::backend());
+  kerf::benchmarks::RegisterSurfaceDescriptorsBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;
+}
