@@ -79,18 +79,33 @@ struct HarmonicFieldSolver::Cache
   std::vector<double> weights;
   std::vector<int> dirichlet; // sorted vertices
   bool softMode = false;
+  bool factored = false;
+
+  // Unknowns: `column[v]` indexes vertex v among the free columns, or is -1 for hard and pinned
+  // vertices and points used by no triangle. In soft mode the rows are all non-hard vertices and
+  // one vertex per component without hard values is pinned; its component's offset is a separate
+  // unknown (one entry of `offsetComponent`).
+  std::vector<int> column;
+  std::vector<int> columnVertices;
+  std::vector<int> offsetIndex; // component -> offset unknown, or -1
+  int offsets = 0;
+  Eigen::SparseMatrix<double> laplacian;
+  Eigen::SparseMatrix<double> rowsFree, rowsHard; // L_RF and L_RD
+  Eigen::SparseMatrix<double> base;               // L_FF, or L_RF^T L_RF
+  SparseCholesky cholesky;
+
+  // Hard-value part, for the current hard values.
+  std::vector<double> hardValues;
+  Eigen::VectorXd hardSolution; // B^-1 b_D
+  bool hardSolved = false;
+
+  // Soft part, for the current constraint locations and weight.
   std::vector<SoftConstraint> softLocations; // values ignored
   double softWeight = 0.0;
-  bool factored = false;
-  bool updated = false;
-
-  // Derived operators.
-  Eigen::SparseMatrix<double> laplacian;
-  std::vector<int> freeIndex; // vertex -> unknown, or -1
-  std::vector<int> freeVertices;
-  Eigen::SparseMatrix<double> lff, lfd, base, u;
-  Eigen::SparseMatrix<double> pins; // free x components: sqrt(delta) at each pinned vertex
-  SparseCholesky cholesky;
+  bool prepared = false;
+  Eigen::SparseMatrix<double> u; // w C_F^T
+  SparseCholesky::LowRank lowRank;
+  Eigen::LDLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U
 };
 
 HarmonicFieldSolver::HarmonicFieldSolver()
@@ -139,11 +154,12 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   }
 
   // Every component needs a constraint, or its field is undefined.
-  std::vector<char> constrained(mesh.componentCount(), 0);
+  std::vector<char> hasHard(mesh.componentCount(), 0), constrained(mesh.componentCount(), 0);
   for (const auto& d : dirichlet)
   {
     if (mesh.vertexComponent(d.first) >= 0)
     {
+      hasHard[mesh.vertexComponent(d.first)] = 1;
       constrained[mesh.vertexComponent(d.first)] = 1;
     }
   }
@@ -167,18 +183,22 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
 
   HarmonicFieldSolution solution;
   solution.work = HarmonicFieldSolution::Work::BackSubstitution;
-
   std::vector<int> dirichletVertices;
+  std::vector<double> hardValues;
   for (const auto& d : dirichlet)
   {
     dirichletVertices.push_back(d.first);
+    hardValues.push_back(d.second);
   }
+
+  // The factored term depends on the operator, the hard vertices and the mode.
   const bool operatorChanged = cache.vertexCount != n || cache.triangles != mesh.triangles() ||
     cache.weights != edgeWeights;
   if (operatorChanged || !cache.factored || cache.dirichlet != dirichletVertices || cache.softMode != softMode)
   {
     cache.factored = false;
-    cache.updated = false;
+    cache.prepared = false;
+    cache.hardSolved = false;
     if (operatorChanged)
     {
       cache.laplacian = assembleLaplacian(mesh, edgeWeights);
@@ -188,152 +208,141 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
     }
     cache.dirichlet = dirichletVertices;
     cache.softMode = softMode;
-    cache.freeIndex.assign(n, -1);
-    cache.freeVertices.clear();
-    std::vector<char> isDirichlet(n, 0);
+    std::vector<char> isHard(n, 0);
     for (int v : dirichletVertices)
     {
-      isDirichlet[v] = 1;
+      isHard[v] = 1;
     }
+    // Rows: every non-hard vertex used by a triangle. Columns: the same but the pins.
+    std::vector<int> row(n, -1);
+    int rows = 0;
+    cache.column.assign(n, -1);
+    cache.columnVertices.clear();
+    cache.offsetIndex.assign(mesh.componentCount(), -1);
+    cache.offsets = 0;
     for (int v = 0; v < n; ++v)
     {
-      if (!isDirichlet[v] && !mesh.vertexFaces(v).empty())
+      if (isHard[v] || mesh.vertexFaces(v).empty())
       {
-        cache.freeIndex[v] = static_cast<int>(cache.freeVertices.size());
-        cache.freeVertices.push_back(v);
+        continue;
       }
+      row[v] = rows++;
+      const int c = mesh.vertexComponent(v);
+      if (softMode && !hasHard[c] && cache.offsetIndex[c] < 0)
+      {
+        cache.offsetIndex[c] = cache.offsets++; // v is the component's pin
+        continue;
+      }
+      cache.column[v] = static_cast<int>(cache.columnVertices.size());
+      cache.columnVertices.push_back(v);
     }
-    // L_FF and L_FD from the Laplacian's columns.
-    std::vector<int> dirichletIndex(n, -1);
+    std::vector<int> hardIndex(n, -1);
     for (std::size_t i = 0; i < dirichletVertices.size(); ++i)
     {
-      dirichletIndex[dirichletVertices[i]] = static_cast<int>(i);
+      hardIndex[dirichletVertices[i]] = static_cast<int>(i);
     }
-    std::vector<Eigen::Triplet<double>> ff, fd;
-    for (int col = 0; col < n; ++col)
+    std::vector<Eigen::Triplet<double>> free, hard;
+    for (int v = 0; v < n; ++v)
     {
-      for (Eigen::SparseMatrix<double>::InnerIterator it(cache.laplacian, col); it; ++it)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(cache.laplacian, v); it; ++it)
       {
-        const int row = cache.freeIndex[static_cast<int>(it.row())];
-        if (row < 0)
+        const int r = row[static_cast<int>(it.row())];
+        if (r < 0)
         {
           continue;
         }
-        if (cache.freeIndex[col] >= 0)
+        if (cache.column[v] >= 0)
         {
-          ff.emplace_back(row, cache.freeIndex[col], it.value());
+          free.emplace_back(r, cache.column[v], it.value());
         }
-        else if (dirichletIndex[col] >= 0)
+        else if (hardIndex[v] >= 0)
         {
-          fd.emplace_back(row, dirichletIndex[col], it.value());
+          hard.emplace_back(r, hardIndex[v], it.value());
         }
       }
     }
-    const int free = static_cast<int>(cache.freeVertices.size());
-    cache.lff.resize(free, free);
-    cache.lff.setFromTriplets(ff.begin(), ff.end());
-    cache.lfd.resize(free, static_cast<int>(dirichletVertices.size()));
-    cache.lfd.setFromTriplets(fd.begin(), fd.end());
+    const int columns = static_cast<int>(cache.columnVertices.size());
+    cache.rowsFree.resize(rows, columns);
+    cache.rowsFree.setFromTriplets(free.begin(), free.end());
+    cache.rowsHard.resize(rows, static_cast<int>(dirichletVertices.size()));
+    cache.rowsHard.setFromTriplets(hard.begin(), hard.end());
     if (softMode)
     {
-      // seamcut.txt Eq. 1: the squared Laplacian of the free rows, pinned where no hard value is.
-      cache.base = Eigen::SparseMatrix<double>(cache.lff.transpose()) * cache.lff;
-      double meanDiagonal = 0.0;
-      for (int i = 0; i < free; ++i)
-      {
-        meanDiagonal += cache.base.coeff(i, i);
-      }
-      meanDiagonal = free > 0 ? meanDiagonal / free : 1.0;
-      std::vector<char> hasDirichlet(mesh.componentCount(), 0);
-      for (int v : dirichletVertices)
-      {
-        if (mesh.vertexComponent(v) >= 0)
-        {
-          hasDirichlet[mesh.vertexComponent(v)] = 1;
-        }
-      }
-      // The pins make the factored term definite; the update removes them again (a downdate),
-      // once the soft constraints have made the system definite on their own.
-      std::vector<Eigen::Triplet<double>> pinEntries;
-      const double delta = 1e-10 * meanDiagonal;
-      for (int v : cache.freeVertices)
-      {
-        const int c = mesh.vertexComponent(v);
-        if (!hasDirichlet[c])
-        {
-          cache.base.coeffRef(cache.freeIndex[v], cache.freeIndex[v]) += delta;
-          pinEntries.emplace_back(cache.freeIndex[v], static_cast<int>(pinEntries.size()), std::sqrt(delta));
-          hasDirichlet[c] = 1; // one pin per component
-        }
-      }
-      cache.pins.resize(free, static_cast<int>(pinEntries.size()));
-      cache.pins.setFromTriplets(pinEntries.begin(), pinEntries.end());
+      // seamcut.txt Eq. 1: the squared Laplacian of the non-hard rows.
+      cache.base = Eigen::SparseMatrix<double>(cache.rowsFree.transpose()) * cache.rowsFree;
     }
     else
     {
-      cache.base = cache.lff;
+      cache.base = cache.rowsFree; // square: rows and columns are the free vertices
     }
     cache.base.makeCompressed();
-    if (free > 0 && !cache.cholesky.factor(cache.base))
+    if (columns > 0 && !cache.cholesky.factor(cache.base))
     {
       throw Error("the Laplacian system could not be factored (it is not positive definite)");
     }
     cache.factored = true;
     solution.work = HarmonicFieldSolution::Work::Factorization;
   }
+  const int columns = static_cast<int>(cache.columnVertices.size());
 
-  const int free = static_cast<int>(cache.freeVertices.size());
-  // Soft constraint rows C (k x n) split into free and hard columns.
+  // The hard values' part of the right-hand side and its solution x_D = B^-1 b_D.
+  const Eigen::VectorXd hard = Eigen::Map<const Eigen::VectorXd>(hardValues.data(), static_cast<Eigen::Index>(hardValues.size()));
+  Eigen::VectorXd hardRhs = Eigen::VectorXd::Zero(columns);
+  if (!dirichlet.empty() && columns > 0)
+  {
+    const Eigen::VectorXd flux = cache.rowsHard * hard;
+    hardRhs = softMode ? Eigen::VectorXd(-(cache.rowsFree.transpose() * flux)) : Eigen::VectorXd(-flux);
+  }
+  if (!cache.hardSolved || cache.hardValues != hardValues)
+  {
+    cache.hardSolution = columns > 0 && !dirichlet.empty() ? cache.cholesky.solve(hardRhs) : Eigen::VectorXd::Zero(columns);
+    cache.hardValues = hardValues;
+    cache.hardSolved = true;
+  }
+
+  Eigen::VectorXd x = cache.hardSolution;
+  std::vector<double> offset(cache.offsets, 0.0);
   const int k = static_cast<int>(constraints.soft.size());
-  Eigen::VectorXd hard(static_cast<int>(dirichlet.size()));
-  for (std::size_t i = 0; i < dirichlet.size(); ++i)
-  {
-    hard[static_cast<int>(i)] = dirichlet[i].second;
-  }
-  if (softMode &&
-    (!cache.updated || !sameSoftLocations(cache.softLocations, constraints.soft) ||
-      cache.softWeight != constraints.softWeight))
-  {
-    std::vector<Eigen::Triplet<double>> entries;
-    for (int i = 0; i < k; ++i)
-    {
-      const SoftConstraint& s = constraints.soft[i];
-      for (int j = 0; j < 3; ++j)
-      {
-        const int column = cache.freeIndex[mesh.triangle(s.face)[j]];
-        if (column >= 0 && s.barycentric[j] != 0.0)
-        {
-          entries.emplace_back(column, i, constraints.softWeight * s.barycentric[j]);
-        }
-      }
-    }
-    cache.u.resize(free, k);
-    cache.u.setFromTriplets(entries.begin(), entries.end());
-    cache.u.makeCompressed();
-    if (free > 0 && !cache.cholesky.update(cache.u, &cache.pins))
-    {
-      throw Error("the factorization could not be updated with the soft constraints");
-    }
-    cache.softLocations = constraints.soft;
-    cache.softWeight = constraints.softWeight;
-    cache.updated = true;
-    if (solution.work == HarmonicFieldSolution::Work::BackSubstitution)
-    {
-      solution.work = HarmonicFieldSolution::Work::Update;
-    }
-  }
-
-  // Right-hand side.
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(free);
-  if (!dirichlet.empty() && free > 0)
-  {
-    const Eigen::VectorXd flux = cache.lfd * hard;
-    b = softMode ? Eigen::VectorXd(-(cache.lff.transpose() * flux)) : Eigen::VectorXd(-flux);
-  }
   if (softMode)
   {
-    // w^2 C_F^T (c - C_D f_D): U = w C_F^T, so this is U w (c - C_D f_D).
-    Eigen::VectorXd target(k);
+    // New constraint locations: A^-1 U and the capacitance matrix I + U^T A^-1 U.
+    if (!cache.prepared || !sameSoftLocations(cache.softLocations, constraints.soft) ||
+      cache.softWeight != constraints.softWeight)
+    {
+      std::vector<Eigen::Triplet<double>> entries;
+      for (int i = 0; i < k; ++i)
+      {
+        const SoftConstraint& s = constraints.soft[i];
+        for (int j = 0; j < 3; ++j)
+        {
+          const int c = cache.column[mesh.triangle(s.face)[j]];
+          if (c >= 0 && s.barycentric[j] != 0.0)
+          {
+            entries.emplace_back(c, i, constraints.softWeight * s.barycentric[j]);
+          }
+        }
+      }
+      cache.u.resize(columns, k);
+      cache.u.setFromTriplets(entries.begin(), entries.end());
+      cache.u.makeCompressed();
+      cache.lowRank = columns > 0 ? cache.cholesky.prepare(cache.u) : SparseCholesky::LowRank{};
+      Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
+      if (columns > 0)
+      {
+        capacitance += cache.lowRank.gram;
+      }
+      cache.capacitance.compute(capacitance);
+      cache.softLocations = constraints.soft;
+      cache.softWeight = constraints.softWeight;
+      cache.prepared = true;
+      if (solution.work == HarmonicFieldSolution::Work::BackSubstitution)
+      {
+        solution.work = HarmonicFieldSolution::Work::Update;
+      }
+    }
+    // q = w (c - C_D f_D) - U^T x_D; E marks each constraint's component offset.
+    Eigen::VectorXd q(k);
+    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(k, cache.offsets);
     for (int i = 0; i < k; ++i)
     {
       const SoftConstraint& s = constraints.soft[i];
@@ -341,34 +350,78 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
       for (int j = 0; j < 3; ++j)
       {
         const int v = mesh.triangle(s.face)[j];
-        if (cache.freeIndex[v] < 0)
+        const auto found = std::lower_bound(dirichlet.begin(), dirichlet.end(), std::make_pair(v, -HUGE_VAL));
+        if (found != dirichlet.end() && found->first == v)
         {
-          const auto found = std::lower_bound(dirichlet.begin(), dirichlet.end(), std::make_pair(v, -HUGE_VAL));
-          known += s.barycentric[j] * (found != dirichlet.end() && found->first == v ? found->second : 0.0);
+          known += s.barycentric[j] * found->second;
         }
       }
-      target[i] = constraints.softWeight * (s.value - known);
+      q[i] = constraints.softWeight * (s.value - known);
+      const int c = cache.offsetIndex[mesh.faceComponent(s.face)];
+      if (c >= 0)
+      {
+        E(i, c) = 1.0;
+      }
     }
-    if (free > 0)
+    if (columns > 0)
     {
-      b += cache.u * target;
+      q -= cache.u.transpose() * x;
+    }
+    // Offsets of the pinned components: alpha = (w E^T K E)^-1 E^T K q, K = (I + W)^-1.
+    Eigen::VectorXd alpha = Eigen::VectorXd::Zero(cache.offsets);
+    if (cache.offsets > 0)
+    {
+      const Eigen::MatrixXd KE = cache.capacitance.solve(E);
+      alpha = (constraints.softWeight * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
+    }
+    // The free values: x = x_D + A^-1 U s with s = K (q - w E alpha).
+    const Eigen::VectorXd shift = cache.capacitance.solve(q - constraints.softWeight * (E * alpha));
+    if (columns > 0)
+    {
+      x += cache.cholesky.apply(cache.lowRank, shift);
+    }
+    for (int c = 0; c < cache.offsets; ++c)
+    {
+      offset[c] = alpha[c];
     }
   }
-
-  Eigen::VectorXd x = free > 0 ? cache.cholesky.solve(b) : Eigen::VectorXd();
   if (!x.allFinite())
   {
     throw Error("the solve produced NaN values");
   }
-  if (free > 0)
+
+  // Relative residual of the normal equations of the whole least-squares problem.
+  if (columns > 0)
   {
-    Eigen::VectorXd residual = cache.base * x - b;
+    Eigen::VectorXd residual = cache.base * x - hardRhs;
     if (softMode)
     {
-      residual += cache.u * (cache.u.transpose() * x) - cache.pins * (cache.pins.transpose() * x);
+      // The constraint term at the solution, u including the component offsets.
+      Eigen::VectorXd misfit(k);
+      for (int i = 0; i < k; ++i)
+      {
+        const SoftConstraint& s = constraints.soft[i];
+        double value = 0.0;
+        for (int j = 0; j < 3; ++j)
+        {
+          const int v = mesh.triangle(s.face)[j];
+          const int c = cache.column[v];
+          const int o = cache.offsetIndex[mesh.faceComponent(s.face)];
+          const auto found = std::lower_bound(dirichlet.begin(), dirichlet.end(), std::make_pair(v, -HUGE_VAL));
+          const double hardValue = found != dirichlet.end() && found->first == v ? found->second : 0.0;
+          value += s.barycentric[j] * ((c >= 0 ? x[c] : hardValue) + (o >= 0 ? offset[o] : 0.0));
+        }
+        misfit[i] = constraints.softWeight * (value - s.value);
+      }
+      residual += cache.u * misfit;
+      const double scale = hardRhs.norm() + (cache.u * Eigen::VectorXd::Ones(k)).norm();
+      solution.relativeResidual = scale > 0.0 ? residual.norm() / scale : residual.norm();
     }
-    const double scale = b.norm();
-    solution.relativeResidual = scale > 0.0 ? residual.norm() / scale : residual.norm();
+    else
+    {
+      const double scale = hardRhs.norm();
+      solution.relativeResidual = scale > 0.0 ? residual.norm() / scale : residual.norm();
+    }
   }
 
   solution.field.assign(n, 0.0);
@@ -376,9 +429,17 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   {
     solution.field[d.first] = d.second;
   }
-  for (int i = 0; i < free; ++i)
+  for (int v = 0; v < n; ++v)
   {
-    solution.field[cache.freeVertices[i]] = x[i];
+    if (cache.column[v] >= 0)
+    {
+      solution.field[v] = x[cache.column[v]];
+    }
+    const int c = mesh.vertexComponent(v);
+    if (c >= 0 && cache.offsetIndex[c] >= 0 && !std::binary_search(dirichletVertices.begin(), dirichletVertices.end(), v))
+    {
+      solution.field[v] += offset[cache.offsetIndex[c]];
+    }
   }
   return solution;
 }

@@ -34,7 +34,7 @@ struct HarmonicFieldSolution
 {
   std::vector<double> field;    ///< per vertex; 0 on points used by no triangle
   double relativeResidual = 0.0; ///< ||M x - b|| / ||b|| of the system solved
-  /// What the solve cost: a new factorization, an update of the cached one (new soft
+  /// What the solve cost: a new factorization, a low-rank correction of the cached one (new soft
   /// constraint locations), or only a back-substitution (new values).
   enum class Work
   {
@@ -53,11 +53,14 @@ struct HarmonicFieldSolution
 /// Eq. 1), f minimises ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2 over the free values, where L_F are
 /// the Laplacian rows of the free vertices and C_i interpolates f at the constraint's point with
 /// its barycentric weights: (L_FF^T L_FF + w^2 C_F^T C_F) f_F = -L_FF^T L_FD f_D +
-/// w^2 C_F^T (c - C_D f_D). The first term is factored once; the constraint term is a rank-k
-/// update of it, so new strokes cost an update and new values a back-substitution. In a
-/// component without hard values the factored term is singular; one vertex is pinned with weight
-/// 1e-10 of the system's scale to factor it, and the update removes the pin again, so the
-/// solution is that of the system itself.
+/// w^2 C_F^T (c - C_D f_D). The first term is factored once per surface, weighting and hard set;
+/// the constraint term is the low-rank correction w^2 C_F^T C_F, applied through the Woodbury
+/// identity (SparseCholesky::prepare/apply), so new strokes cost a sparse forward solve over the
+/// strokes' elimination-tree reach and a k x k solve, and new values only the k x k solve and one
+/// back-substitution. In a component without hard values the Laplacian term annihilates
+/// constants: one vertex of it is fixed at 0 in the factored term and the component's constant
+/// offset becomes a separate unknown fitted to the constraints, so the solution is that of the
+/// system itself, without regularization.
 ///
 /// Throws kerf::Error for: no constraint, a component without any constraint (its field would
 /// be undefined), indices out of range, NaN values or weights, a vertex given two different

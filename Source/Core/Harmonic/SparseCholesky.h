@@ -1,19 +1,26 @@
-// Sparse Cholesky factorization (CHOLMOD, or Eigen's SimplicialLDLT without it) with low-rank updates.
+// Sparse Cholesky factorization (CHOLMOD, or Eigen's SimplicialLDLT without it) and low-rank corrections.
 #pragma once
 
+#include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace kerf
 {
 
-/// Factors a sparse symmetric positive-definite matrix A once, and then A + U U^T - D D^T for
-/// sparse U and D from that base factor, without factoring again: with CHOLMOD this is a rank-k
-/// update and downdate of a copy of the base factor (cholmod_updown); without CHOLMOD, Eigen's
-/// SimplicialLDLT factors the updated matrix afresh. Updating always starts from the base factor, so the result depends
-/// only on A and U, not on earlier updates.
+/// Factors a sparse symmetric positive-definite matrix A once; then solves with A, and with
+/// A + U U^T for any sparse U (n x k) through the Woodbury identity without touching the factor:
+/// (A + U U^T)^-1 = A^-1 - G (I + U^T G)^-1 G^T, G = A^-1 U.
+///
+/// With CHOLMOD the factor is a simplicial L D L^T with a fill-reducing permutation P. For a
+/// sparse U, Y = L^-1 P U is nonzero only on the union of the elimination-tree paths from U's
+/// rows to the root (the "reach"), which a constraint set confined to a region of the surface
+/// keeps short: one sweep over the reach computes all k columns together, U^T A^-1 U is Y^T D^-1
+/// Y, and A^-1 U s is one backward solve P^T L^-T D^-1 Y s. Without CHOLMOD, G is formed by k
+/// solves. Either way the result depends only on A and U, never on earlier calls.
 class SparseCholesky
 {
 public:
@@ -25,12 +32,22 @@ public:
   /// Factors A (only its lower triangle is read). False if A is not positive definite.
   bool factor(const Eigen::SparseMatrix<double>& A);
 
-  /// Makes the current factor that of A + U U^T - D D^T (U and D have A's number of rows; D may
-  /// be null). The result must be positive definite. False on failure.
-  bool update(const Eigen::SparseMatrix<double>& U, const Eigen::SparseMatrix<double>* D = nullptr);
-
-  /// Solves with the current factor (A's, or A + U U^T's after update()).
+  /// A^-1 b.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+
+  /// What applies A^-1 U for one U.
+  struct LowRank
+  {
+    Eigen::MatrixXd gram; ///< U^T A^-1 U (k x k)
+    std::vector<int> reach; ///< permuted rows where Y = L^-1 P U is nonzero (CHOLMOD)
+    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y; ///< Y on the reach, or A^-1 U
+  };
+
+  /// Prepares A^-1 U for a sparse U with A's number of rows.
+  LowRank prepare(const Eigen::SparseMatrix<double>& U) const;
+
+  /// A^-1 U s.
+  Eigen::VectorXd apply(const LowRank& lowRank, const Eigen::VectorXd& s) const;
 
   /// "CHOLMOD" or "Eigen SimplicialLDLT".
   static std::string backend();
