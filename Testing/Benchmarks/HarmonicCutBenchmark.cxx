@@ -9,7 +9,8 @@
 // For each size, in this order:
 //   BM_HarmonicFactorization/<size>          a new kerf::HarmonicFieldSolver solving with the
 //                                            stroke's soft constraints: factorization of the
-//                                            squared Laplacian, rank update, solve
+//                                            squared Laplacian, the constraints' low-rank
+//                                            term, solve
 //   BM_HarmonicDirichletFactorization/<size> a new solver with hard values 0 and 1 on the two
 //                                            caps (a harmonic field: the Laplacian's factorization)
 //   BM_HarmonicSolve/<size>                  the stroke's solver again with only the constraint

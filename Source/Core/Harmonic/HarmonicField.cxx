@@ -1,4 +1,4 @@
-// The harmonic-field solver: validation, cached factorizations, rank updates for soft constraints.
+// The harmonic-field solver: validation, cached factorizations, low-rank corrections for soft constraints.
 #include "Harmonic/HarmonicField.h"
 
 #include "Error.h"
@@ -393,7 +393,9 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   // Relative residual of the normal equations of the whole least-squares problem.
   if (columns > 0)
   {
-    Eigen::VectorXd residual = cache.base * x - hardRhs;
+    // The factored matrix is symmetric: its transpose's product reads it column by column
+    // without scattered writes.
+    Eigen::VectorXd residual = cache.base.transpose() * x - hardRhs;
     if (softMode)
     {
       // The constraint term at the solution, u including the component offsets.
@@ -450,17 +452,19 @@ Vector3 faceGradient(const TriangleMesh& mesh, const std::vector<double>& field,
   const Vector3& p0 = mesh.point(t[0]);
   const Vector3& p1 = mesh.point(t[1]);
   const Vector3& p2 = mesh.point(t[2]);
-  const Vector3 normal = (p1 - p0).cross(p2 - p0);
-  const double twiceArea = normal.norm();
-  const double longest = std::max({ (p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm() });
-  if (twiceArea <= ZeroAreaTolerance * longest)
+  // e_j is the edge opposite corner j, counter-clockwise; N = e_1 x e_2, |N| = 2A.
+  const Vector3 e0 = p2 - p1;
+  const Vector3 e1 = p0 - p2;
+  const Vector3 e2 = p1 - p0;
+  const Vector3 normal = e1.cross(e2);
+  const double squaredTwiceArea = normal.squaredNorm();
+  const double longest = std::max(std::max(e0.squaredNorm(), e1.squaredNorm()), e2.squaredNorm());
+  if (squaredTwiceArea <= ZeroAreaTolerance * ZeroAreaTolerance * longest * longest)
   {
     return Vector3::Zero();
   }
-  const Vector3 n = normal / twiceArea;
-  // e_j is the edge opposite corner j, counter-clockwise.
-  return (field[t[0]] * n.cross(p2 - p1) + field[t[1]] * n.cross(p0 - p2) + field[t[2]] * n.cross(p1 - p0)) /
-    twiceArea;
+  // roi-scissor.txt 4.2: sum_j f_j (n x e_j) / 2A = N x (sum_j f_j e_j) / |N|^2.
+  return normal.cross(field[t[0]] * e0 + field[t[1]] * e1 + field[t[2]] * e2) * (1.0 / squaredTwiceArea);
 }
 
 std::vector<Vector3> computeFaceGradients(const TriangleMesh& mesh, const std::vector<double>& field)

@@ -50,21 +50,265 @@ cholmod_dense cholmodView(const double* values, std::size_t n)
   d.dtype = CHOLMOD_DOUBLE;
   return d;
 }
+
+// Dense kernels of the supernodal forward solve and of the Gram matrix, on row-major blocks of
+// right-hand sides padded to a multiple of ColumnChunk columns. Every right-hand side sees the
+// same arithmetic in the same order whatever the others are, so a column's values do not depend
+// on which columns are solved with it. Each kernel is compiled for AVX-512, AVX2 with FMA and
+// the x86-64 baseline; the processor picks one when the library loads.
+constexpr int ColumnChunk = 8;
+constexpr int TileRows = 8;
+typedef double Chunk __attribute__((vector_size(ColumnChunk * sizeof(double))));
+// The kernels inline their vector helpers, so no vector crosses a call boundary.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define KERF_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define KERF_VECTOR_CLONES
+#endif
+#define KERF_INLINE inline __attribute__((always_inline))
+
+KERF_INLINE Chunk loadChunk(const double* p)
+{
+  Chunk v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+
+KERF_INLINE void storeChunk(double* p, const Chunk& v)
+{
+  __builtin_memcpy(p, &v, sizeof v);
+}
+
+// Y_i -= sum_{t < depth} L(i, t) y[t] for rows [begin, end) of a block whose columns start at
+// `block` (leading dimension ld), on one chunk of columns; row i's values start at target(i).
+template <int Depth, typename Target>
+KERF_INLINE void subtractBlock(const double* block, std::size_t ld, int depth, const Chunk* y, int begin, int end, Target target)
+{
+  for (int i = begin; i < end; ++i)
+  {
+    Chunk acc = block[i] * y[0];
+    for (int t = 1; t < (Depth > 0 ? Depth : depth); ++t)
+    {
+      acc += block[i + t * ld] * y[t];
+    }
+    double* row = target(i);
+    storeChunk(row, loadChunk(row) - acc);
+  }
+}
+
+// One supernode of the forward solve L Y = B on the listed chunks of columns (their first
+// columns): the rows of its diagonal block (Ys, `width` values per row) are solved in place and
+// its contribution is subtracted from the rows below (targets[i - columns] for block row i).
+// L is the supernode's column-major block with leading dimension ld. The columns go in blocks of
+// TileRows: each block's solved rows stay in registers while its columns of L stream by in
+// memory order, and every row below subtracts one block's sum at a time.
+KERF_VECTOR_CLONES
+void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys, double* const* targets,
+  int width, const int* chunks, int chunkCount)
+{
+  const std::size_t stride = static_cast<std::size_t>(ld);
+  for (int t0 = 0; t0 < columns; t0 += TileRows)
+  {
+    const int depth = std::min(TileRows, columns - t0);
+    const double* block = L + t0 * stride;
+    for (int chunk = 0; chunk < chunkCount; ++chunk)
+    {
+      const int c0 = chunks[chunk];
+      // The block's own rows: a small triangular solve.
+      Chunk y[TileRows];
+      for (int r = 0; r < depth; ++r)
+      {
+        double* row = Ys + static_cast<std::size_t>(t0 + r) * width + c0;
+        Chunk v = loadChunk(row);
+        for (int q = 0; q < r; ++q)
+        {
+          v -= block[t0 + r + q * stride] * y[q];
+        }
+        y[r] = v / block[t0 + r + r * stride];
+        storeChunk(row, y[r]);
+      }
+      auto inBlock = [Ys, width, c0](int i) { return Ys + static_cast<std::size_t>(i) * width + c0; };
+      auto below = [targets, columns, c0](int i) { return targets[i - columns] + c0; };
+      if (depth == TileRows)
+      {
+        subtractBlock<TileRows>(block, stride, depth, y, t0 + depth, columns, inBlock);
+        subtractBlock<TileRows>(block, stride, depth, y, columns, rows, below);
+      }
+      else
+      {
+        subtractBlock<0>(block, stride, depth, y, t0 + depth, columns, inBlock);
+        subtractBlock<0>(block, stride, depth, y, columns, rows, below);
+      }
+    }
+  }
+}
+
+// One supernode of the backward solve L^T x = z: with x already known on the rows below the
+// diagonal block (gathered into g[columns .. rows)) and g[0 .. columns) = z on the block's rows,
+// x_t = (z_t - sum_{i>t} L(i,t) x_i) / L(t,t) for t = columns-1 .. 0, left in g. L is the
+// supernode's column-major block with leading dimension ld. Columns go in blocks of TileRows,
+// whose dot products with the rows below the block stream their columns together.
+KERF_VECTOR_CLONES
+void backwardSupernode(const double* L, int ld, int columns, int rows, double* g)
+{
+  const std::size_t stride = static_cast<std::size_t>(ld);
+  for (int end = columns; end > 0; end -= TileRows)
+  {
+    const int t0 = std::max(0, end - TileRows);
+    const int depth = end - t0;
+    // sums[t] = sum_{i >= end} L(i, t0 + t) x_i: ColumnChunk-wide partial sums, reduced lane by
+    // lane, then the remaining rows.
+    Chunk acc[TileRows];
+    for (int t = 0; t < TileRows; ++t)
+    {
+      acc[t] = Chunk{};
+    }
+    int i = end;
+    for (; i + ColumnChunk <= rows; i += ColumnChunk)
+    {
+      const Chunk x = loadChunk(g + i);
+      for (int t = 0; t < depth; ++t)
+      {
+        acc[t] += loadChunk(L + (t0 + t) * stride + i) * x;
+      }
+    }
+    double sums[TileRows];
+    for (int t = 0; t < depth; ++t)
+    {
+      double sum = 0.0;
+      for (int c = 0; c < ColumnChunk; ++c)
+      {
+        sum += acc[t][c];
+      }
+      for (int j = i; j < rows; ++j)
+      {
+        sum += L[(t0 + t) * stride + j] * g[j];
+      }
+      sums[t] = sum;
+    }
+    // The block's own triangle.
+    for (int t = end - 1; t >= t0; --t)
+    {
+      const double* column = L + t * stride;
+      double value = g[t] - sums[t - t0];
+      for (int j = t + 1; j < end; ++j)
+      {
+        value -= column[j] * g[j];
+      }
+      g[t] = value / column[t];
+    }
+  }
+}
+
+// gram(c + q, j) += sum_{r in [r0, r1)} Y(r, c + q) Y(r, j) for q < 4 and the `Chunks` chunks
+// of columns from j0, continuing each entry's sum in ascending r.
+template <int Chunks>
+KERF_INLINE void gramTile(const double* Y, std::size_t r0, std::size_t r1, int width, int c, int j0, double* gram)
+{
+  constexpr int Columns = 4;
+  Chunk acc[Columns][Chunks];
+  for (int q = 0; q < Columns; ++q)
+  {
+    for (int h = 0; h < Chunks; ++h)
+    {
+      acc[q][h] = loadChunk(gram + static_cast<std::size_t>(c + q) * width + j0 + h * ColumnChunk);
+    }
+  }
+  for (std::size_t r = r0; r < r1; ++r)
+  {
+    const double* yr = Y + r * width;
+    Chunk y[Chunks];
+    for (int h = 0; h < Chunks; ++h)
+    {
+      y[h] = loadChunk(yr + j0 + h * ColumnChunk);
+    }
+    for (int q = 0; q < Columns; ++q)
+    {
+      for (int h = 0; h < Chunks; ++h)
+      {
+        acc[q][h] += yr[c + q] * y[h];
+      }
+    }
+  }
+  for (int q = 0; q < Columns; ++q)
+  {
+    for (int h = 0; h < Chunks; ++h)
+    {
+      storeChunk(gram + static_cast<std::size_t>(c + q) * width + j0 + h * ColumnChunk, acc[q][h]);
+    }
+  }
+}
+
+// The upper triangle (by chunks) of Y^T Y: gram(c, j) = sum_r Y(r,c) Y(r,j), each entry summed
+// in ascending r, for the `width` columns of Y (a multiple of ColumnChunk); gram (width x width)
+// starts at zero. Row blocks keep Y in cache; a block where four columns are all zero only adds
+// exact zeros to their rows and is skipped.
+KERF_VECTOR_CLONES
+void upperGram(const double* Y, std::size_t rows, int width, double* gram)
+{
+  constexpr std::size_t BlockRows = 32;
+  for (std::size_t r0 = 0; r0 < rows; r0 += BlockRows)
+  {
+    const std::size_t r1 = std::min(rows, r0 + BlockRows);
+    for (int c = 0; c < width; c += 4)
+    {
+      bool zero = true;
+      for (std::size_t r = r0; r < r1 && zero; ++r)
+      {
+        const double* yr = Y + r * width + c;
+        zero = yr[0] == 0.0 && yr[1] == 0.0 && yr[2] == 0.0 && yr[3] == 0.0;
+      }
+      if (zero)
+      {
+        continue;
+      }
+      int j0 = c / ColumnChunk * ColumnChunk;
+      for (; j0 + 2 * ColumnChunk <= width; j0 += 2 * ColumnChunk)
+      {
+        gramTile<2>(Y, r0, r1, width, c, j0, gram);
+      }
+      if (j0 < width)
+      {
+        gramTile<1>(Y, r0, r1, width, c, j0, gram);
+      }
+    }
+  }
+}
+
+int paddedWidth(int k)
+{
+  return std::max(ColumnChunk, (k + ColumnChunk - 1) / ColumnChunk * ColumnChunk);
+}
 } // namespace
+
+/// Y = L^-1 P U on its reach, for apply() and for the next prepare().
+struct SparseCholesky::LowRankFactor
+{
+  using Key = std::vector<std::pair<int, double>>; ///< a column's entries
+  std::vector<std::pair<Key, int>> keys; ///< each column of U and its column in y
+  std::vector<int> column;               ///< U's column -> its column in y
+  std::vector<int> supernodes;           ///< the reach, ascending
+  std::vector<int> firstRow;             ///< each reach supernode's first row in y
+  std::vector<int> rows;                 ///< the permuted row of each row of y
+  int width = 0;                         ///< values per row of y (a multiple of ColumnChunk)
+  std::vector<double> y;                 ///< row-major
+};
 
 struct SparseCholesky::Implementation
 {
   cholmod_common common;
-  cholmod_factor* factor = nullptr; // simplicial L D L^T after factor()
+  cholmod_factor* factor = nullptr; // supernodal L L^T after factor()
   std::vector<int> inversePermutation; // original row -> permuted row
-  std::vector<int> parent;             // elimination tree
-  mutable std::vector<int> position;   // workspace: permuted row -> index in a reach, or -1
-  // L^-1 P u for the columns u of the last prepare(), keyed by u's entries: a constraint set that
-  // keeps earlier columns (a refined cut) only solves for its new ones. Each column's values do
-  // not depend on the others solved with it, so reuse gives the same bits as solving afresh.
-  using ColumnKey = std::vector<std::pair<int, double>>;
-  using Column = std::vector<std::pair<int, double>>; // permuted row, value
-  mutable std::map<ColumnKey, Column> columns;
+  std::vector<int> supernodeOf;        // permuted row -> its supernode
+  std::vector<int> superParent;        // supernodal elimination tree
+  mutable std::vector<int> offset;     // workspace: supernode -> first row in a reach, or -1
+  mutable std::vector<int> lastOffset; // workspace: supernode -> first row in last's reach, or -1
+  // The last prepare()'s Y: a U that keeps some of its columns (a refined cut) only solves for
+  // the new ones. Each column's values do not depend on the others solved with it, so reuse
+  // gives the same bits as solving afresh.
+  mutable std::shared_ptr<const LowRankFactor> last;
 
   Implementation()
   {
@@ -79,6 +323,63 @@ struct SparseCholesky::Implementation
       cholmod_free_factor(&this->factor, &this->common);
     }
     cholmod_finish(&this->common);
+  }
+
+  const int* super() const { return static_cast<const int*>(this->factor->super); }
+  const int* pi() const { return static_cast<const int*>(this->factor->pi); }
+  const int* px() const { return static_cast<const int*>(this->factor->px); }
+  const int* rows() const { return static_cast<const int*>(this->factor->s); }
+  const double* values() const { return static_cast<const double*>(this->factor->x); }
+
+  /// The supernodes on the paths from the given ones to the root, ascending (a topological
+  /// order); `offset` then gives each one's first row among the reach's rows, and `rowCount` is
+  /// the number of rows.
+  std::vector<int> reachOf(const std::vector<int>& starts, std::size_t& rowCount) const
+  {
+    std::vector<int> reach;
+    for (int start : starts)
+    {
+      for (int s = start; s >= 0 && this->offset[s] < 0; s = this->superParent[s])
+      {
+        this->offset[s] = 0;
+        reach.push_back(s);
+      }
+    }
+    std::sort(reach.begin(), reach.end());
+    rowCount = 0;
+    for (int s : reach)
+    {
+      this->offset[s] = static_cast<int>(rowCount);
+      rowCount += static_cast<std::size_t>(this->super()[s + 1] - this->super()[s]);
+    }
+    return reach;
+  }
+  /// The position of permuted row j among the reach's rows.
+  int position(int j) const
+  {
+    const int s = this->supernodeOf[j];
+    return this->offset[s] + j - this->super()[s];
+  }
+  void clear(const std::vector<int>& reach) const
+  {
+    for (int s : reach)
+    {
+      this->offset[s] = -1;
+    }
+  }
+  /// The permuted rows of a reach, in order.
+  std::vector<int> rowsOf(const std::vector<int>& reach, std::size_t rowCount) const
+  {
+    std::vector<int> out;
+    out.reserve(rowCount);
+    for (int s : reach)
+    {
+      for (int j = this->super()[s]; j < this->super()[s + 1]; ++j)
+      {
+        out.push_back(j);
+      }
+    }
+    return out;
   }
 };
 
@@ -101,46 +402,55 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
   {
     cholmod_free_factor(&m.factor, &m.common);
   }
+  m.last.reset();
   Eigen::SparseMatrix<double> compressed = A;
   compressed.makeCompressed();
   cholmod_sparse s = cholmodView(compressed, -1);
-  // Nested dissection (METIS): less fill than AMD on surface meshes, and faster to factor.
+  // Nested dissection (METIS): less fill than AMD on surface meshes, so shorter reaches.
   m.common.nmethods = 1;
   m.common.method[0].ordering = CHOLMOD_METIS;
+  m.common.supernodal = CHOLMOD_SUPERNODAL;
   m.factor = cholmod_analyze(&s, &m.common);
   if (!m.factor)
   {
     return false;
   }
-  // Supernodal numeric factorization (fast), then the simplicial L D L^T the sparse solves read.
   if (!cholmod_factorize(&s, m.factor, &m.common) || m.common.status != CHOLMOD_OK ||
-    m.factor->minor < m.factor->n ||
-    !cholmod_change_factor(CHOLMOD_REAL, 0, 0, 1, 1, m.factor, &m.common))
+    m.factor->minor < m.factor->n || !m.factor->is_super)
   {
     cholmod_free_factor(&m.factor, &m.common);
     return false;
   }
   const int n = static_cast<int>(m.factor->n);
+  const int supernodes = static_cast<int>(m.factor->nsuper);
   const int* perm = static_cast<const int*>(m.factor->Perm);
-  const int* p = static_cast<const int*>(m.factor->p);
-  const int* nz = static_cast<const int*>(m.factor->nz);
-  const int* rows = static_cast<const int*>(m.factor->i);
   m.inversePermutation.assign(n, 0);
-  m.parent.assign(n, -1);
   for (int j = 0; j < n; ++j)
   {
     m.inversePermutation[perm[j]] = j;
-    // The parent of column j is the smallest row below the diagonal.
-    for (int e = p[j] + 1; e < p[j] + nz[j]; ++e)
+  }
+  m.supernodeOf.assign(n, 0);
+  for (int s = 0; s < supernodes; ++s)
+  {
+    for (int j = m.super()[s]; j < m.super()[s + 1]; ++j)
     {
-      if (m.parent[j] < 0 || rows[e] < m.parent[j])
-      {
-        m.parent[j] = rows[e];
-      }
+      m.supernodeOf[j] = s;
     }
   }
-  m.position.assign(n, -1);
-  m.columns.clear();
+  // The parent of a supernode holds its smallest row below the diagonal block.
+  m.superParent.assign(supernodes, -1);
+  for (int s = 0; s < supernodes; ++s)
+  {
+    const int columns = m.super()[s + 1] - m.super()[s];
+    int smallest = n;
+    for (int e = m.pi()[s] + columns; e < m.pi()[s + 1]; ++e)
+    {
+      smallest = std::min(smallest, m.rows()[e]);
+    }
+    m.superParent[s] = smallest < n ? m.supernodeOf[smallest] : -1;
+  }
+  m.offset.assign(supernodes, -1);
+  m.lastOffset.assign(supernodes, -1);
   return true;
 }
 
@@ -169,167 +479,232 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   {
     throw Error("the low-rank term does not match the factored matrix");
   }
-  const int* p = static_cast<const int*>(m.factor->p);
-  const int* nz = static_cast<const int*>(m.factor->nz);
-  const int* rows = static_cast<const int*>(m.factor->i);
-  const double* values = static_cast<const double*>(m.factor->x);
   const int k = static_cast<int>(U.cols());
+  auto factor = std::make_shared<LowRankFactor>();
+  LowRankFactor& out = *factor;
 
-  // Each column's key: its entries; columns seen in the last call are reused.
-  std::vector<Implementation::ColumnKey> keys(k);
-  std::vector<int> fresh;
+  // Each column's key is its entries. Columns of the last call keep their values and come first;
+  // the new ones follow from a whole chunk on, so the sweep touches only theirs.
+  std::map<LowRankFactor::Key, int> lastColumn;
+  if (m.last)
+  {
+    for (const auto& keyed : m.last->keys)
+    {
+      lastColumn.emplace(keyed.first, keyed.second);
+    }
+  }
+  std::vector<LowRankFactor::Key> keys(k);
+  std::vector<int> kept, fresh, source; // source: the kept columns' places in the last Y
   for (int c = 0; c < k; ++c)
   {
     for (Eigen::SparseMatrix<double>::InnerIterator it(U, c); it; ++it)
     {
       keys[c].emplace_back(static_cast<int>(it.row()), it.value());
     }
-    if (!m.columns.count(keys[c]))
+    const auto found = lastColumn.find(keys[c]);
+    if (found != lastColumn.end())
+    {
+      kept.push_back(c);
+      source.push_back(found->second);
+    }
+    else
     {
       fresh.push_back(c);
     }
   }
+  const int keptCount = static_cast<int>(kept.size());
+  const int freshBase = keptCount == 0 || fresh.empty() ? keptCount : paddedWidth(keptCount);
+  out.width = paddedWidth(freshBase + static_cast<int>(fresh.size()));
+  out.column.assign(k, 0);
+  for (int q = 0; q < keptCount; ++q)
+  {
+    out.column[kept[q]] = q;
+  }
+  for (std::size_t f = 0; f < fresh.size(); ++f)
+  {
+    out.column[fresh[f]] = freshBase + static_cast<int>(f);
+  }
+  for (int c = 0; c < k; ++c)
+  {
+    out.keys.emplace_back(keys[c], out.column[c]);
+  }
 
-  // The reach of a set of columns: every ancestor of their permuted rows, sorted.
-  auto reachOf = [&m](const std::vector<int>& starts) {
-    std::vector<int> reach;
-    for (int start : starts)
+  // The reach: L^-1 P u is nonzero only on the ancestors of u's rows.
+  std::vector<int> starts;
+  for (const LowRankFactor::Key& key : keys)
+  {
+    for (const auto& entry : key)
     {
-      for (int j = start; j >= 0 && m.position[j] < 0; j = m.parent[j])
+      starts.push_back(m.supernodeOf[m.inversePermutation[entry.first]]);
+    }
+  }
+  std::size_t rowCount = 0;
+  out.supernodes = m.reachOf(starts, rowCount);
+  out.rows = m.rowsOf(out.supernodes, rowCount);
+  for (int node : out.supernodes)
+  {
+    out.firstRow.push_back(m.offset[node]);
+  }
+  const std::vector<int>& reach = out.supernodes;
+  const std::size_t width = static_cast<std::size_t>(out.width);
+
+  // Y row by row: the kept columns from the last Y where a row is in its reach, else zero.
+  out.y.resize(rowCount * width);
+  if (m.last)
+  {
+    for (std::size_t i = 0; i < m.last->supernodes.size(); ++i)
+    {
+      m.lastOffset[m.last->supernodes[i]] = m.last->firstRow[i];
+    }
+  }
+  for (std::size_t r = 0; r < rowCount; ++r)
+  {
+    double* row = out.y.data() + r * width;
+    std::fill(row, row + width, 0.0);
+    const int j = out.rows[r];
+    const int node = m.supernodeOf[j];
+    if (keptCount > 0 && m.lastOffset[node] >= 0)
+    {
+      const double* from = m.last->y.data() +
+        static_cast<std::size_t>(m.lastOffset[node] + j - m.super()[node]) * static_cast<std::size_t>(m.last->width);
+      for (int q = 0; q < keptCount; ++q)
       {
-        m.position[j] = 0;
-        reach.push_back(j);
+        row[q] = from[source[q]];
       }
     }
-    std::sort(reach.begin(), reach.end());
-    for (std::size_t r = 0; r < reach.size(); ++r)
+  }
+  if (m.last)
+  {
+    for (int node : m.last->supernodes)
     {
-      m.position[reach[r]] = static_cast<int>(r);
+      m.lastOffset[node] = -1;
     }
-    return reach;
-  };
-  auto clearPositions = [&m](const std::vector<int>& reach) {
-    for (int j : reach)
-    {
-      m.position[j] = -1;
-    }
-  };
+  }
 
-  // New columns: Y = L^-1 P U in one sweep over their reach (rows of column j are its ancestors).
-  std::map<Implementation::ColumnKey, Implementation::Column> solved;
+  // New columns: Y = L^-1 P U, supernode by supernode in ascending (topological) order: a dense
+  // triangular solve with the diagonal block, then the update of the rows below it.
   if (!fresh.empty())
   {
-    std::vector<int> starts;
     for (int c : fresh)
     {
       for (const auto& entry : keys[c])
       {
-        starts.push_back(m.inversePermutation[entry.first]);
+        out.y[static_cast<std::size_t>(m.position(m.inversePermutation[entry.first])) * width + out.column[c]] += entry.second;
       }
     }
-    const std::vector<int> reach = reachOf(starts);
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y =
-      Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>::Zero(
-        static_cast<Eigen::Index>(reach.size()), static_cast<Eigen::Index>(fresh.size()));
-    for (std::size_t f = 0; f < fresh.size(); ++f)
+    std::vector<double*> targets;
+    std::vector<int> chunks; // the chunks of new columns not zero on the supernode
+    for (int node : reach)
     {
-      for (const auto& entry : keys[fresh[f]])
+      const int columns = m.super()[node + 1] - m.super()[node];
+      const int rows = m.pi()[node + 1] - m.pi()[node];
+      double* ys = out.y.data() + static_cast<std::size_t>(m.offset[node]) * width;
+      // A chunk that is zero on the supernode's rows stays zero and changes nothing below:
+      // skipping it is exact.
+      chunks.clear();
+      for (int c0 = freshBase; c0 < out.width; c0 += ColumnChunk)
       {
-        y(m.position[m.inversePermutation[entry.first]], static_cast<Eigen::Index>(f)) += entry.second;
-      }
-    }
-    for (std::size_t r = 0; r < reach.size(); ++r)
-    {
-      const int j = reach[r];
-      for (int e = p[j] + 1; e < p[j] + nz[j]; ++e)
-      {
-        y.row(m.position[rows[e]]) -= values[e] * y.row(static_cast<Eigen::Index>(r));
-      }
-    }
-    for (std::size_t f = 0; f < fresh.size(); ++f)
-    {
-      Implementation::Column column;
-      for (std::size_t r = 0; r < reach.size(); ++r)
-      {
-        const double value = y(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(f));
-        if (value != 0.0)
+        bool zero = true;
+        for (int t = 0; t < columns && zero; ++t)
         {
-          column.emplace_back(reach[r], value);
+          for (int c = 0; c < ColumnChunk; ++c)
+          {
+            zero = zero && ys[static_cast<std::size_t>(t) * width + c0 + c] == 0.0;
+          }
+        }
+        if (!zero)
+        {
+          chunks.push_back(c0);
         }
       }
-      solved[keys[fresh[f]]] = std::move(column);
+      if (chunks.empty())
+      {
+        continue;
+      }
+      targets.resize(static_cast<std::size_t>(rows - columns));
+      for (int i = columns; i < rows; ++i)
+      {
+        targets[i - columns] = out.y.data() + static_cast<std::size_t>(m.position(m.rows()[m.pi()[node] + i])) * width;
+      }
+      forwardSupernode(m.values() + m.px()[node], rows, columns, rows, ys, targets.data(), out.width,
+        chunks.data(), static_cast<int>(chunks.size()));
     }
-    clearPositions(reach);
   }
-  std::map<Implementation::ColumnKey, Implementation::Column> current;
-  for (int c = 0; c < k; ++c)
-  {
-    auto found = solved.find(keys[c]);
-    current[keys[c]] = found != solved.end() ? found->second : m.columns.at(keys[c]);
-  }
-  m.columns = std::move(current);
+  m.clear(reach);
 
-  // All columns on the union of their reaches, and U^T A^-1 U = Y^T D^-1 Y (D on L's diagonal).
-  LowRank out;
-  std::vector<int> starts;
-  for (int c = 0; c < k; ++c)
+  // U^T A^-1 U = Y^T Y, in U's column order.
+  std::vector<double> gram(width * width, 0.0);
+  upperGram(out.y.data(), rowCount, out.width, gram.data());
+  LowRank result;
+  result.gram.resize(k, k);
+  for (int a = 0; a < k; ++a)
   {
-    for (const auto& entry : m.columns.at(keys[c]))
+    for (int b = 0; b < k; ++b)
     {
-      starts.push_back(entry.first);
+      const int i = std::min(out.column[a], out.column[b]);
+      const int j = std::max(out.column[a], out.column[b]);
+      result.gram(a, b) = gram[static_cast<std::size_t>(i) * width + j];
     }
   }
-  out.reach = reachOf(starts);
-  out.y.setZero(static_cast<Eigen::Index>(out.reach.size()), k);
-  for (int c = 0; c < k; ++c)
-  {
-    for (const auto& entry : m.columns.at(keys[c]))
-    {
-      out.y(m.position[entry.first], c) = entry.second;
-    }
-  }
-  Eigen::VectorXd inverseD(static_cast<Eigen::Index>(out.reach.size()));
-  for (std::size_t r = 0; r < out.reach.size(); ++r)
-  {
-    inverseD[static_cast<Eigen::Index>(r)] = 1.0 / values[p[out.reach[r]]];
-  }
-  out.gram = out.y.transpose() * inverseD.asDiagonal() * out.y;
-  clearPositions(out.reach);
-  return out;
+  m.last = factor;
+  result.factor = factor;
+  return result;
 }
 
 Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::VectorXd& s) const
 {
   const Implementation& m = *this->Impl;
+  const LowRankFactor& f = *lowRank.factor;
   const int n = static_cast<int>(m.factor->n);
-  const int* p = static_cast<const int*>(m.factor->p);
-  const double* values = static_cast<const double*>(m.factor->x);
-  // z = D^-1 Y s on the reach, then P^T L^-T z.
+  // z = Y s on the reach (summed in U's column order, wherever a column sits in y), then
+  // P^T L^-T z.
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-  const Eigen::VectorXd ys = lowRank.y * s;
-  for (std::size_t r = 0; r < lowRank.reach.size(); ++r)
+  const int k = static_cast<int>(f.column.size());
+  for (std::size_t r = 0; r < f.rows.size(); ++r)
   {
-    const int j = lowRank.reach[r];
-    z[j] = ys[static_cast<Eigen::Index>(r)] / values[p[j]];
+    const double* row = f.y.data() + r * static_cast<std::size_t>(f.width);
+    double value = 0.0;
+    for (int c = 0; c < k; ++c)
+    {
+      value += row[f.column[c]] * s[c];
+    }
+    z[f.rows[r]] = value;
   }
-  cholmod_dense rhs = cholmodView(z.data(), static_cast<std::size_t>(n));
-  cholmod_dense* x = cholmod_solve(CHOLMOD_Lt, m.factor, &rhs, &this->Impl->common);
-  if (!x)
+  // Supernodes from the root down: each one's rows below its diagonal block are solved.
+  std::vector<double> g;
+  for (int node = static_cast<int>(m.factor->nsuper) - 1; node >= 0; --node)
   {
-    throw Error("the sparse solve failed");
+    const int first = m.super()[node];
+    const int columns = m.super()[node + 1] - first;
+    const int rows = m.pi()[node + 1] - m.pi()[node];
+    const int* pattern = m.rows() + m.pi()[node];
+    g.resize(static_cast<std::size_t>(rows));
+    for (int i = 0; i < rows; ++i)
+    {
+      g[i] = z[pattern[i]];
+    }
+    backwardSupernode(m.values() + m.px()[node], rows, columns, rows, g.data());
+    for (int t = 0; t < columns; ++t)
+    {
+      z[first + t] = g[t];
+    }
   }
-  const double* solved = static_cast<const double*>(x->x);
   const int* perm = static_cast<const int*>(m.factor->Perm);
   Eigen::VectorXd out(n);
   for (int r = 0; r < n; ++r)
   {
-    out[perm[r]] = solved[r];
+    out[perm[r]] = z[r];
   }
-  cholmod_free_dense(&x, &this->Impl->common);
   return out;
 }
 
 #else
+
+/// A^-1 U.
+struct SparseCholesky::LowRankFactor
+{
+  Eigen::MatrixXd inverseU;
+};
 
 struct SparseCholesky::Implementation
 {
@@ -368,16 +743,17 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 
 SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U) const
 {
+  auto factor = std::make_shared<LowRankFactor>();
+  factor->inverseU = this->Impl->solver.solve(Eigen::MatrixXd(U)); // one solve per column
   LowRank out;
-  const Eigen::MatrixXd dense = Eigen::MatrixXd(U);
-  out.y = this->Impl->solver.solve(dense); // A^-1 U, one solve per column
-  out.gram = U.transpose() * out.y;
+  out.gram = U.transpose() * factor->inverseU;
+  out.factor = factor;
   return out;
 }
 
 Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::VectorXd& s) const
 {
-  return lowRank.y * s;
+  return lowRank.factor->inverseU * s;
 }
 
 #endif

@@ -15,12 +15,14 @@ namespace kerf
 /// A + U U^T for any sparse U (n x k) through the Woodbury identity without touching the factor:
 /// (A + U U^T)^-1 = A^-1 - G (I + U^T G)^-1 G^T, G = A^-1 U.
 ///
-/// With CHOLMOD the factor is a simplicial L D L^T with a fill-reducing permutation P. For a
-/// sparse U, Y = L^-1 P U is nonzero only on the union of the elimination-tree paths from U's
-/// rows to the root (the "reach"), which a constraint set confined to a region of the surface
-/// keeps short: one sweep over the reach computes all k columns together, U^T A^-1 U is Y^T D^-1
-/// Y, and A^-1 U s is one backward solve P^T L^-T D^-1 Y s. Without CHOLMOD, G is formed by k
-/// solves. Either way the result depends only on A and U, never on earlier calls.
+/// With CHOLMOD the factor is a supernodal L L^T with a fill-reducing (METIS) permutation P. For
+/// a sparse U, Y = L^-1 P U is nonzero only on the supernodes on the paths from U's rows to the
+/// root of the elimination tree (the "reach"), which constraints confined to a region of the
+/// surface keep short: one sweep over the reach computes all k columns together with dense
+/// kernels, U^T A^-1 U is Y^T Y, and A^-1 U s is one backward solve P^T L^-T Y s. The last
+/// prepare()'s Y is kept, so a U that adds columns to the previous one only sweeps the new
+/// ones. Each column's arithmetic is the same whatever the others are, so every result depends
+/// only on A and U, never on earlier calls. Without CHOLMOD, G is formed by k solves.
 class SparseCholesky
 {
 public:
@@ -36,11 +38,11 @@ public:
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
   /// What applies A^-1 U for one U.
+  struct LowRankFactor;
   struct LowRank
   {
     Eigen::MatrixXd gram; ///< U^T A^-1 U (k x k)
-    std::vector<int> reach; ///< permuted rows where Y = L^-1 P U is nonzero (CHOLMOD)
-    Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> y; ///< Y on the reach, or A^-1 U
+    std::shared_ptr<const LowRankFactor> factor; ///< what apply() reads
   };
 
   /// Prepares A^-1 U for a sparse U with A's number of rows.

@@ -71,17 +71,6 @@ void TriangleMesh::checkIndices(const std::vector<Triangle>& triangles, int poin
   }
 }
 
-int TriangleMesh::faceNeighbor(int f, int k) const
-{
-  const int e = this->FaceEdges[f][k];
-  if (e < 0 || this->EdgeFaceCounts[e] != 2)
-  {
-    return -1;
-  }
-  const std::array<int, 2>& faces = this->EdgeFaces[e];
-  return faces[0] == f ? faces[1] : faces[0];
-}
-
 double TriangleMesh::boundingBoxDiagonal() const
 {
   Vector3 lo = Vector3::Constant(std::numeric_limits<double>::infinity());
@@ -188,6 +177,20 @@ void TriangleMesh::buildEdges()
           this->EdgeFaces[e][count] = f;
         }
         ++count;
+      }
+    }
+  }
+  // The triangle across each edge, where the edge is manifold and interior.
+  this->FaceNeighbors.assign(this->Triangles.size(), { -1, -1, -1 });
+  for (std::size_t f = 0; f < this->Triangles.size(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = this->FaceEdges[f][k];
+      if (e >= 0 && this->EdgeFaceCounts[e] == 2)
+      {
+        const std::array<int, 2>& faces = this->EdgeFaces[e];
+        this->FaceNeighbors[f][k] = faces[0] == static_cast<int>(f) ? faces[1] : faces[0];
       }
     }
   }

@@ -81,7 +81,7 @@ public:
   /// Edge k of triangle f (from corner k to corner k+1), or -1 if the triangle repeats that vertex.
   int faceEdge(int f, int k) const { return this->FaceEdges[f][k]; }
   /// The triangle across edge k of triangle f, or -1 on a boundary or non-manifold edge.
-  int faceNeighbor(int f, int k) const;
+  int faceNeighbor(int f, int k) const { return this->FaceNeighbors[f][k]; }
 
   /// True if v lies on a boundary edge.
   bool isBoundaryVertex(int v) const { return this->BoundaryVertex[v] != 0; }
@@ -121,6 +121,7 @@ private:
   std::vector<std::array<int, 2>> EdgeFaces;
   std::vector<int> EdgeFaceCounts;
   std::vector<std::array<int, 3>> FaceEdges;
+  std::vector<std::array<int, 3>> FaceNeighbors;
 
   std::vector<char> BoundaryVertex;
   std::vector<std::vector<int>> BoundaryLoops;
