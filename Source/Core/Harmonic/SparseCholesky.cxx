@@ -8,6 +8,7 @@
 
 #ifdef KERF_HAVE_CHOLMOD
 #include <cholmod.h>
+#include <dlfcn.h>
 #else
 #include <Eigen/SparseCholesky>
 #endif
@@ -277,6 +278,40 @@ void upperGram(const double* Y, std::size_t rows, int width, double* gram)
   }
 }
 
+// CHOLMOD's supernodal factorization runs a few memory copies in OpenMP parallel regions with a
+// fixed team size. On small machines their synchronisation costs more than it saves (a
+// 100k-triangle factorization takes twice as long on two cores), so while one is alive the
+// OpenMP runtime CHOLMOD loaded, if any, runs parallel regions on the calling thread. The
+// factor is the same either way.
+class SerialOpenMP
+{
+public:
+  SerialOpenMP()
+    : Get(reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels")))
+    , Set(reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels")))
+  {
+    if (this->Get && this->Set)
+    {
+      this->Previous = this->Get();
+      this->Set(0);
+    }
+  }
+  ~SerialOpenMP()
+  {
+    if (this->Get && this->Set)
+    {
+      this->Set(this->Previous);
+    }
+  }
+  SerialOpenMP(const SerialOpenMP&) = delete;
+  SerialOpenMP& operator=(const SerialOpenMP&) = delete;
+
+private:
+  int (*Get)() = nullptr;
+  void (*Set)(int) = nullptr;
+  int Previous = 1;
+};
+
 int paddedWidth(int k)
 {
   return std::max(ColumnChunk, (k + ColumnChunk - 1) / ColumnChunk * ColumnChunk);
@@ -415,7 +450,12 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
   {
     return false;
   }
-  if (!cholmod_factorize(&s, m.factor, &m.common) || m.common.status != CHOLMOD_OK ||
+  bool factored = false;
+  {
+    const SerialOpenMP serial;
+    factored = cholmod_factorize(&s, m.factor, &m.common) != 0;
+  }
+  if (!factored || m.common.status != CHOLMOD_OK ||
     m.factor->minor < m.factor->n || !m.factor->is_super)
   {
     cholmod_free_factor(&m.factor, &m.common);
