@@ -1,5 +1,6 @@
 // Sparse Cholesky: solves and low-rank corrections against dense references, and results that
 // do not depend on earlier calls or on the order of the low-rank columns.
+#include "Error.h"
 #include "Harmonic/SparseCholesky.h"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <Eigen/Dense>
 
 #include <cstring>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -152,12 +154,12 @@ TEST(SparseCholesky, LowRankDoesNotDependOnEarlierCalls)
   EXPECT_TRUE(bitwiseEqual(d.gram, b.gram));
   EXPECT_TRUE(bitwiseEqual(later.apply(d, s), fresh.apply(b, s)));
 
-  // Swapping the two groups permutes the Gram matrix exactly.
+  // Swapping the two groups permutes the Gram matrix exactly, whether the columns are new (a
+  // new solver) or kept from the last call at other places.
   Eigen::SparseMatrix<double> swapped(n, 39);
   swapped.leftCols(19) = second;
   swapped.rightCols(20) = first;
   swapped.makeCompressed();
-  const SparseCholesky::LowRank c = fresh.prepare(swapped);
   Eigen::MatrixXd permuted(39, 39);
   for (int i = 0; i < 39; ++i)
   {
@@ -166,7 +168,85 @@ TEST(SparseCholesky, LowRankDoesNotDependOnEarlierCalls)
       permuted((i + 19) % 39, (j + 19) % 39) = b.gram(i, j);
     }
   }
-  EXPECT_TRUE(bitwiseEqual(c.gram, permuted));
+  SparseCholesky other;
+  ASSERT_TRUE(other.factor(f.A));
+  EXPECT_TRUE(bitwiseEqual(other.prepare(swapped).gram, permuted));
+  EXPECT_TRUE(bitwiseEqual(fresh.prepare(swapped).gram, permuted));
+}
+
+TEST(SparseCholesky, LowRankEdgeCases)
+{
+  const Fixture f;
+  const int n = static_cast<int>(f.A.rows());
+  SparseCholesky cholesky, reference;
+  ASSERT_TRUE(cholesky.factor(f.A));
+  ASSERT_TRUE(reference.factor(f.A));
+
+  // No column at all.
+  const SparseCholesky::LowRank none = cholesky.prepare(Eigen::SparseMatrix<double>(n, 0));
+  EXPECT_EQ(none.gram.size(), 0);
+  EXPECT_EQ(cholesky.apply(none, Eigen::VectorXd(0)).norm(), 0.0);
+
+  // An empty column and a repeated one, first new, then all kept (the same U twice).
+  const Eigen::SparseMatrix<double> base = lowRankColumns(n, 5, 21);
+  Eigen::SparseMatrix<double> odd(n, 7);
+  odd.leftCols(5) = base;
+  odd.col(6) = base.col(2); // column 5 stays empty
+  odd.makeCompressed();
+  const SparseCholesky::LowRank once = cholesky.prepare(odd);
+  const SparseCholesky::LowRank twice = cholesky.prepare(odd);
+  const SparseCholesky::LowRank alone = reference.prepare(odd);
+  EXPECT_TRUE(bitwiseEqual(once.gram, alone.gram));
+  EXPECT_TRUE(bitwiseEqual(twice.gram, alone.gram));
+  EXPECT_EQ(alone.gram.row(5).norm(), 0.0);
+  EXPECT_EQ(alone.gram(6, 6), alone.gram(2, 2));
+  const Eigen::VectorXd s = Eigen::VectorXd::LinSpaced(7, 1.0, 2.0);
+  EXPECT_TRUE(bitwiseEqual(cholesky.apply(twice, s), reference.apply(alone, s)));
+  const Eigen::MatrixXd inverseU = f.reference.solve(Eigen::MatrixXd(odd));
+  EXPECT_LT(relativeError(alone.gram, Eigen::MatrixXd(odd.transpose()) * inverseU), 1e-9);
+
+  // Kept columns between new ones.
+  Eigen::SparseMatrix<double> mixed(n, 9);
+  mixed.leftCols(2) = lowRankColumns(n, 2, 22);
+  mixed.middleCols(2, 5) = base;
+  mixed.rightCols(2) = lowRankColumns(n, 2, 23);
+  mixed.makeCompressed();
+  SparseCholesky direct;
+  ASSERT_TRUE(direct.factor(f.A));
+  const SparseCholesky::LowRank kept = cholesky.prepare(mixed);
+  const SparseCholesky::LowRank afresh = direct.prepare(mixed);
+  EXPECT_TRUE(bitwiseEqual(kept.gram, afresh.gram));
+  const Eigen::VectorXd t = Eigen::VectorXd::LinSpaced(9, -1.0, 1.0);
+  EXPECT_TRUE(bitwiseEqual(cholesky.apply(kept, t), direct.apply(afresh, t)));
+}
+
+TEST(SparseCholesky, RefusesMismatchedLowRank)
+{
+  const Fixture f;
+  const int n = static_cast<int>(f.A.rows());
+  SparseCholesky cholesky;
+  EXPECT_THROW(cholesky.prepare(lowRankColumns(n, 3, 31)), Error);
+  ASSERT_TRUE(cholesky.factor(f.A));
+  EXPECT_THROW(cholesky.prepare(lowRankColumns(n + 1, 3, 31)), Error);
+  Eigen::SparseMatrix<double> bad = lowRankColumns(n, 3, 31);
+  bad.valuePtr()[1] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(cholesky.prepare(bad), Error);
+  // The same check on a matrix that is not compressed (its value array has spare slots).
+  Eigen::SparseMatrix<double> loose(n, 2);
+  loose.reserve(Eigen::VectorXi::Constant(2, 4));
+  loose.insert(0, 0) = 1.0;
+  loose.insert(5, 1) = std::numeric_limits<double>::infinity();
+  ASSERT_FALSE(loose.isCompressed());
+  EXPECT_THROW(cholesky.prepare(loose), Error);
+
+  const SparseCholesky::LowRank lowRank = cholesky.prepare(lowRankColumns(n, 3, 32));
+  EXPECT_THROW(cholesky.apply(lowRank, Eigen::VectorXd::Ones(2)), Error);
+  EXPECT_NO_THROW(cholesky.apply(lowRank, Eigen::VectorXd::Ones(3)));
+  // A new factorization: the old term no longer applies, and the kept columns are forgotten.
+  ASSERT_TRUE(cholesky.factor(2.0 * f.A));
+  EXPECT_THROW(cholesky.apply(lowRank, Eigen::VectorXd::Ones(3)), Error);
+  const SparseCholesky::LowRank scaled = cholesky.prepare(lowRankColumns(n, 3, 32));
+  EXPECT_LT(relativeError(2.0 * scaled.gram, lowRank.gram), 1e-9);
 }
 
 TEST(SparseCholesky, RefusesIndefiniteMatrix)

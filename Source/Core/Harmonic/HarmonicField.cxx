@@ -309,6 +309,8 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
     if (!cache.prepared || !sameSoftLocations(cache.softLocations, constraints.soft) ||
       cache.softWeight != constraints.softWeight)
     {
+      // Built aside and kept only once all of it exists, so a failure leaves no half update.
+      cache.prepared = false;
       std::vector<Eigen::Triplet<double>> entries;
       for (int i = 0; i < k; ++i)
       {
@@ -322,17 +324,21 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
           }
         }
       }
-      cache.u.resize(columns, k);
-      cache.u.setFromTriplets(entries.begin(), entries.end());
-      cache.u.makeCompressed();
-      cache.lowRank = columns > 0 ? cache.cholesky.prepare(cache.u) : SparseCholesky::LowRank{};
+      Eigen::SparseMatrix<double> u(columns, k);
+      u.setFromTriplets(entries.begin(), entries.end());
+      u.makeCompressed();
+      SparseCholesky::LowRank lowRank = columns > 0 ? cache.cholesky.prepare(u) : SparseCholesky::LowRank{};
       Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
       if (columns > 0)
       {
-        capacitance += cache.lowRank.gram;
+        capacitance += lowRank.gram;
       }
-      cache.capacitance.compute(capacitance);
-      cache.softLocations = constraints.soft;
+      Eigen::LDLT<Eigen::MatrixXd> factored(capacitance);
+      std::vector<SoftConstraint> locations = constraints.soft;
+      cache.u = std::move(u);
+      cache.lowRank = std::move(lowRank);
+      cache.capacitance = std::move(factored);
+      cache.softLocations = std::move(locations);
       cache.softWeight = constraints.softWeight;
       cache.prepared = true;
       if (solution.work == HarmonicFieldSolution::Work::BackSubstitution)

@@ -4,6 +4,8 @@
 #include "Error.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <map>
 
 #ifdef KERF_HAVE_CHOLMOD
@@ -15,6 +17,23 @@
 
 namespace kerf
 {
+namespace
+{
+/// Throws when a low-rank term has a NaN or infinite entry (compressed or not).
+void checkFinite(const Eigen::SparseMatrix<double>& U)
+{
+  for (Eigen::Index c = 0; c < U.outerSize(); ++c)
+  {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(U, c); it; ++it)
+    {
+      if (!std::isfinite(it.value()))
+      {
+        throw Error("the low-rank term has NaN or infinite entries");
+      }
+    }
+  }
+}
+} // namespace
 
 #ifdef KERF_HAVE_CHOLMOD
 
@@ -312,6 +331,30 @@ private:
   int Previous = 1;
 };
 
+// Resets workspace entries to -1 when it goes out of scope, exceptions included.
+class Marks
+{
+public:
+  Marks(std::vector<int>& workspace, const std::vector<int>& marked)
+    : Workspace(workspace)
+    , Marked(marked)
+  {
+  }
+  ~Marks()
+  {
+    for (int i : this->Marked)
+    {
+      this->Workspace[i] = -1;
+    }
+  }
+  Marks(const Marks&) = delete;
+  Marks& operator=(const Marks&) = delete;
+
+private:
+  std::vector<int>& Workspace;
+  const std::vector<int>& Marked;
+};
+
 int paddedWidth(int k)
 {
   return std::max(ColumnChunk, (k + ColumnChunk - 1) / ColumnChunk * ColumnChunk);
@@ -329,6 +372,7 @@ struct SparseCholesky::LowRankFactor
   std::vector<int> rows;                 ///< the permuted row of each row of y
   int width = 0;                         ///< values per row of y (a multiple of ColumnChunk)
   std::vector<double> y;                 ///< row-major
+  std::uint64_t generation = 0;          ///< the factorization it belongs to
 };
 
 struct SparseCholesky::Implementation
@@ -344,6 +388,7 @@ struct SparseCholesky::Implementation
   // the new ones. Each column's values do not depend on the others solved with it, so reuse
   // gives the same bits as solving afresh.
   mutable std::shared_ptr<const LowRankFactor> last;
+  std::uint64_t generation = 0; // counts factorizations, so a LowRank knows which it belongs to
 
   Implementation()
   {
@@ -367,17 +412,17 @@ struct SparseCholesky::Implementation
   const double* values() const { return static_cast<const double*>(this->factor->x); }
 
   /// The supernodes on the paths from the given ones to the root, ascending (a topological
-  /// order); `offset` then gives each one's first row among the reach's rows, and `rowCount` is
-  /// the number of rows.
-  std::vector<int> reachOf(const std::vector<int>& starts, std::size_t& rowCount) const
+  /// order), into `reach`; `offset` then gives each one's first row among the reach's rows, and
+  /// `rowCount` is the number of rows. A supernode is in `reach` before it is marked, so a Marks
+  /// guard over `reach` always restores the workspace.
+  void reachOf(const std::vector<int>& starts, std::vector<int>& reach, std::size_t& rowCount) const
   {
-    std::vector<int> reach;
     for (int start : starts)
     {
       for (int s = start; s >= 0 && this->offset[s] < 0; s = this->superParent[s])
       {
-        this->offset[s] = 0;
         reach.push_back(s);
+        this->offset[s] = 0;
       }
     }
     std::sort(reach.begin(), reach.end());
@@ -387,20 +432,12 @@ struct SparseCholesky::Implementation
       this->offset[s] = static_cast<int>(rowCount);
       rowCount += static_cast<std::size_t>(this->super()[s + 1] - this->super()[s]);
     }
-    return reach;
   }
   /// The position of permuted row j among the reach's rows.
   int position(int j) const
   {
     const int s = this->supernodeOf[j];
     return this->offset[s] + j - this->super()[s];
-  }
-  void clear(const std::vector<int>& reach) const
-  {
-    for (int s : reach)
-    {
-      this->offset[s] = -1;
-    }
   }
   /// The permuted rows of a reach, in order.
   std::vector<int> rowsOf(const std::vector<int>& reach, std::size_t rowCount) const
@@ -438,6 +475,7 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
     cholmod_free_factor(&m.factor, &m.common);
   }
   m.last.reset();
+  ++m.generation;
   Eigen::SparseMatrix<double> compressed = A;
   compressed.makeCompressed();
   cholmod_sparse s = cholmodView(compressed, -1);
@@ -520,15 +558,18 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
     throw Error("the low-rank term does not match the factored matrix");
   }
   const int k = static_cast<int>(U.cols());
+  checkFinite(U);
   auto factor = std::make_shared<LowRankFactor>();
   LowRankFactor& out = *factor;
+  out.generation = m.generation;
+  const std::shared_ptr<const LowRankFactor> previous = m.last;
 
   // Each column's key is its entries. Columns of the last call keep their values and come first;
   // the new ones follow from a whole chunk on, so the sweep touches only theirs.
   std::map<LowRankFactor::Key, int> lastColumn;
-  if (m.last)
+  if (previous)
   {
-    for (const auto& keyed : m.last->keys)
+    for (const auto& keyed : previous->keys)
     {
       lastColumn.emplace(keyed.first, keyed.second);
     }
@@ -579,7 +620,8 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
     }
   }
   std::size_t rowCount = 0;
-  out.supernodes = m.reachOf(starts, rowCount);
+  const Marks reachMarks(m.offset, out.supernodes);
+  m.reachOf(starts, out.supernodes, rowCount);
   out.rows = m.rowsOf(out.supernodes, rowCount);
   for (int node : out.supernodes)
   {
@@ -590,34 +632,31 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
 
   // Y row by row: the kept columns from the last Y where a row is in its reach, else zero.
   out.y.resize(rowCount * width);
-  if (m.last)
   {
-    for (std::size_t i = 0; i < m.last->supernodes.size(); ++i)
+    static const std::vector<int> none;
+    const Marks lastMarks(m.lastOffset, previous ? previous->supernodes : none);
+    if (previous)
     {
-      m.lastOffset[m.last->supernodes[i]] = m.last->firstRow[i];
-    }
-  }
-  for (std::size_t r = 0; r < rowCount; ++r)
-  {
-    double* row = out.y.data() + r * width;
-    std::fill(row, row + width, 0.0);
-    const int j = out.rows[r];
-    const int node = m.supernodeOf[j];
-    if (keptCount > 0 && m.lastOffset[node] >= 0)
-    {
-      const double* from = m.last->y.data() +
-        static_cast<std::size_t>(m.lastOffset[node] + j - m.super()[node]) * static_cast<std::size_t>(m.last->width);
-      for (int q = 0; q < keptCount; ++q)
+      for (std::size_t i = 0; i < previous->supernodes.size(); ++i)
       {
-        row[q] = from[source[q]];
+        m.lastOffset[previous->supernodes[i]] = previous->firstRow[i];
       }
     }
-  }
-  if (m.last)
-  {
-    for (int node : m.last->supernodes)
+    for (std::size_t r = 0; r < rowCount; ++r)
     {
-      m.lastOffset[node] = -1;
+      double* row = out.y.data() + r * width;
+      std::fill(row, row + width, 0.0);
+      const int j = out.rows[r];
+      const int node = m.supernodeOf[j];
+      if (keptCount > 0 && m.lastOffset[node] >= 0)
+      {
+        const double* from = previous->y.data() +
+          static_cast<std::size_t>(m.lastOffset[node] + j - m.super()[node]) * static_cast<std::size_t>(previous->width);
+        for (int q = 0; q < keptCount; ++q)
+        {
+          row[q] = from[source[q]];
+        }
+      }
     }
   }
 
@@ -670,9 +709,9 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
         chunks.data(), static_cast<int>(chunks.size()));
     }
   }
-  m.clear(reach);
 
-  // U^T A^-1 U = Y^T Y, in U's column order.
+  // U^T A^-1 U = Y^T Y, in U's column order (+ 0.0 makes every zero positive, so skipped zero
+  // blocks cannot show in the sign of a zero).
   std::vector<double> gram(width * width, 0.0);
   upperGram(out.y.data(), rowCount, out.width, gram.data());
   LowRank result;
@@ -683,7 +722,7 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
     {
       const int i = std::min(out.column[a], out.column[b]);
       const int j = std::max(out.column[a], out.column[b]);
-      result.gram(a, b) = gram[static_cast<std::size_t>(i) * width + j];
+      result.gram(a, b) = gram[static_cast<std::size_t>(i) * width + j] + 0.0;
     }
   }
   m.last = factor;
@@ -694,6 +733,11 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
 Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::VectorXd& s) const
 {
   const Implementation& m = *this->Impl;
+  if (!m.factor || !lowRank.factor || lowRank.factor->generation != m.generation ||
+    s.size() != static_cast<Eigen::Index>(lowRank.factor->column.size()))
+  {
+    throw Error("the low-rank term does not belong to this factorization or has another size");
+  }
   const LowRankFactor& f = *lowRank.factor;
   const int n = static_cast<int>(m.factor->n);
   // z = Y s on the reach (summed in U's column order, wherever a column sits in y), then
@@ -733,7 +777,7 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
   Eigen::VectorXd out(n);
   for (int r = 0; r < n; ++r)
   {
-    out[perm[r]] = z[r];
+    out[perm[r]] = z[r] + 0.0;
   }
   return out;
 }
@@ -744,12 +788,14 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
 struct SparseCholesky::LowRankFactor
 {
   Eigen::MatrixXd inverseU;
+  std::uint64_t generation = 0; ///< the factorization it belongs to
 };
 
 struct SparseCholesky::Implementation
 {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
   bool ready = false;
+  std::uint64_t generation = 0; // counts factorizations
 };
 
 SparseCholesky::SparseCholesky()
@@ -767,6 +813,7 @@ std::string SparseCholesky::backend()
 bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
 {
   Implementation& m = *this->Impl;
+  ++m.generation;
   m.solver.compute(A);
   m.ready = m.solver.info() == Eigen::Success && (m.solver.vectorD().array() > 0.0).all();
   return m.ready;
@@ -783,16 +830,29 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 
 SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U) const
 {
+  const Implementation& m = *this->Impl;
+  if (!m.ready || U.rows() != m.solver.rows())
+  {
+    throw Error("the low-rank term does not match the factored matrix");
+  }
+  checkFinite(U);
   auto factor = std::make_shared<LowRankFactor>();
-  factor->inverseU = this->Impl->solver.solve(Eigen::MatrixXd(U)); // one solve per column
+  factor->inverseU = m.solver.solve(Eigen::MatrixXd(U)); // one solve per column
+  factor->generation = m.generation;
   LowRank out;
-  out.gram = U.transpose() * factor->inverseU;
+  const Eigen::MatrixXd gram = U.transpose() * factor->inverseU;
+  out.gram = 0.5 * (gram + gram.transpose()); // exactly symmetric
   out.factor = factor;
   return out;
 }
 
 Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::VectorXd& s) const
 {
+  if (!this->Impl->ready || !lowRank.factor || lowRank.factor->generation != this->Impl->generation ||
+    s.size() != lowRank.factor->inverseU.cols())
+  {
+    throw Error("the low-rank term does not belong to this factorization or has another size");
+  }
   return lowRank.factor->inverseU * s;
 }
 

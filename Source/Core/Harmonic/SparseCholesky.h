@@ -22,7 +22,8 @@ namespace kerf
 /// kernels, U^T A^-1 U is Y^T Y, and A^-1 U s is one backward solve P^T L^-T Y s. The last
 /// prepare()'s Y is kept, so a U that adds columns to the previous one only sweeps the new
 /// ones. Each column's arithmetic is the same whatever the others are, so every result depends
-/// only on A and U, never on earlier calls. Without CHOLMOD, G is formed by k solves.
+/// only on A and U, never on earlier calls. Without CHOLMOD, G is formed by k solves. One object
+/// serves one thread at a time (its const methods share workspace).
 class SparseCholesky
 {
 public:
@@ -45,10 +46,12 @@ public:
     std::shared_ptr<const LowRankFactor> factor; ///< what apply() reads
   };
 
-  /// Prepares A^-1 U for a sparse U with A's number of rows.
+  /// Prepares A^-1 U for a sparse U with A's number of rows. Throws kerf::Error for another
+  /// number of rows, no factorization, or NaN or infinite entries.
   LowRank prepare(const Eigen::SparseMatrix<double>& U) const;
 
-  /// A^-1 U s.
+  /// A^-1 U s. Throws kerf::Error if lowRank came from an earlier factorization or s has
+  /// another size than U's number of columns.
   Eigen::VectorXd apply(const LowRank& lowRank, const Eigen::VectorXd& s) const;
 
   /// "CHOLMOD" or "Eigen SimplicialLDLT".
