@@ -172,7 +172,7 @@ int vtkHarmonicField::RequestData(
   // Constraints.
   kerf::FieldConstraints constraints;
   constraints.softWeight = this->SoftConstraintWeight * state.meanDiagonal;
-  if (this->HardValueArrayName && *this->HardValueArrayName)
+  if (this->UseHardValues && this->HardValueArrayName && *this->HardValueArrayName)
   {
     vtkDataArray* hard = input->GetPointData()->GetArray(this->HardValueArrayName);
     if (!hard || hard->GetNumberOfComponents() != 1)
@@ -289,6 +289,7 @@ void vtkHarmonicField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HardConstraints: " << this->HardConstraints << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "HardValueArrayName: " << (this->HardValueArrayName ? this->HardValueArrayName : "(none)") << "\n";
+  os << indent << "UseHardValues: " << this->UseHardValues << "\n";
   os << indent << "ConstraintValueArrayName: "
      << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "(none)") << "\n";
   os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(none)") << "\n";

@@ -6,7 +6,8 @@
  * Constraints, in any combination:
  * - hard (Dirichlet) values on vertices: the point array of the surface named
  *   HardValueArrayName, whose non-NaN entries are fixed values (NaN marks a free vertex); no
- *   name (the default) means no hard values, a name the surface lacks is an error;
+ *   name (the default) or UseHardValues off means no hard values, a name the surface lacks is
+ *   an error;
  * - points on the second input (any vtkPointSet, for example vtkStrokeConstraints' output) with a
  *   value array named ConstraintValueArrayName (default "ConstraintValue"). Each point is
  *   projected onto the surface; its nearest face and
@@ -112,6 +113,14 @@ public:
   ///@}
 
   ///@{
+  /// Whether HardValueArrayName is used; off ignores it (ParaView's Use Hard Values toggle, so
+  /// an array can stay selected). Default on.
+  vtkSetMacro(UseHardValues, bool);
+  vtkGetMacro(UseHardValues, bool);
+  vtkBooleanMacro(UseHardValues, bool);
+  ///@}
+
+  ///@{
   /// Name of the value array of the constraint points (second input). Default "ConstraintValue".
   vtkSetStringMacro(ConstraintValueArrayName);
   vtkGetStringMacro(ConstraintValueArrayName);
@@ -145,6 +154,7 @@ protected:
   bool HardConstraints = false;
   double MaximumProjectionDistance = 0.02;
   char* HardValueArrayName = nullptr;
+  bool UseHardValues = true;
   char* ConstraintValueArrayName = nullptr;
   char* FieldArrayName = nullptr;
   char* GradientArrayName = nullptr;

@@ -126,6 +126,14 @@ int TestHarmonicFieldFilter(int, char*[])
   f = field->GetOutput()->GetPointData()->GetArray("HarmonicField");
   ok &= KERF_CHECK(std::abs(f->GetComponent(15, 0) - 2.0 * plane->GetPoint(15)[0] / width) < 1e-9);
 
+  // UseHardValues off ignores the selected array: the plane is left without any constraint.
+  field->UseHardValuesOff();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(field).find("no constraint") != std::string::npos);
+  field->UseHardValuesOn();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(field).empty());
+  f = field->GetOutput()->GetPointData()->GetArray("HarmonicField");
+  ok &= KERF_CHECK(std::abs(f->GetComponent(15, 0) - 2.0 * plane->GetPoint(15)[0] / width) < 1e-9);
+
   // Soft constraints from a second input, on a closed surface.
   vtkSmartPointer<vtkPolyData> sphere = kerf::test::ToPolyData(kerf::makeIcosphere(1.0, 3));
   vtkSmartPointer<vtkPolyData> soft = pointsWithValues(

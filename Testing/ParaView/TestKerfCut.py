@@ -25,6 +25,8 @@ RESIDUAL_LIMIT = 1e-9
 SLID_ISO_VALUE = 0.5
 # Sliding to 0.5 moves the cut's mean height by 0.5% of the diagonal; a fifth of that is a move.
 SLIDE_DISTANCE = 0.001
+TIP_FRACTION = 0.05  # hard values on the vertices within 5% of the height of either end in z
+ROUNDING = 1e-12
 
 simple.LoadPlugin(os.environ["KERF_PLUGIN"])
 
@@ -132,10 +134,50 @@ class KerfCutTest(unittest.TestCase):
         field = self.pipeline.field
         with self.subTest(property="Harmonic Field's Constraint Values"):
             self.assertEqual(field.ConstraintValues, "ConstraintValue")
+            # The picker lists the constraint points' one-component point arrays.
+            self.assertEqual(sorted(field.GetProperty("ConstraintValues").Available), ["ConstraintValue", "Side"])
         with self.subTest(property="Isoline Cut's Field"):
             self.assertEqual(list(self.pipeline.cut.Field), ["POINTS", "HarmonicField"])
         with self.subTest(property="Harmonic Field's Hard Values"):
+            # The camel has no point array to pick, and hard values are off until asked for.
             self.assertEqual(field.HardValues, "")
+            self.assertEqual(field.GetProperty("HardValues").Available, [])
+            self.assertEqual(field.UseHardValues, 0)
+
+    def test_hard_values_picked_from_the_surface(self):
+        """Hard values 1 at the head's tip and 0 at the tail's (NaN elsewhere), made with the
+        Python Calculator and picked in Harmonic Field: the field keeps them exactly and stays
+        between them."""
+        low, high = self.pipeline.camel.GetDataInformation().GetBounds()[4:6]
+        tip = TIP_FRACTION * (high - low)
+        tips = simple.PythonCalculator(Input=self.pipeline.camel, ArrayName="Tips", Expression=(
+            "numpy.where(inputs[0].Points[:, 2] > %r, 1.0, numpy.where(inputs[0].Points[:, 2] < %r, 0.0, numpy.nan))"
+            % (high - tip, low + tip)))
+        tips.UpdatePipeline()  # applied, as in the GUI, so its arrays are known
+        field = simple.HarmonicField(Input=tips)
+        try:
+            self.pipeline.watch.add("hard field", field)
+            # The only one-component point array is picked, but not used until switched on.
+            self.assertEqual(field.GetProperty("HardValues").Available, ["Tips"])
+            self.assertEqual(field.HardValues, "Tips")
+            self.assertEqual(field.UseHardValues, 0)
+            field.UseHardValues = 1
+            field.UpdatePipeline()
+            self.assert_no_errors()
+            surface = servermanager.Fetch(field)
+            values = vtk_to_numpy(surface.GetPointData().GetArray("HarmonicField"))
+            fixed_values = vtk_to_numpy(surface.GetPointData().GetArray("Tips"))
+            fixed = ~numpy.isnan(fixed_values)
+            self.assertGreater(int((fixed_values == 1.0).sum()), 0)
+            self.assertGreater(int((fixed_values == 0.0).sum()), 0)
+            numpy.testing.assert_array_equal(values[fixed], fixed_values[fixed])
+            # The maximum principle, up to rounding.
+            self.assertGreaterEqual(values.min(), -ROUNDING)
+            self.assertLessEqual(values.max(), 1.0 + ROUNDING)
+            self.assertLessEqual(field_data_value(surface, "RelativeResidual"), RESIDUAL_LIMIT)
+        finally:
+            simple.Delete(field)
+            simple.Delete(tips)
 
     def test_stroke_gives_paired_constraints(self):
         self.assert_no_errors("constraints")
