@@ -19,17 +19,20 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <cstring>
+#include <limits>
 #include <new>
+#include <string>
 
 namespace kerf
 {
 
 namespace
 {
-// Appends every cell of a vtkCellArray as a polygon (or, for strips, as triangles).
+// Appends every cell of a vtkCellArray as a polygon (or, for strips, as triangles); throws on a
+// point id outside [0, pointCount).
 template <typename OffsetArray>
 void appendCells(OffsetArray* offsets, OffsetArray* connectivity, vtkIdType firstCellId, bool strips,
-  PolygonMesh& polygons, std::vector<vtkIdType>& polygonCell)
+  vtkIdType pointCount, PolygonMesh& polygons, std::vector<vtkIdType>& polygonCell)
 {
   const vtkIdType cells = offsets->GetNumberOfValues() - 1;
   const auto* off = offsets->GetPointer(0);
@@ -38,6 +41,15 @@ void appendCells(OffsetArray* offsets, OffsetArray* connectivity, vtkIdType firs
   {
     const vtkIdType begin = static_cast<vtkIdType>(off[c]);
     const vtkIdType size = static_cast<vtkIdType>(off[c + 1]) - begin;
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(conn[begin + k]);
+      if (id < 0 || id >= pointCount)
+      {
+        throw Error("cell " + std::to_string(firstCellId + c) + " uses point " + std::to_string(id) +
+          ", but there are " + std::to_string(pointCount) + " points");
+      }
+    }
     if (!strips)
     {
       for (vtkIdType k = 0; k < size; ++k)
@@ -68,8 +80,8 @@ void appendCells(OffsetArray* offsets, OffsetArray* connectivity, vtkIdType firs
   }
 }
 
-void appendCellArray(vtkCellArray* cells, vtkIdType firstCellId, bool strips, PolygonMesh& polygons,
-  std::vector<vtkIdType>& polygonCell)
+void appendCellArray(vtkCellArray* cells, vtkIdType firstCellId, bool strips, vtkIdType pointCount,
+  PolygonMesh& polygons, std::vector<vtkIdType>& polygonCell)
 {
   if (!cells || cells->GetNumberOfCells() == 0)
   {
@@ -78,12 +90,12 @@ void appendCellArray(vtkCellArray* cells, vtkIdType firstCellId, bool strips, Po
   if (cells->IsStorage64Bit())
   {
     appendCells(cells->GetOffsetsArray64(), cells->GetConnectivityArray64(), firstCellId, strips,
-      polygons, polygonCell);
+      pointCount, polygons, polygonCell);
   }
   else
   {
     appendCells(cells->GetOffsetsArray32(), cells->GetConnectivityArray32(), firstCellId, strips,
-      polygons, polygonCell);
+      pointCount, polygons, polygonCell);
   }
 }
 
@@ -139,6 +151,11 @@ bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements
   {
     PolygonMesh polygons;
     const vtkIdType pointCount = input->GetNumberOfPoints();
+    if (pointCount > std::numeric_limits<int>::max())
+    {
+      error = "the input has more points than Kerf indexes (2^31 - 1)";
+      return false;
+    }
     if (pointCount > 0)
     {
       std::vector<double> coordinates;
@@ -161,8 +178,8 @@ bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements
     polygonCell.reserve(static_cast<std::size_t>(polys + strips));
     polygons.polygonIndices.reserve(static_cast<std::size_t>(polys) * 3);
     polygons.polygonOffsets.reserve(static_cast<std::size_t>(polys + strips) + 1);
-    appendCellArray(input->GetPolys(), verts + lines, false, polygons, polygonCell);
-    appendCellArray(input->GetStrips(), verts + lines + polys, true, polygons, polygonCell);
+    appendCellArray(input->GetPolys(), verts + lines, false, pointCount, polygons, polygonCell);
+    appendCellArray(input->GetStrips(), verts + lines + polys, true, pointCount, polygons, polygonCell);
 
     Triangulation triangulation = triangulatePolygons(polygons);
     this->Rebuild = verts > 0 || lines > 0 || strips > 0 || !triangulation.allTriangles;
@@ -216,6 +233,27 @@ std::vector<std::pair<const void*, vtkMTimeType>> geometryKey(vtkPolyData* input
 }
 } // namespace
 
+bool SurfaceInput::SamePoints(vtkPolyData* input) const
+{
+  // Points edited in place without vtkPoints::Modified() keep their modification time: compare
+  // the coordinates themselves (the mesh keeps every input point, unreferenced ones included).
+  const std::vector<Vector3>& loaded = this->Surface.points();
+  vtkDataArray* points = input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
+  if (!points || points->GetNumberOfTuples() != static_cast<vtkIdType>(loaded.size()))
+  {
+    return loaded.empty() && (!points || points->GetNumberOfTuples() == 0);
+  }
+  static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 holds three packed doubles");
+  if (auto* doubles = vtkDoubleArray::SafeDownCast(points))
+  {
+    return loaded.empty() ||
+      std::memcmp(doubles->GetPointer(0), loaded.data(), loaded.size() * sizeof(Vector3)) == 0;
+  }
+  std::vector<double> coordinates;
+  return CopyToDoubles(points, 3, coordinates) &&
+    (loaded.empty() || std::memcmp(coordinates.data(), loaded.data(), loaded.size() * sizeof(Vector3)) == 0);
+}
+
 bool SurfaceInput::LoadIfChanged(
   vtkPolyData* input, const MeshRequirements& requirements, std::string& error, bool& reused)
 {
@@ -225,7 +263,7 @@ bool SurfaceInput::LoadIfChanged(
     return false;
   }
   const std::vector<std::pair<const void*, vtkMTimeType>> key = geometryKey(input);
-  reused = this->Loaded && key == this->LoadedGeometry;
+  reused = this->Loaded && key == this->LoadedGeometry && this->SamePoints(input);
   if (reused)
   {
     return true;

@@ -74,8 +74,11 @@ private:
   std::vector<int> Representatives;
   int Welded = 0;
   bool Rebuild = false;
+  /// Whether the input's coordinates are, bit for bit, those of the loaded mesh.
+  bool SamePoints(vtkPolyData* input) const;
+
   // The geometry LoadIfChanged loaded last: objects and modification times of the point array and
-  // the four cell arrays.
+  // the four cell arrays (the coordinates are compared as well).
   std::vector<std::pair<const void*, vtkMTimeType>> LoadedGeometry;
   bool Loaded = false;
 };

@@ -22,7 +22,9 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 vtkStandardNewMacro(vtkHarmonicField);
@@ -120,6 +122,11 @@ int vtkHarmonicField::RequestData(
       return 0;
     }
   }
+  if (std::string(this->GradientArrayName) == this->GradientMagnitudeArrayName)
+  {
+    vtkErrorMacro("The gradient and its magnitude need different names (both are cell arrays).");
+    return 0;
+  }
 
   kerf::MeshRequirements requirements;
   requirements.manifold = true;
@@ -181,6 +188,13 @@ int vtkHarmonicField::RequestData(
                                                                              << "' (HardValueArrayName).");
       return 0;
     }
+    if (hard->GetNumberOfTuples() != input->GetNumberOfPoints())
+    {
+      vtkErrorMacro("The hard-value array '" << this->HardValueArrayName << "' has "
+                                            << hard->GetNumberOfTuples() << " values for "
+                                            << input->GetNumberOfPoints() << " points.");
+      return 0;
+    }
     std::vector<double> values(static_cast<std::size_t>(hard->GetNumberOfTuples()));
     for (vtkIdType i = 0; i < hard->GetNumberOfTuples(); ++i)
     {
@@ -208,7 +222,21 @@ int vtkHarmonicField::RequestData(
         << "' (ConstraintValueArrayName).");
       return 0;
     }
-    const double limit = this->MaximumProjectionDistance * mesh.boundingBoxDiagonal();
+    if (values->GetNumberOfTuples() != constraintPoints->GetNumberOfPoints())
+    {
+      vtkErrorMacro("The constraint-value array '" << this->ConstraintValueArrayName << "' has "
+                                                  << values->GetNumberOfTuples() << " values for "
+                                                  << constraintPoints->GetNumberOfPoints() << " points.");
+      return 0;
+    }
+    if (!std::isfinite(this->MaximumProjectionDistance))
+    {
+      vtkErrorMacro("MaximumProjectionDistance must be a number (0 for no limit).");
+      return 0;
+    }
+    const double limit = this->MaximumProjectionDistance > 0.0
+      ? this->MaximumProjectionDistance * mesh.boundingBoxDiagonal()
+      : std::numeric_limits<double>::infinity();
     for (vtkIdType i = 0; i < constraintPoints->GetNumberOfPoints(); ++i)
     {
       kerf::Vector3 p;
@@ -259,6 +287,15 @@ int vtkHarmonicField::RequestData(
   for (std::size_t f = 0; f < gradients.size(); ++f)
   {
     magnitudes[f] = gradients[f].norm();
+  }
+  const auto finite = [](const std::vector<double>& values) {
+    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+  };
+  if (!finite(solution.field) || !finite(magnitudes) || !std::isfinite(solution.relativeResidual))
+  {
+    vtkErrorMacro("Cannot compute the harmonic field: the field or its gradient overflows (hard or "
+                  "constraint values too large for double precision).");
+    return 0;
   }
   state.surface.ExpandToInputPoints(solution.field);
 

@@ -100,7 +100,7 @@ public:
 
   ///@{
   /// Constraint points farther from the surface than this fraction of its bounding-box diagonal
-  /// are refused. Default 0.02.
+  /// are refused; 0 means no limit. Default 0.02.
   vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
   vtkGetMacro(MaximumProjectionDistance, double);
   ///@}

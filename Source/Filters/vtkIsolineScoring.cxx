@@ -4,6 +4,7 @@
 #include "Harmonic/HarmonicField.h"
 #include "Harmonic/Isolines.h"
 #include "KerfSurfaceInput.h"
+#include "Mesh/MeshValidation.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -23,6 +24,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 vtkStandardNewMacro(vtkIsolineScoring);
 
@@ -108,19 +110,51 @@ int vtkIsolineScoring::RequestData(
     return 0;
   }
   std::vector<double> field(static_cast<std::size_t>(mesh.vertexCount()));
+  double lowest = std::numeric_limits<double>::infinity();
+  double highest = -lowest;
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
     field[v] = array->GetComponent(v, 0);
-    if (!std::isfinite(field[v]) && !mesh.vertexFaces(v).empty())
+    if (mesh.vertexFaces(v).empty())
+    {
+      continue;
+    }
+    if (!std::isfinite(field[v]))
     {
       vtkErrorMacro("The field has a NaN or infinite value at point " << v << ".");
       return 0;
     }
+    lowest = std::min(lowest, field[v]);
+    highest = std::max(highest, field[v]);
+  }
+  if (!std::isfinite(highest - lowest))
+  {
+    vtkErrorMacro("The field's range [" << lowest << ", " << highest
+                                        << "] overflows double precision; rescale the field.");
+    return 0;
+  }
+  if (this->Mode != BEST_SCORE && !std::isfinite(this->IsoValue))
+  {
+    vtkErrorMacro("IsoValue must be finite.");
+    return 0;
   }
   if (this->Mode == NEAR_STROKE && (!stroke || stroke->GetNumberOfPoints() == 0))
   {
     vtkErrorMacro("NEAR_STROKE needs a stroke on input 1.");
     return 0;
+  }
+  if (this->Mode == NEAR_STROKE)
+  {
+    for (vtkIdType i = 0; i < stroke->GetNumberOfPoints(); ++i)
+    {
+      kerf::Vector3 p;
+      stroke->GetPoint(i, p.data());
+      if (!p.allFinite() || p.cwiseAbs().maxCoeff() > kerf::CoordinateLimit)
+      {
+        vtkErrorMacro("Stroke point " << i << " has a NaN, infinite or huge coordinate.");
+        return 0;
+      }
+    }
   }
 
   // Gradient magnitudes: every face's to score candidates, else only those the cut crosses.

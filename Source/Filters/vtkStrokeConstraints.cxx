@@ -20,6 +20,8 @@
 #include <vtkSignedCharArray.h>
 #include <vtkSmartPointer.h>
 
+#include <cmath>
+
 vtkStandardNewMacro(vtkStrokeConstraints);
 
 struct vtkStrokeConstraints::Internals
@@ -88,6 +90,19 @@ int vtkStrokeConstraints::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   Internals& state = *this->State;
 
+  if (!std::isfinite(this->IsoValue) || !(this->IsoValue + 1.0 > this->IsoValue) ||
+    !(this->IsoValue - 1.0 < this->IsoValue))
+  {
+    vtkErrorMacro("IsoValue " << this->IsoValue
+                              << " must be finite, and small enough that IsoValue +- 1 differ from it.");
+    return 0;
+  }
+  if (!std::isfinite(this->MaximumProjectionDistance))
+  {
+    vtkErrorMacro("MaximumProjectionDistance must be a number (0 for no limit).");
+    return 0;
+  }
+
   kerf::MeshRequirements requirements;
   bool reused = false;
   std::string error;
@@ -107,6 +122,7 @@ int vtkStrokeConstraints::RequestData(
   if (strokeInput)
   {
     auto lines = vtk::TakeSmartPointer(strokeInput->GetLines()->NewIterator());
+    const vtkIdType pointCount = strokeInput->GetNumberOfPoints();
     for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell())
     {
       vtkIdType size;
@@ -115,6 +131,12 @@ int vtkStrokeConstraints::RequestData(
       std::vector<kerf::Vector3> stroke(static_cast<std::size_t>(size));
       for (vtkIdType k = 0; k < size; ++k)
       {
+        if (ids[k] < 0 || ids[k] >= pointCount)
+        {
+          vtkErrorMacro("Stroke line " << lines->GetCurrentCellId() << " uses point " << ids[k]
+                                       << ", but the stroke input has " << pointCount << " points.");
+          return 0;
+        }
         strokeInput->GetPoint(ids[k], stroke[static_cast<std::size_t>(k)].data());
       }
       strokes.push_back(std::move(stroke));

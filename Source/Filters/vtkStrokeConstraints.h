@@ -50,14 +50,15 @@ public:
   ///@}
 
   ///@{
-  /// The iso-value I of the cut: constraints are I + 1 and I - 1. Default 0.
+  /// The iso-value I of the cut: constraints are I + 1 and I - 1. Default 0. Must be finite and
+  /// small enough that I +- 1 differ from I.
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
   ///@}
 
   ///@{
   /// Stroke points farther from the surface than this fraction of its bounding-box diagonal are
-  /// refused. Default 0.05.
+  /// refused; 0 means no limit. Default 0.05.
   vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
   vtkGetMacro(MaximumProjectionDistance, double);
   ///@}

@@ -7,7 +7,9 @@
 
 #include "IO/PLYValidation.h"
 
+#include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
 #include <vtkExecutive.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -152,6 +154,26 @@ int vtkMeshFileReader::RequestData(
   {
     vtkErrorMacro("The file " << this->FileName << " holds no points.");
     return 0;
+  }
+  // Some VTK readers pass face indices through unchecked (a PLY or OBJ face naming a point the
+  // file does not have); such cells would crash whatever reads them next.
+  vtkCellArray* cellArrays[] = { result->GetVerts(), result->GetLines(), result->GetPolys(),
+    result->GetStrips() };
+  for (vtkCellArray* cells : cellArrays)
+  {
+    vtkDataArray* ids = cells ? cells->GetConnectivityArray() : nullptr;
+    if (ids && ids->GetNumberOfTuples() > 0)
+    {
+      double range[2];
+      ids->GetRange(range, 0);
+      if (range[0] < 0 || range[1] >= static_cast<double>(result->GetNumberOfPoints()))
+      {
+        vtkErrorMacro("Cannot read " << this->FileName << ": a cell uses point "
+                                     << (range[0] < 0 ? range[0] : range[1]) << ", but the file has "
+                                     << result->GetNumberOfPoints() << " points.");
+        return 0;
+      }
+    }
   }
   output->ShallowCopy(result);
   return 1;

@@ -737,6 +737,165 @@ TEST(HarmonicField, MixedHardAndSoftCaching)
 // ---------------------------------------------------------------------------------------------
 // Errors.
 
+namespace
+{
+// `count` soft constraints at pseudo-random points of pseudo-random faces.
+std::vector<SoftConstraint> scatteredConstraints(const TriangleMesh& mesh, int count, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_int_distribution<int> face(0, mesh.faceCount() - 1);
+  std::uniform_real_distribution<double> unit(0.05, 1.0), value(-1.0, 1.0);
+  std::vector<SoftConstraint> soft;
+  for (int i = 0; i < count; ++i)
+  {
+    Vector3 b(unit(random), unit(random), unit(random));
+    soft.push_back({ face(random), b / b.sum(), value(random) });
+  }
+  return soft;
+}
+
+// The least-squares field by dense normal equations over every non-hard vertex (seamcut.txt
+// Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F = -L_F^T L_D f_D + w^2 C_F^T (c - C_D f_D), L_F the
+// Laplacian rows of the non-hard vertices.
+std::vector<double> denseLeastSquares(const TriangleMesh& mesh, const std::vector<double>& weights,
+  const FieldConstraints& c)
+{
+  const int n = mesh.vertexCount();
+  Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const int i = mesh.edgeVertices(e)[0], j = mesh.edgeVertices(e)[1];
+    L(i, j) -= weights[e];
+    L(j, i) -= weights[e];
+    L(i, i) += weights[e];
+    L(j, j) += weights[e];
+  }
+  std::vector<double> hard(n, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t i = 0; i < c.dirichletVertices.size(); ++i)
+  {
+    hard[c.dirichletVertices[i]] = c.dirichletValues[i];
+  }
+  std::vector<int> freeIndex(n, -1), freeVertices;
+  for (int v = 0; v < n; ++v)
+  {
+    if (std::isnan(hard[v]))
+    {
+      freeIndex[v] = static_cast<int>(freeVertices.size());
+      freeVertices.push_back(v);
+    }
+  }
+  const int m = static_cast<int>(freeVertices.size());
+  Eigen::MatrixXd LF(m, m);
+  Eigen::VectorXd known = Eigen::VectorXd::Zero(m);
+  for (int r = 0; r < m; ++r)
+  {
+    for (int v = 0; v < n; ++v)
+    {
+      if (freeIndex[v] >= 0)
+      {
+        LF(r, freeIndex[v]) = L(freeVertices[r], v);
+      }
+      else
+      {
+        known[r] += L(freeVertices[r], v) * hard[v];
+      }
+    }
+  }
+  Eigen::MatrixXd M = LF.transpose() * LF;
+  Eigen::VectorXd b = -LF.transpose() * known;
+  const double w2 = c.softWeight * c.softWeight;
+  const int k = static_cast<int>(c.soft.size());
+  Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, k); // C_F^T
+  Eigen::VectorXd target(k);
+  for (int i = 0; i < k; ++i)
+  {
+    target[i] = c.soft[i].value;
+    for (int j = 0; j < 3; ++j)
+    {
+      const int v = mesh.triangle(c.soft[i].face)[j];
+      if (freeIndex[v] >= 0)
+      {
+        C(freeIndex[v], i) += c.soft[i].barycentric[j];
+      }
+      else
+      {
+        target[i] -= c.soft[i].barycentric[j] * hard[v];
+      }
+    }
+  }
+  M += w2 * C * C.transpose();
+  b += w2 * C * target;
+  const Eigen::VectorXd f = M.ldlt().solve(b);
+  std::vector<double> field(n);
+  for (int v = 0; v < n; ++v)
+  {
+    field[v] = freeIndex[v] >= 0 ? f[freeIndex[v]] : hard[v];
+  }
+  return field;
+}
+
+double largestDifference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double worst = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+  {
+    worst = std::max(worst, std::abs(a[i] - b[i]));
+  }
+  return worst;
+}
+} // namespace
+
+// Few constraints go through the Woodbury identity, many through the factor of the whole
+// system: both give the dense least-squares solution, with and without hard values, on two
+// components (one of them without hard values, so with an offset unknown).
+TEST(HarmonicField, FewAndManySoftConstraintsMatchDenseLeastSquares)
+{
+  const TriangleMesh mesh = twoSpheres(2); // 2 x 162 vertices
+  const std::vector<double> weights = cotangentWeights(mesh);
+  for (const bool withHard : { false, true })
+  {
+    for (const int count : { 12, 400 }) // 400 constraints exceed half the unknowns
+    {
+      SCOPED_TRACE(std::string(withHard ? "hard and " : "") + std::to_string(count) + " soft");
+      FieldConstraints c;
+      c.softWeight = 0.7;
+      c.soft = scatteredConstraints(mesh, count, 7u + static_cast<unsigned>(count));
+      if (withHard)
+      {
+        c.dirichletVertices = { 0, 5 };
+        c.dirichletValues = { 2.0, -1.5 };
+      }
+      const std::vector<double> reference = denseLeastSquares(mesh, weights, c);
+      HarmonicFieldSolver solver;
+      const HarmonicFieldSolution solution = solver.solve(mesh, weights, c);
+      EXPECT_LE(largestDifference(solution.field, reference), 1e-8);
+      EXPECT_LE(solution.relativeResidual, 1e-9);
+      // New values only: a back-substitution, still the reference.
+      for (SoftConstraint& k : c.soft)
+      {
+        k.value = 0.5 - k.value;
+      }
+      const HarmonicFieldSolution again = solver.solve(mesh, weights, c);
+      EXPECT_EQ(again.work, HarmonicFieldSolution::Work::BackSubstitution);
+      EXPECT_LE(largestDifference(again.field, denseLeastSquares(mesh, weights, c)), 1e-8);
+    }
+  }
+}
+
+// Thousands of constraints (a long, densely sampled stroke) take a sparse factorization, not a
+// dense k x k one: 6000 constraints on 642 vertices solve like the reference.
+TEST(HarmonicField, ThousandsOfSoftConstraints)
+{
+  const TriangleMesh mesh = makeIcosphere(1.0, 3);
+  const std::vector<double> weights = cotangentWeights(mesh);
+  FieldConstraints c;
+  c.soft = scatteredConstraints(mesh, 6000, 11u);
+  HarmonicFieldSolver solver;
+  const HarmonicFieldSolution solution = solver.solve(mesh, weights, c);
+  EXPECT_EQ(solution.work, HarmonicFieldSolution::Work::Factorization);
+  EXPECT_LE(largestDifference(solution.field, denseLeastSquares(mesh, weights, c)), 1e-8);
+}
+
 TEST(HarmonicField, RefusesMissingConstraints)
 {
   const TriangleMesh grid = makeGrid(1.0, 1.0, 4, 4);

@@ -103,9 +103,13 @@ struct HarmonicFieldSolver::Cache
   std::vector<SoftConstraint> softLocations; // values ignored
   double softWeight = 0.0;
   bool prepared = false;
+  bool direct = false;           // the prepared form: Woodbury (false) or the direct factor
   Eigen::SparseMatrix<double> u; // w C_F^T
   SparseCholesky::LowRank lowRank;
-  Eigen::LDLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U
+  Eigen::LLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U
+  // Many constraints: [B + U U^T, w U E; w E^T U^T, w^2 E^T E] over the free values and the
+  // offsets, factored as a whole.
+  SparseCholesky directCholesky;
 };
 
 HarmonicFieldSolver::HarmonicFieldSolver()
@@ -305,8 +309,12 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   const int k = static_cast<int>(constraints.soft.size());
   if (softMode)
   {
+    // Many constraints make the dense k x k capacitance matrix cost more than factoring the
+    // whole system: past DirectConstraintCount constraints, or more than half the unknowns, the
+    // constraint term is added to B and factored with it.
+    const bool direct = columns > 0 && (k > DirectConstraintCount || 2 * k > columns);
     // New constraint locations: A^-1 U and the capacitance matrix I + U^T A^-1 U.
-    if (!cache.prepared || !sameSoftLocations(cache.softLocations, constraints.soft) ||
+    if (!cache.prepared || cache.direct != direct || !sameSoftLocations(cache.softLocations, constraints.soft) ||
       cache.softWeight != constraints.softWeight)
     {
       // Built aside and kept only once all of it exists, so a failure leaves no half update.
@@ -327,17 +335,77 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
       Eigen::SparseMatrix<double> u(columns, k);
       u.setFromTriplets(entries.begin(), entries.end());
       u.makeCompressed();
-      SparseCholesky::LowRank lowRank = columns > 0 ? cache.cholesky.prepare(u) : SparseCholesky::LowRank{};
-      Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
-      if (columns > 0)
+      SparseCholesky::LowRank lowRank;
+      Eigen::LLT<Eigen::MatrixXd> factored;
+      if (direct)
       {
-        capacitance += lowRank.gram;
+        // The offsets' coupling w U E: column c sums the constraint columns of component c.
+        std::vector<Eigen::Triplet<double>> byComponent;
+        std::vector<double> counts(cache.offsets, 0.0);
+        for (int i = 0; i < k; ++i)
+        {
+          const int c = cache.offsetIndex[mesh.faceComponent(constraints.soft[i].face)];
+          if (c >= 0)
+          {
+            byComponent.emplace_back(i, c, constraints.softWeight);
+            counts[c] += 1.0;
+          }
+        }
+        Eigen::SparseMatrix<double> wE(k, cache.offsets);
+        wE.setFromTriplets(byComponent.begin(), byComponent.end());
+        const Eigen::SparseMatrix<double> coupling = u * wE;
+        const Eigen::SparseMatrix<double> corner = Eigen::SparseMatrix<double>(cache.base + u * u.transpose());
+        std::vector<Eigen::Triplet<double>> whole;
+        whole.reserve(static_cast<std::size_t>(corner.nonZeros() + 2 * coupling.nonZeros() + cache.offsets));
+        for (int c = 0; c < corner.outerSize(); ++c)
+        {
+          for (Eigen::SparseMatrix<double>::InnerIterator it(corner, c); it; ++it)
+          {
+            whole.emplace_back(static_cast<int>(it.row()), c, it.value());
+          }
+        }
+        for (int c = 0; c < coupling.outerSize(); ++c)
+        {
+          for (Eigen::SparseMatrix<double>::InnerIterator it(coupling, c); it; ++it)
+          {
+            whole.emplace_back(static_cast<int>(it.row()), columns + c, it.value());
+            whole.emplace_back(columns + c, static_cast<int>(it.row()), it.value());
+          }
+        }
+        for (int c = 0; c < cache.offsets; ++c)
+        {
+          whole.emplace_back(columns + c, columns + c, constraints.softWeight * constraints.softWeight * counts[c]);
+        }
+        Eigen::SparseMatrix<double> system(columns + cache.offsets, columns + cache.offsets);
+        system.setFromTriplets(whole.begin(), whole.end());
+        system.makeCompressed();
+        if (!cache.directCholesky.factor(system))
+        {
+          throw Error("the system with the constraints could not be factored");
+        }
       }
-      Eigen::LDLT<Eigen::MatrixXd> factored(capacitance);
+      else
+      {
+        if (columns > 0)
+        {
+          lowRank = cache.cholesky.prepare(u);
+        }
+        Eigen::MatrixXd capacitance = Eigen::MatrixXd::Identity(k, k);
+        if (columns > 0)
+        {
+          capacitance += lowRank.gram;
+        }
+        factored.compute(capacitance);
+        if (factored.info() != Eigen::Success)
+        {
+          throw Error("the constraints' capacitance matrix could not be factored");
+        }
+      }
       std::vector<SoftConstraint> locations = constraints.soft;
       cache.u = std::move(u);
       cache.lowRank = std::move(lowRank);
       cache.capacitance = std::move(factored);
+      cache.direct = direct;
       cache.softLocations = std::move(locations);
       cache.softWeight = constraints.softWeight;
       cache.prepared = true;
@@ -369,26 +437,42 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
         E(i, c) = 1.0;
       }
     }
-    if (columns > 0)
+    if (direct)
     {
-      q -= cache.u.transpose() * x;
+      // The normal equations of ||R x - r||^2 + ||U^T x + w E alpha - q||^2, as a whole.
+      Eigen::VectorXd rhs(columns + cache.offsets);
+      rhs.head(columns) = hardRhs + cache.u * q;
+      rhs.tail(cache.offsets) = constraints.softWeight * (E.transpose() * q);
+      const Eigen::VectorXd whole = cache.directCholesky.solve(rhs);
+      x = whole.head(columns);
+      for (int c = 0; c < cache.offsets; ++c)
+      {
+        offset[c] = whole[columns + c];
+      }
     }
-    // Offsets of the pinned components: alpha = (w E^T K E)^-1 E^T K q, K = (I + W)^-1.
-    Eigen::VectorXd alpha = Eigen::VectorXd::Zero(cache.offsets);
-    if (cache.offsets > 0)
+    else
     {
-      const Eigen::MatrixXd KE = cache.capacitance.solve(E);
-      alpha = (constraints.softWeight * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
-    }
-    // The free values: x = x_D + A^-1 U s with s = K (q - w E alpha).
-    const Eigen::VectorXd shift = cache.capacitance.solve(q - constraints.softWeight * (E * alpha));
-    if (columns > 0)
-    {
-      x += cache.cholesky.apply(cache.lowRank, shift);
-    }
-    for (int c = 0; c < cache.offsets; ++c)
-    {
-      offset[c] = alpha[c];
+      if (columns > 0)
+      {
+        q -= cache.u.transpose() * x;
+      }
+      // Offsets of the pinned components: alpha = (w E^T K E)^-1 E^T K q, K = (I + W)^-1.
+      Eigen::VectorXd alpha = Eigen::VectorXd::Zero(cache.offsets);
+      if (cache.offsets > 0)
+      {
+        const Eigen::MatrixXd KE = cache.capacitance.solve(E);
+        alpha = (constraints.softWeight * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
+      }
+      // The free values: x = x_D + A^-1 U s with s = K (q - w E alpha).
+      const Eigen::VectorXd shift = cache.capacitance.solve(q - constraints.softWeight * (E * alpha));
+      if (columns > 0)
+      {
+        x += cache.cholesky.apply(cache.lowRank, shift);
+      }
+      for (int c = 0; c < cache.offsets; ++c)
+      {
+        offset[c] = alpha[c];
+      }
     }
   }
   if (!x.allFinite())

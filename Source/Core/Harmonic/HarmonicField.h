@@ -77,6 +77,11 @@ public:
   /// Forgets the cached factorization.
   void reset();
 
+  /// Past this many soft constraints (or more than half the unknowns), the constraint term is
+  /// factored together with the Laplacian term instead of through the Woodbury identity, whose
+  /// dense k x k capacitance matrix grows as k^3.
+  static constexpr int DirectConstraintCount = 1024;
+
 private:
   struct Cache;
   std::unique_ptr<Cache> State;

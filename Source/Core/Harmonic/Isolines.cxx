@@ -265,7 +265,7 @@ int nearestIsoline(const std::vector<Isoline>& isolines, const std::vector<Vecto
       sum += nearest;
     }
     const double mean = points.empty() ? 0.0 : sum / static_cast<double>(points.size());
-    if (mean < bestDistance)
+    if (best < 0 || mean < bestDistance)
     {
       bestDistance = mean;
       best = static_cast<int>(c);

@@ -109,6 +109,11 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
   for (const Vector3& p : mesh.points())
   {
     report.nonFinitePoints += p.allFinite() ? 0 : 1;
+    report.hugePoints += p.allFinite() && p.cwiseAbs().maxCoeff() > CoordinateLimit ? 1 : 0;
+  }
+  if (report.nonFinitePoints == 0 && report.hugePoints == 0)
+  {
+    report.diagonal = mesh.boundingBoxDiagonal();
   }
 
   for (int f = 0; f < mesh.faceCount(); ++f)
@@ -201,6 +206,8 @@ std::string MeshReport::summary() const
   std::ostringstream defects;
   add(defects, nonFinitePoints, "point with NaN or infinite coordinates",
     "points with NaN or infinite coordinates", "");
+  add(defects, hugePoints, "point with a coordinate beyond +-1e50",
+    "points with coordinates beyond +-1e50", "");
   add(defects, repeatedVertexFaces, "triangle repeating a vertex", "triangles repeating a vertex", "");
   add(defects, zeroAreaFaces, "zero-area triangle", "zero-area triangles", "");
   add(defects, duplicateFaces, "duplicate triangle", "duplicate triangles", "");
@@ -224,6 +231,17 @@ std::string describeProblems(const MeshReport& report, const MeshRequirements& r
   }
   add(out, report.nonFinitePoints, "point has NaN or infinite coordinates",
     "points have NaN or infinite coordinates", "");
+  add(out, report.hugePoints, "point has a coordinate beyond +-1e50",
+    "points have coordinates beyond +-1e50", "rescale the mesh");
+  if (report.nonFinitePoints == 0 && report.hugePoints == 0 && report.diagonal < 1.0 / CoordinateLimit)
+  {
+    if (out.tellp() > 0)
+    {
+      out << "; ";
+    }
+    out << "the mesh's bounding-box diagonal " << report.diagonal
+        << " is below 1e-50 (rescale the mesh)";
+  }
   add(out, report.repeatedVertexFaces, "triangle uses the same point twice",
     "triangles use the same point twice", "topologically degenerate");
   if (!requirements.allowZeroAreaFaces)

@@ -15,6 +15,8 @@ struct MeshReport
   int faces = 0;
   int edges = 0;
   int nonFinitePoints = 0;       ///< points with a NaN or infinite coordinate (used or not)
+  int hugePoints = 0;            ///< finite points with a coordinate beyond +-CoordinateLimit
+  double diagonal = 0.0;         ///< bounding-box diagonal of the points used by triangles
   int repeatedVertexFaces = 0;   ///< triangles that use one vertex twice
   int zeroAreaFaces = 0;         ///< triangles with (numerically) zero area
   int duplicateFaces = 0;        ///< triangles with the same three vertices as an earlier one
@@ -35,7 +37,7 @@ struct MeshReport
 MeshReport inspectMesh(const TriangleMesh& mesh);
 
 /// What a filter accepts beyond what every filter requires (at least one triangle, finite
-/// coordinates, no triangle repeating a vertex).
+/// coordinates within CoordinateLimit, no triangle repeating a vertex).
 struct MeshRequirements
 {
   bool manifold = true;             ///< refuse non-manifold edges and vertices
@@ -49,6 +51,11 @@ struct MeshRequirements
 /// An empty string when the report meets the requirements, otherwise a sentence naming every
 /// problem, for example "the mesh has 3 non-manifold edges (shared by three or more triangles)".
 std::string describeProblems(const MeshReport& report, const MeshRequirements& requirements);
+
+/// Coordinates are refused beyond +-CoordinateLimit, and meshes whose bounding-box diagonal is
+/// below 1 / CoordinateLimit: squared lengths, areas and their products stay far from overflow
+/// and underflow (rescale such a mesh first).
+constexpr double CoordinateLimit = 1e50;
 
 /// Relative threshold below which a triangle counts as zero-area: twice its area is at most this
 /// times the square of its longest edge.
