@@ -243,15 +243,19 @@ bool SurfaceInput::SamePoints(vtkPolyData* input) const
   {
     return loaded.empty() && (!points || points->GetNumberOfTuples() == 0);
   }
-  static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 holds three packed doubles");
-  if (auto* doubles = vtkDoubleArray::SafeDownCast(points))
+  if (loaded.empty())
   {
-    return loaded.empty() ||
-      std::memcmp(doubles->GetPointer(0), loaded.data(), loaded.size() * sizeof(Vector3)) == 0;
+    return true;
   }
-  std::vector<double> coordinates;
-  return CopyToDoubles(points, 3, coordinates) &&
-    (loaded.empty() || std::memcmp(coordinates.data(), loaded.data(), loaded.size() * sizeof(Vector3)) == 0);
+  static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 holds three packed doubles");
+  std::vector<double> converted;
+  auto* doubles = vtkDoubleArray::SafeDownCast(points);
+  if (!doubles && !CopyToDoubles(points, 3, converted))
+  {
+    return false;
+  }
+  const double* coordinates = doubles ? doubles->GetPointer(0) : converted.data();
+  return std::memcmp(coordinates, loaded.data(), loaded.size() * sizeof(Vector3)) == 0;
 }
 
 bool SurfaceInput::LoadIfChanged(

@@ -511,18 +511,17 @@ void coreScoreIsovalues(benchmark::State& state, HarmonicScene& scene)
   }
 }
 
-void harmonicCutNewStroke(benchmark::State& state, HarmonicScene& scene)
+// Times cuts that alternate `stroke` between its two point sets; each must cost a low-rank
+// update of the cached factorization (`what` names the stroke in the failure message).
+void alternateStrokes(benchmark::State& state, CutPipeline& pipeline, vtkPolyData* stroke,
+  const std::array<vtkSmartPointer<vtkPoints>, 2>& points, const char* what)
 {
-  CutPipeline& pipeline = pipelineOf(scene);
-  pipeline.ConnectCut(0.0);
-  pipeline.stroke->SetPoints(pipeline.strokePoints[1]);
-  pipeline.cut->Update(); // the first time: mesh conversion and factorization
   bool updatedEveryTime = true;
   std::string work;
   std::size_t which = 0;
   for (auto _ : state)
   {
-    pipeline.stroke->SetPoints(pipeline.strokePoints[which]);
+    stroke->SetPoints(points[which]);
     pipeline.cut->Update();
     work = pipeline.SolverWork();
     updatedEveryTime = updatedEveryTime && work == "update";
@@ -531,12 +530,21 @@ void harmonicCutNewStroke(benchmark::State& state, HarmonicScene& scene)
   const std::string problem = pipeline.CheckCut();
   if (!updatedEveryTime)
   {
-    Fail(state, "SolverWork was \"" + work + "\", not \"update\", for a new stroke");
+    Fail(state, "SolverWork was \"" + work + "\", not \"update\", for " + what);
   }
   else if (!problem.empty())
   {
     Fail(state, problem);
   }
+}
+
+void harmonicCutNewStroke(benchmark::State& state, HarmonicScene& scene)
+{
+  CutPipeline& pipeline = pipelineOf(scene);
+  pipeline.ConnectCut(0.0);
+  pipeline.stroke->SetPoints(pipeline.strokePoints[1]);
+  pipeline.cut->Update(); // the first time: mesh conversion and factorization
+  alternateStrokes(state, pipeline, pipeline.stroke, pipeline.strokePoints, "a new stroke");
 }
 
 void harmonicCutSliding(benchmark::State& state, HarmonicScene& scene)
@@ -572,26 +580,7 @@ void harmonicCutRefinement(benchmark::State& state, HarmonicScene& scene)
   pipeline.stroke->SetPoints(pipeline.strokePoints[0]);
   pipeline.refinementStroke->SetPoints(pipeline.refinementPoints[1]);
   pipeline.cut->Update();
-  bool updatedEveryTime = true;
-  std::string work;
-  std::size_t which = 0;
-  for (auto _ : state)
-  {
-    pipeline.refinementStroke->SetPoints(pipeline.refinementPoints[which]);
-    pipeline.cut->Update();
-    work = pipeline.SolverWork();
-    updatedEveryTime = updatedEveryTime && work == "update";
-    which = 1 - which;
-  }
-  const std::string problem = pipeline.CheckCut();
-  if (!updatedEveryTime)
-  {
-    Fail(state, "SolverWork was \"" + work + "\", not \"update\", for a refinement stroke");
-  }
-  else if (!problem.empty())
-  {
-    Fail(state, problem);
-  }
+  alternateStrokes(state, pipeline, pipeline.refinementStroke, pipeline.refinementPoints, "a refinement stroke");
 }
 
 using Function = void (*)(benchmark::State&, HarmonicScene&);
