@@ -2,7 +2,7 @@
 #include "KerfSurfaceInput.h"
 
 #include "Error.h"
-#include "IO/MeshFormats.h"
+#include "Mesh/PolygonMesh.h"
 #include "Mesh/PointWelding.h"
 #include "Mesh/Triangulation.h"
 

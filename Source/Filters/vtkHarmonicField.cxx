@@ -4,7 +4,8 @@
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/LaplacianWeights.h"
 #include "KerfSurfaceInput.h"
 

@@ -1,7 +1,8 @@
 // vtkIsolineScoring: keeps the surface between runs, extracts, scores and labels the cut.
 #include "vtkIsolineScoring.h"
 
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/MeshValidation.h"

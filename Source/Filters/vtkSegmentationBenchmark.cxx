@@ -7,7 +7,7 @@
 #include "Evaluation/SimulatedStrokes.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"

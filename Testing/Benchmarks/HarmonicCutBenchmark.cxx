@@ -39,7 +39,8 @@
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"

@@ -1,6 +1,7 @@
 // The best-scored isoline of a harmonic field lies in the neck of a two-lobe shape.
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"

@@ -1,7 +1,8 @@
 // Isolines of piecewise-linear fields: extraction on analytic fields, ROI Scissor scores and cut sides.
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"

@@ -102,7 +102,7 @@ std::vector<std::array<double, 3>> computeCornerAreas(const TriangleMesh& mesh)
     const double l2[3] = { e[0].squaredNorm(), e[1].squaredNorm(), e[2].squaredNorm() };
     const double longest = std::max({ l2[0], l2[1], l2[2] });
     std::array<double, 3>& c = corner[f];
-    if (2.0 * area <= ZeroAreaTolerance * longest)
+    if (isZeroArea(2.0 * area, longest))
     {
       c = { 0.0, 0.0, 0.0 };
       continue;

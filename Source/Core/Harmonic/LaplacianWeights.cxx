@@ -1,11 +1,14 @@
 // Laplacian edge weights (uniform, cotangent, Au et al. 2011, ROI Scissor) and assembly.
 #include "Harmonic/LaplacianWeights.h"
 
+#include "CacheKey.h"
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 
 namespace kerf
 {
@@ -34,7 +37,7 @@ std::vector<double> cotangentWeights(const TriangleMesh& mesh)
     const Vector3& p1 = mesh.point(t[1]);
     const Vector3& p2 = mesh.point(t[2]);
     const double longest = std::max({ (p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm() });
-    if ((p1 - p0).cross(p2 - p0).norm() <= ZeroAreaTolerance * longest)
+    if (isZeroArea((p1 - p0).cross(p2 - p0).norm(), longest))
     {
       continue;
     }
@@ -193,6 +196,56 @@ std::vector<double> computeLaplacianWeights(
     }
   }
   return weights;
+}
+
+bool needsDescriptors(LaplacianWeighting weighting)
+{
+  return weighting == LaplacianWeighting::ConcavityAware || weighting == LaplacianWeighting::SmoothConcavity;
+}
+
+namespace
+{
+const std::pair<LaplacianWeighting, const char*> WeightingNames[] = {
+  { LaplacianWeighting::Uniform, "uniform" },
+  { LaplacianWeighting::Cotangent, "cotangent" },
+  { LaplacianWeighting::ConcavityAware, "concavity" },
+  { LaplacianWeighting::SmoothConcavity, "smooth-concavity" },
+};
+} // namespace
+
+std::string laplacianWeightingName(LaplacianWeighting weighting)
+{
+  for (const auto& entry : WeightingNames)
+  {
+    if (entry.first == weighting)
+    {
+      return entry.second;
+    }
+  }
+  throw Error("unknown Laplacian weighting");
+}
+
+LaplacianWeighting parseLaplacianWeighting(const std::string& name)
+{
+  for (const auto& entry : WeightingNames)
+  {
+    if (name == entry.second)
+    {
+      return entry.first;
+    }
+  }
+  throw Error("the weighting must be uniform, cotangent, concavity or smooth-concavity, got '" + name + "'");
+}
+
+std::string cacheKey(const LaplacianWeightOptions& options)
+{
+  std::string key = laplacianWeightingName(options.weighting);
+  if (needsDescriptors(options.weighting))
+  {
+    key += " beta=" + cacheKey(options.concaveBeta) + " regularization=" +
+      cacheKey(options.curvatureRegularization) + " quantile=" + cacheKey(options.concavityQuantile);
+  }
+  return key;
 }
 
 double laplacianMeanDiagonal(const TriangleMesh& mesh, const std::vector<double>& edgeWeights)

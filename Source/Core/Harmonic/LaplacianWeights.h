@@ -6,6 +6,7 @@
 
 #include <Eigen/SparseCore>
 
+#include <string>
 #include <vector>
 
 namespace kerf
@@ -40,6 +41,18 @@ struct LaplacianWeightOptions
   /// maximum (the paper); a slightly lower quantile ignores a few noisy vertices.
   double concavityQuantile = 1.0;
 };
+
+/// Whether the weighting needs the surface descriptors (curvature, concavity).
+bool needsDescriptors(LaplacianWeighting weighting);
+
+/// The weighting's name as the command line and the benchmark runner spell it: "uniform",
+/// "cotangent", "concavity", "smooth-concavity".
+std::string laplacianWeightingName(LaplacianWeighting weighting);
+/// The weighting a name spells; throws kerf::Error listing the names for any other text.
+LaplacianWeighting parseLaplacianWeighting(const std::string& name);
+
+/// A key naming the weights these options give (Surface::laplacianWeights caches by it).
+std::string cacheKey(const LaplacianWeightOptions& options);
 
 /// Largest cotangent magnitude used: angles below about 0.006 degrees count as that angle.
 constexpr double CotangentLimit = 1e4;

@@ -2,7 +2,7 @@
 #pragma once
 
 #include "Geometry/ClosestPoint.h"
-#include "Harmonic/HarmonicField.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "Mesh/TriangleMesh.h"
 
 #include <vector>

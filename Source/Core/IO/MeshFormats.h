@@ -1,24 +1,13 @@
 // Parsers and writers for the OFF mesh format and the Princeton benchmark .seg format.
 #pragma once
 
-#include "Mesh/TriangleMesh.h"
+#include "Mesh/PolygonMesh.h"
 
 #include <string>
 #include <vector>
 
 namespace kerf
 {
-
-/// A polygon mesh as read from a file: polygon i uses polygonIndices[polygonOffsets[i] ..
-/// polygonOffsets[i + 1]).
-struct PolygonMesh
-{
-  std::vector<Vector3> points;
-  std::vector<int> polygonOffsets{ 0 };
-  std::vector<int> polygonIndices;
-
-  int polygonCount() const { return static_cast<int>(this->polygonOffsets.size()) - 1; }
-};
 
 /// Parses ASCII OFF (with the optional C/N/ST/4 prefixes of the header ignored beyond their
 /// extra columns; per-vertex and per-face colours are skipped). Comments start with '#'.

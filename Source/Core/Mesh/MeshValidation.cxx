@@ -128,7 +128,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
     const Vector3 b = mesh.point(t[2]) - mesh.point(t[0]);
     const Vector3 c = mesh.point(t[2]) - mesh.point(t[1]);
     const double longest = std::max({ a.squaredNorm(), b.squaredNorm(), c.squaredNorm() });
-    if (a.cross(b).norm() <= ZeroAreaTolerance * longest)
+    if (isZeroArea(a.cross(b).norm(), longest))
     {
       ++report.zeroAreaFaces;
     }

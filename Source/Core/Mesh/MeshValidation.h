@@ -61,4 +61,11 @@ constexpr double CoordinateLimit = 1e50;
 /// times the square of its longest edge.
 constexpr double ZeroAreaTolerance = 1e-12;
 
+/// Whether a triangle whose doubled area is `twiceArea` (the norm of two edges' cross product)
+/// and whose longest edge has squared length `longestSquaredEdge` counts as zero-area.
+inline bool isZeroArea(double twiceArea, double longestSquaredEdge)
+{
+  return twiceArea <= ZeroAreaTolerance * longestSquaredEdge;
+}
+
 } // namespace kerf

@@ -1,8 +1,7 @@
 // Splits polygons into triangles (ear clipping in each polygon's best-fit plane).
 #pragma once
 
-#include "IO/MeshFormats.h"
-#include "Mesh/TriangleMesh.h"
+#include "Mesh/PolygonMesh.h"
 
 #include <vector>
 

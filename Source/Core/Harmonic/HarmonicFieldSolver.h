@@ -1,4 +1,4 @@
-// Harmonic fields on a mesh from hard vertex values and soft constraints at points inside faces.
+// The harmonic-field solver: hard vertex values and soft constraints at points inside faces.
 #pragma once
 
 #include "Harmonic/SparseCholesky.h"
@@ -48,8 +48,8 @@ struct HarmonicFieldSolution
 /// Solves for the field f, reusing its factorization while the mesh, the weights and the
 /// constraint locations stay the same.
 ///
-/// With hard constraints only, f is harmonic: L_FF f_F = -L_FD f_D (roi-scissor.txt Eq. 1),
-/// free boundaries getting the natural (zero-flux) condition. With soft constraints (seamcut.txt
+/// With hard constraints only, f is harmonic: L_FF f_F = -L_FD f_D (ROI Scissor, Eq. 1),
+/// free boundaries getting the natural (zero-flux) condition. With soft constraints (SeamCut,
 /// Eq. 1), f minimises ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2 over the free values, where L_F are
 /// the Laplacian rows of the free vertices and C_i interpolates f at the constraint's point with
 /// its barycentric weights: (L_FF^T L_FF + w^2 C_F^T C_F) f_F = -L_FF^T L_FD f_D +
@@ -83,16 +83,30 @@ public:
   static constexpr int DirectConstraintCount = 1024;
 
 private:
+  struct Problem;
   struct Cache;
+  // The steps of solve(), in order.
+  static Problem checkProblem(
+    const TriangleMesh& mesh, const std::vector<double>& edgeWeights, const FieldConstraints& constraints);
+  /// Factors the Laplacian term when the operator, the hard vertices or the mode changed; true
+  /// if it did.
+  bool factorIfChanged(const TriangleMesh& mesh, const std::vector<double>& edgeWeights, const Problem& problem);
+  /// The hard values' right-hand side; solves for it when the values changed.
+  Eigen::VectorXd solveHardValues(const Problem& problem);
+  /// Prepares the constraint term for new constraint locations; true if it did.
+  bool prepareSoftConstraints(const TriangleMesh& mesh, const FieldConstraints& constraints, bool direct);
+  /// The many-constraint form: the constraint term and the offsets factored with the Laplacian.
+  void factorWithConstraints(
+    const TriangleMesh& mesh, const FieldConstraints& constraints, const Eigen::SparseMatrix<double>& u);
+  /// Adds the soft constraints' correction to the free values x and fills the offsets.
+  void solveSoftConstraints(const TriangleMesh& mesh, const FieldConstraints& constraints,
+    const Problem& problem, const Eigen::VectorXd& hardRhs, Eigen::VectorXd& x, std::vector<double>& offset) const;
+  double relativeResidual(const TriangleMesh& mesh, const FieldConstraints& constraints, const Problem& problem,
+    const Eigen::VectorXd& hardRhs, const Eigen::VectorXd& x, const std::vector<double>& offset) const;
+  std::vector<double> assembleField(const TriangleMesh& mesh, const Problem& problem, const Eigen::VectorXd& x,
+    const std::vector<double>& offset) const;
+
   std::unique_ptr<Cache> State;
 };
-
-/// The constant gradient of the piecewise-linear field on each triangle,
-/// grad f_T = (1 / 2A) sum_j f_j (n x e_j) with e_j the edge opposite corner j
-/// (roi-scissor.txt 4.2). Zero on zero-area triangles.
-std::vector<Vector3> computeFaceGradients(const TriangleMesh& mesh, const std::vector<double>& field);
-
-/// The gradient of the field on one triangle (as computeFaceGradients).
-Vector3 faceGradient(const TriangleMesh& mesh, const std::vector<double>& field, int face);
 
 } // namespace kerf
