@@ -29,7 +29,6 @@
 #include <vtkZLibDataCompressor.h>
 #include <vtksys/SystemTools.hxx>
 
-#include <iomanip>
 #include <limits>
 #include <new>
 #include <sstream>
@@ -140,13 +139,45 @@ vtkSmartPointer<vtkPolyData> readFile(const std::string& extension, const char* 
              : "");
 }
 
-// A sentence naming the first cell array whose offsets or point ids are out of order or range,
-// or "". Cells like these would crash whatever reads them next.
+// A sentence naming the first problem of a cell array's offsets (they start at 0, never decrease
+// and end at the number of point ids) or point ids (each names a point), or "".
+template <typename Offset>
+std::string checkCellArray(const Offset* offsets, vtkIdType offsetCount, const Offset* ids,
+  vtkIdType idCount, vtkIdType points, const char* kind)
+{
+  std::ostringstream out;
+  for (vtkIdType i = 0; i < offsetCount; ++i)
+  {
+    if ((i == 0 && offsets[0] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) || offsets[i] > idCount)
+    {
+      out << kind << " offset " << i << " is " << offsets[i] << ", out of order or past the "
+          << idCount << " point ids";
+      return out.str();
+    }
+  }
+  if (offsetCount > 0 && offsets[offsetCount - 1] != idCount)
+  {
+    out << "the " << kind << " offsets end at " << offsets[offsetCount - 1] << ", not at the "
+        << idCount << " point ids";
+    return out.str();
+  }
+  for (vtkIdType i = 0; i < idCount; ++i)
+  {
+    if (ids[i] < 0 || ids[i] >= points)
+    {
+      out << "a cell uses point " << ids[i] << ", but the file has " << points << " points";
+      return out.str();
+    }
+  }
+  return "";
+}
+
+// The first problem of the mesh's cell arrays, or "". Cells like these would crash whatever
+// reads them next.
 std::string checkCells(vtkPolyData* mesh)
 {
-  const char* names[] = { "vertex", "line", "polygon", "triangle strip" };
+  const char* kinds[] = { "vertex", "line", "polygon", "triangle strip" };
   vtkCellArray* cellArrays[] = { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() };
-  const vtkIdType points = mesh->GetNumberOfPoints();
   for (int k = 0; k < 4; ++k)
   {
     vtkCellArray* cells = cellArrays[k];
@@ -154,41 +185,16 @@ std::string checkCells(vtkPolyData* mesh)
     {
       continue;
     }
-    vtkDataArray* offsets = cells->GetOffsetsArray();
-    vtkDataArray* ids = cells->GetConnectivityArray();
-    const vtkIdType offsetCount = offsets ? offsets->GetNumberOfTuples() : 0;
-    const vtkIdType idCount = ids ? ids->GetNumberOfTuples() : 0;
-    double previous = 0.0;
-    for (vtkIdType i = 0; i < offsetCount; ++i)
+    const std::string problem = cells->IsStorage64Bit()
+      ? checkCellArray(cells->GetOffsetsArray64()->GetPointer(0), cells->GetOffsetsArray64()->GetNumberOfValues(),
+          cells->GetConnectivityArray64()->GetPointer(0), cells->GetConnectivityArray64()->GetNumberOfValues(),
+          mesh->GetNumberOfPoints(), kinds[k])
+      : checkCellArray(cells->GetOffsetsArray32()->GetPointer(0), cells->GetOffsetsArray32()->GetNumberOfValues(),
+          cells->GetConnectivityArray32()->GetPointer(0), cells->GetConnectivityArray32()->GetNumberOfValues(),
+          mesh->GetNumberOfPoints(), kinds[k]);
+    if (!problem.empty())
     {
-      const double offset = offsets->GetComponent(i, 0);
-      if ((i == 0 && offset != 0.0) || offset < previous || offset > static_cast<double>(idCount))
-      {
-        std::ostringstream out;
-        out << std::fixed << std::setprecision(0) << names[k] << " offset " << i << " is " << offset << ", out of order or past the "
-            << idCount << " point ids";
-        return out.str();
-      }
-      previous = offset;
-    }
-    if (offsetCount > 0 && previous != static_cast<double>(idCount))
-    {
-      std::ostringstream out;
-      out << std::fixed << std::setprecision(0) << "the " << names[k] << " offsets end at " << previous << ", not at the " << idCount
-          << " point ids";
-      return out.str();
-    }
-    if (idCount > 0)
-    {
-      double range[2];
-      ids->GetRange(range, 0);
-      if (range[0] < 0 || range[1] >= static_cast<double>(points))
-      {
-        std::ostringstream out;
-        out << std::fixed << std::setprecision(0) << "a cell uses point "
-            << (range[0] < 0 ? range[0] : range[1]) << ", but the file has " << points << " points";
-        return out.str();
-      }
+      return problem;
     }
   }
   return "";

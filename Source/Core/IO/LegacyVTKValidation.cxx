@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace kerf
@@ -379,15 +380,15 @@ private:
       else
       {
         this->requireBytes(values, static_cast<std::uint64_t>(type.size), what);
-        for (std::uint64_t i = 0; i < values; ++i)
+        if (!integers || std::is_same_v<Each, SkipValues>)
         {
-          if (integers)
+          this->Position += static_cast<std::size_t>(values * static_cast<std::uint64_t>(type.size));
+        }
+        else
+        {
+          for (std::uint64_t i = 0; i < values; ++i)
           {
             each(this->binaryValue(type));
-          }
-          else
-          {
-            this->Position += static_cast<std::size_t>(type.size);
           }
         }
       }
@@ -395,9 +396,15 @@ private:
     this->metadata(components);
   }
 
+  // For arrays whose values only need to be there (and parse, in ASCII).
+  struct SkipValues
+  {
+    void operator()(std::int64_t) const {}
+  };
+
   void array(std::string_view typeName, std::uint64_t tuples, std::uint64_t components, const char* what)
   {
-    this->array(typeName, tuples, components, what, [](std::int64_t) {});
+    this->array(typeName, tuples, components, what, SkipValues());
   }
 
   void strings(std::uint64_t values, const char* what)
