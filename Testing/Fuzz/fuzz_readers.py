@@ -2,7 +2,8 @@
 """Runs generated malformed mesh files through the kerf program, one process per run, and checks
 that every run ends in a clean error (exit 1 with "kerf: error: ...") or a valid result (exit 0,
 outputs that parse and hold no NaN): never a signal, a sanitizer report, another exit code or a
-hang. Prints a table per class; exits 1 if any run failed those checks. Standard library only.
+hang, and never a valid result from a file with NaN or infinite coordinates ("wrong": the reader
+turned them into numbers). Prints a table per class; exits 1 if any run failed those checks. Standard library only.
 
     fuzz_readers.py --kerf build/bin/kerf --seed 1 --count 288 [--first 0] [--jobs 2]
 """
@@ -24,8 +25,10 @@ import zlib
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import malformed_meshes  # noqa: E402
 
-OUTCOMES = ["clean error", "valid result", "crash", "hang", "NaN output", "unclear"]
-FAILURES = {"crash", "hang", "NaN output", "unclear"}
+OUTCOMES = ["clean error", "valid result", "crash", "hang", "NaN output", "wrong"]
+FAILURES = {"crash", "hang", "NaN output", "wrong"}
+# Classes whose every file must be refused: a valid result means the reader invented data.
+MUST_FAIL = {"non-finite": "a file with non-finite coordinates gave a valid result"}
 SANITIZER_MARKS = ("AddressSanitizer", "LeakSanitizer", "UndefinedBehaviorSanitizer",
                    "runtime error:", "Sanitizer:DEADLYSIGNAL")
 
@@ -74,21 +77,21 @@ def vtp_float_arrays(path):
 
 
 def check_outputs(paths, stdout):
-    """'valid result', 'NaN output' or 'unclear' for a run that exited with 0."""
+    """'valid result', 'NaN output' or 'wrong' for a run that exited with 0."""
     if "nan" in stdout.lower().replace("nanos", ""):
         return "NaN output", "stdout mentions nan"
     for path in paths:
         if not os.path.exists(path):
-            return "unclear", "exit 0 without " + os.path.basename(path)
+            return "wrong", "exit 0 without " + os.path.basename(path)
         try:
             arrays = vtp_float_arrays(path)
         except (ValueError, ElementTree.ParseError, zlib.error, struct.error) as e:
-            return "unclear", "%s does not parse: %s" % (os.path.basename(path), e)
+            return "wrong", "%s does not parse: %s" % (os.path.basename(path), e)
         for name, values in arrays:
             if any(math.isnan(v) for v in values):
                 return "NaN output", "NaN in %s of %s" % (name, os.path.basename(path))
         if not arrays:
-            return "unclear", "%s has no points" % os.path.basename(path)
+            return "wrong", "%s has no points" % os.path.basename(path)
     return "valid result", ""
 
 
@@ -117,7 +120,7 @@ def classify(code, stdout, stderr, outputs):
         message = [l for l in stderr.splitlines() if l.startswith("kerf: error: ")]
         if message and len(message[0]) > len("kerf: error: ") + 5:
             return "clean error", message[0][len("kerf: error: "):]
-        return "unclear", "exit 1 without an error message: " + stderr.strip()[-200:]
+        return "wrong", "exit 1 without an error message: " + stderr.strip()[-200:]
     if code == 0:
         return check_outputs(outputs, stdout)
     return "crash", "exit code %d: %s" % (code, stderr.strip()[-200:])
@@ -141,6 +144,8 @@ def run_case(case, args, stroke, environment):
     for command_name, command, outputs in commands:
         code, stdout, stderr = run_once(command, args.timeout, environment)
         outcome, detail = classify(code, stdout, stderr, outputs)
+        if outcome == "valid result" and name in MUST_FAIL:
+            outcome, detail = "wrong", MUST_FAIL[name]
         results.append((command_name, outcome, detail))
     if any(outcome in FAILURES for _, outcome, _ in results) and args.keep_failures:
         os.makedirs(args.keep_failures, exist_ok=True)
