@@ -204,26 +204,29 @@ private:
   const char* Last = nullptr;
 };
 
+/// The word of `text` at or after `position` (moved past it), or "" when only blanks remain.
+inline std::string_view nextWord(std::string_view text, std::size_t& position)
+{
+  while (position < text.size() && LineCursor::isSpace(text[position]))
+  {
+    ++position;
+  }
+  const std::size_t start = position;
+  while (position < text.size() && !LineCursor::isSpace(text[position]))
+  {
+    ++position;
+  }
+  return text.substr(start, position - start);
+}
+
 /// The whitespace-separated words of a line.
 inline std::vector<std::string_view> splitWords(std::string_view line)
 {
   std::vector<std::string_view> words;
-  std::size_t i = 0;
-  while (i < line.size())
+  std::size_t position = 0;
+  for (std::string_view w = nextWord(line, position); !w.empty(); w = nextWord(line, position))
   {
-    while (i < line.size() && LineCursor::isSpace(line[i]))
-    {
-      ++i;
-    }
-    const std::size_t start = i;
-    while (i < line.size() && !LineCursor::isSpace(line[i]))
-    {
-      ++i;
-    }
-    if (i > start)
-    {
-      words.push_back(line.substr(start, i - start));
-    }
+    words.push_back(w);
   }
   return words;
 }

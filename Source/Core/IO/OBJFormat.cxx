@@ -237,22 +237,32 @@ MeshFileData parseOBJ(std::string_view bytes)
   textureIndices.check(static_cast<std::int64_t>(textures.size() / 2));
   normalIndices.check(static_cast<std::int64_t>(normals.size() / 3));
 
-  const bool onlyPolygons = mesh.lines.size() == 0 && mesh.vertices.size() == 0;
-  MeshFileArray textureArray;
-  textureArray.name = "TCoords";
-  textureArray.role = MeshFileArray::Role::TextureCoordinates;
-  if (onlyPolygons && mesh.polygons.size() > 0 &&
-    gatherPerPoint(texturePerPoint, everyCornerTextured, textures, 2, mesh.pointCount(), textureArray))
+  // Point arrays only for files of polygons alone, as VTK's cell order would not match otherwise.
+  if (mesh.lines.size() == 0 && mesh.vertices.size() == 0 && mesh.polygons.size() > 0)
   {
-    mesh.pointArrays.push_back(std::move(textureArray));
-  }
-  MeshFileArray normalArray;
-  normalArray.name = "Normals";
-  normalArray.role = MeshFileArray::Role::Normals;
-  if (onlyPolygons && mesh.polygons.size() > 0 &&
-    gatherPerPoint(normalPerPoint, everyCornerNormal, normals, 3, mesh.pointCount(), normalArray))
-  {
-    mesh.pointArrays.push_back(std::move(normalArray));
+    struct Attribute
+    {
+      const char* name;
+      MeshFileArray::Role role;
+      const std::vector<std::int64_t>& perPoint;
+      bool everyCorner;
+      const std::vector<double>& elements;
+      int components;
+    };
+    const Attribute attributes[] = {
+      { "TCoords", MeshFileArray::Role::TextureCoordinates, texturePerPoint, everyCornerTextured, textures, 2 },
+      { "Normals", MeshFileArray::Role::Normals, normalPerPoint, everyCornerNormal, normals, 3 },
+    };
+    for (const Attribute& a : attributes)
+    {
+      MeshFileArray array;
+      array.name = a.name;
+      array.role = a.role;
+      if (gatherPerPoint(a.perPoint, a.everyCorner, a.elements, a.components, mesh.pointCount(), array))
+      {
+        mesh.pointArrays.push_back(std::move(array));
+      }
+    }
   }
   return mesh;
 }

@@ -668,27 +668,12 @@ private:
       std::string_view content = this->Bytes.substr(node.contentBegin, node.contentEnd - node.contentBegin);
       std::uint64_t words = 0;
       std::string_view lastWord;
-      std::size_t i = 0;
-      while (i < content.size())
+      std::size_t position = 0;
+      for (std::string_view w = nextWord(content, position); !w.empty() && words < values;
+           w = nextWord(content, position))
       {
-        while (i < content.size() && LineCursor::isSpace(content[i]))
-        {
-          ++i;
-        }
-        const std::size_t start = i;
-        while (i < content.size() && !LineCursor::isSpace(content[i]))
-        {
-          ++i;
-        }
-        if (i > start)
-        {
-          ++words;
-          lastWord = content.substr(start, i - start);
-        }
-        if (words == values)
-        {
-          break;
-        }
+        ++words;
+        lastWord = w;
       }
       if (words < values)
       {
