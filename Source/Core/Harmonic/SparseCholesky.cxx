@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <vector>
 
 #ifdef KERF_HAVE_CHOLMOD
 #include <cholmod.h>
@@ -71,11 +73,29 @@ cholmod_dense cholmodView(const double* values, std::size_t n)
   return d;
 }
 
-// Dense kernels of the supernodal forward solve and of the Gram matrix, on row-major blocks of
-// right-hand sides padded to a multiple of ColumnChunk columns. Every right-hand side sees the
-// same arithmetic in the same order whatever the others are, so a column's values do not depend
-// on which columns are solved with it. Each kernel is compiled for AVX-512, AVX2 with FMA and
-// the x86-64 baseline; the processor picks one when the library loads.
+// A pattern-only cholmod_sparse column over `rows` (no copy).
+cholmod_sparse cholmodPattern(std::size_t n, std::vector<int>& rows, int (&pointers)[2])
+{
+  pointers[0] = 0;
+  pointers[1] = static_cast<int>(rows.size());
+  cholmod_sparse s{};
+  s.nrow = n;
+  s.ncol = 1;
+  s.nzmax = std::max<std::size_t>(1, rows.size());
+  s.p = pointers;
+  s.i = rows.data();
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_PATTERN;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.packed = 1;
+  return s;
+}
+
+// Dense kernels of the supernodal forward solve, on row-major blocks of right-hand sides padded
+// to a multiple of ColumnChunk columns. Every right-hand side sees the same arithmetic in the
+// same order whatever the others are, so a column's values do not depend on which columns are
+// solved with it. Compiled for AVX-512, AVX2 with FMA and the x86-64 baseline; the processor
+// picks one when the library loads (the factor's own BLAS kernels are chosen per processor too).
 constexpr int ColumnChunk = 8;
 constexpr int TileRows = 8;
 typedef double Chunk __attribute__((vector_size(ColumnChunk * sizeof(double))));
@@ -165,138 +185,6 @@ void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys
   }
 }
 
-// One supernode of the backward solve L^T x = z: with x already known on the rows below the
-// diagonal block (gathered into g[columns .. rows)) and g[0 .. columns) = z on the block's rows,
-// x_t = (z_t - sum_{i>t} L(i,t) x_i) / L(t,t) for t = columns-1 .. 0, left in g. L is the
-// supernode's column-major block with leading dimension ld. Columns go in blocks of TileRows,
-// whose dot products with the rows below the block stream their columns together.
-KERF_VECTOR_CLONES
-void backwardSupernode(const double* L, int ld, int columns, int rows, double* g)
-{
-  const std::size_t stride = static_cast<std::size_t>(ld);
-  for (int end = columns; end > 0; end -= TileRows)
-  {
-    const int t0 = std::max(0, end - TileRows);
-    const int depth = end - t0;
-    // sums[t] = sum_{i >= end} L(i, t0 + t) x_i: ColumnChunk-wide partial sums, reduced lane by
-    // lane, then the remaining rows.
-    Chunk acc[TileRows];
-    for (int t = 0; t < TileRows; ++t)
-    {
-      acc[t] = Chunk{};
-    }
-    int i = end;
-    for (; i + ColumnChunk <= rows; i += ColumnChunk)
-    {
-      const Chunk x = loadChunk(g + i);
-      for (int t = 0; t < depth; ++t)
-      {
-        acc[t] += loadChunk(L + (t0 + t) * stride + i) * x;
-      }
-    }
-    double sums[TileRows];
-    for (int t = 0; t < depth; ++t)
-    {
-      double sum = 0.0;
-      for (int c = 0; c < ColumnChunk; ++c)
-      {
-        sum += acc[t][c];
-      }
-      for (int j = i; j < rows; ++j)
-      {
-        sum += L[(t0 + t) * stride + j] * g[j];
-      }
-      sums[t] = sum;
-    }
-    // The block's own triangle.
-    for (int t = end - 1; t >= t0; --t)
-    {
-      const double* column = L + t * stride;
-      double value = g[t] - sums[t - t0];
-      for (int j = t + 1; j < end; ++j)
-      {
-        value -= column[j] * g[j];
-      }
-      g[t] = value / column[t];
-    }
-  }
-}
-
-// gram(c + q, j) += sum_{r in [r0, r1)} Y(r, c + q) Y(r, j) for q < 4 and the `Chunks` chunks
-// of columns from j0, continuing each entry's sum in ascending r.
-template <int Chunks>
-KERF_INLINE void gramTile(const double* Y, std::size_t r0, std::size_t r1, int width, int c, int j0, double* gram)
-{
-  constexpr int Columns = 4;
-  Chunk acc[Columns][Chunks];
-  for (int q = 0; q < Columns; ++q)
-  {
-    for (int h = 0; h < Chunks; ++h)
-    {
-      acc[q][h] = loadChunk(gram + static_cast<std::size_t>(c + q) * width + j0 + h * ColumnChunk);
-    }
-  }
-  for (std::size_t r = r0; r < r1; ++r)
-  {
-    const double* yr = Y + r * width;
-    Chunk y[Chunks];
-    for (int h = 0; h < Chunks; ++h)
-    {
-      y[h] = loadChunk(yr + j0 + h * ColumnChunk);
-    }
-    for (int q = 0; q < Columns; ++q)
-    {
-      for (int h = 0; h < Chunks; ++h)
-      {
-        acc[q][h] += yr[c + q] * y[h];
-      }
-    }
-  }
-  for (int q = 0; q < Columns; ++q)
-  {
-    for (int h = 0; h < Chunks; ++h)
-    {
-      storeChunk(gram + static_cast<std::size_t>(c + q) * width + j0 + h * ColumnChunk, acc[q][h]);
-    }
-  }
-}
-
-// The upper triangle (by chunks) of Y^T Y: gram(c, j) = sum_r Y(r,c) Y(r,j), each entry summed
-// in ascending r, for the `width` columns of Y (a multiple of ColumnChunk); gram (width x width)
-// starts at zero. Row blocks keep Y in cache; a block where four columns are all zero only adds
-// exact zeros to their rows and is skipped.
-KERF_VECTOR_CLONES
-void upperGram(const double* Y, std::size_t rows, int width, double* gram)
-{
-  constexpr std::size_t BlockRows = 32;
-  for (std::size_t r0 = 0; r0 < rows; r0 += BlockRows)
-  {
-    const std::size_t r1 = std::min(rows, r0 + BlockRows);
-    for (int c = 0; c < width; c += 4)
-    {
-      bool zero = true;
-      for (std::size_t r = r0; r < r1 && zero; ++r)
-      {
-        const double* yr = Y + r * width + c;
-        zero = yr[0] == 0.0 && yr[1] == 0.0 && yr[2] == 0.0 && yr[3] == 0.0;
-      }
-      if (zero)
-      {
-        continue;
-      }
-      int j0 = c / ColumnChunk * ColumnChunk;
-      for (; j0 + 2 * ColumnChunk <= width; j0 += 2 * ColumnChunk)
-      {
-        gramTile<2>(Y, r0, r1, width, c, j0, gram);
-      }
-      if (j0 < width)
-      {
-        gramTile<1>(Y, r0, r1, width, c, j0, gram);
-      }
-    }
-  }
-}
-
 // CHOLMOD's supernodal factorization runs a few memory copies in OpenMP parallel regions with a
 // fixed team size. On small machines their synchronisation costs more than it saves (a
 // 100k-triangle factorization takes twice as long on two cores), so while one is alive the
@@ -359,20 +247,32 @@ int paddedWidth(int k)
 {
   return std::max(ColumnChunk, (k + ColumnChunk - 1) / ColumnChunk * ColumnChunk);
 }
+
+using ColumnKey = std::vector<std::pair<int, double>>; // a column's entries
+
+/// Where each column of U goes in y: the columns of the last prepare() found again keep their
+/// values and come first (from `source` in the last y); the new ones follow from a whole chunk on.
+struct ColumnPlan
+{
+  std::vector<ColumnKey> keys; // per column of U
+  std::vector<int> kept, fresh, source;
+  int freshBase = 0;
+  int width = 0;
+  std::vector<int> column; // U's column -> its column in y
+};
 } // namespace
 
 /// Y = L^-1 P U on its reach, for apply() and for the next prepare().
 struct SparseCholesky::LowRankFactor
 {
-  using Key = std::vector<std::pair<int, double>>; ///< a column's entries
-  std::vector<std::pair<Key, int>> keys; ///< each column of U and its column in y
-  std::vector<int> column;               ///< U's column -> its column in y
-  std::vector<int> supernodes;           ///< the reach, ascending
-  std::vector<int> firstRow;             ///< each reach supernode's first row in y
-  std::vector<int> rows;                 ///< the permuted row of each row of y
-  int width = 0;                         ///< values per row of y (a multiple of ColumnChunk)
-  std::vector<double> y;                 ///< row-major
-  std::uint64_t generation = 0;          ///< the factorization it belongs to
+  std::vector<std::pair<ColumnKey, int>> keys; ///< each column of U and its column in y
+  std::vector<int> column;                     ///< U's column -> its column in y
+  std::vector<int> supernodes;                 ///< the reach, ascending
+  std::vector<int> firstRow;                   ///< each reach supernode's first row in y
+  std::vector<int> rows;                       ///< the permuted row of each row of y
+  int width = 0;                               ///< values per row of y (a multiple of ColumnChunk)
+  std::vector<double> y;                       ///< row-major
+  std::uint64_t generation = 0;                ///< the factorization it belongs to
 };
 
 struct SparseCholesky::Implementation
@@ -384,11 +284,18 @@ struct SparseCholesky::Implementation
   std::vector<int> superParent;        // supernodal elimination tree
   mutable std::vector<int> offset;     // workspace: supernode -> first row in a reach, or -1
   mutable std::vector<int> lastOffset; // workspace: supernode -> first row in last's reach, or -1
-  // The last prepare()'s Y: a U that keeps some of its columns (a refined cut) only solves for
-  // the new ones. Each column's values do not depend on the others solved with it, so reuse
-  // gives the same bits as solving afresh.
+  // The last supernodal sweep's Y: a U that keeps some of its columns (a refined cut) only
+  // solves for the new ones. Each column's values do not depend on the others solved with it, so
+  // reuse gives the same bits as solving afresh.
   mutable std::shared_ptr<const LowRankFactor> last;
   std::uint64_t generation = 0; // counts factorizations, so a LowRank knows which it belongs to
+  // A simplicial copy of the factor for cholmod_solve2 with sparse right-hand sides (made on
+  // first use), and cholmod_solve2's reusable workspace.
+  mutable cholmod_factor* simplicial = nullptr;
+  mutable cholmod_dense* solveX = nullptr;
+  mutable cholmod_dense* solveY = nullptr;
+  mutable cholmod_dense* solveE = nullptr;
+  mutable cholmod_sparse* solveXset = nullptr;
 
   Implementation()
   {
@@ -398,12 +305,30 @@ struct SparseCholesky::Implementation
   }
   ~Implementation()
   {
+    this->freeFactors();
+    cholmod_free_dense(&this->solveX, &this->common);
+    cholmod_free_dense(&this->solveY, &this->common);
+    cholmod_free_dense(&this->solveE, &this->common);
+    cholmod_free_sparse(&this->solveXset, &this->common);
+    cholmod_finish(&this->common);
+  }
+  Implementation(const Implementation&) = delete;
+  Implementation& operator=(const Implementation&) = delete;
+
+  void freeFactors()
+  {
     if (this->factor)
     {
       cholmod_free_factor(&this->factor, &this->common);
     }
-    cholmod_finish(&this->common);
+    if (this->simplicial)
+    {
+      cholmod_free_factor(&this->simplicial, &this->common);
+    }
   }
+  // CHOLMOD's calls take a non-const common for its statistics and workspace; the const methods
+  // share it (one thread at a time).
+  cholmod_common* mutableCommon() const { return const_cast<cholmod_common*>(&this->common); }
 
   const int* super() const { return static_cast<const int*>(this->factor->super); }
   const int* pi() const { return static_cast<const int*>(this->factor->pi); }
@@ -453,6 +378,16 @@ struct SparseCholesky::Implementation
     }
     return out;
   }
+
+  // The steps of prepare(), in order.
+  ColumnPlan planColumns(const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous) const;
+  void copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous, LowRankFactor& out) const;
+  void scatterFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const;
+  void sweepFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const;
+  void solveFreshColumnsOneByOne(const ColumnPlan& plan, LowRankFactor& out) const;
+  void solveFreshColumnsTogether(const ColumnPlan& plan, LowRankFactor& out) const;
+  Eigen::MatrixXd gramOf(const ColumnPlan& plan, const LowRankFactor& out) const;
+  cholmod_factor* simplicialFactor() const;
 };
 
 SparseCholesky::SparseCholesky()
@@ -467,21 +402,23 @@ std::string SparseCholesky::backend()
   return "CHOLMOD";
 }
 
-bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
+std::size_t SparseCholesky::factorNonZeros() const
+{
+  const Implementation& m = *this->Impl;
+  return m.factor ? static_cast<std::size_t>(m.factor->xsize) : 0;
+}
+
+bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering ordering)
 {
   Implementation& m = *this->Impl;
-  if (m.factor)
-  {
-    cholmod_free_factor(&m.factor, &m.common);
-  }
+  m.freeFactors();
   m.last.reset();
   ++m.generation;
   Eigen::SparseMatrix<double> compressed = A;
   compressed.makeCompressed();
   cholmod_sparse s = cholmodView(compressed, -1);
-  // Nested dissection (METIS): less fill than AMD on surface meshes, so shorter reaches.
   m.common.nmethods = 1;
-  m.common.method[0].ordering = CHOLMOD_METIS;
+  m.common.method[0].ordering = ordering == Ordering::AMD ? CHOLMOD_AMD : CHOLMOD_METIS;
   m.common.supernodal = CHOLMOD_SUPERNODAL;
   m.factor = cholmod_analyze(&s, &m.common);
   if (!m.factor)
@@ -534,39 +471,23 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 {
-  Implementation& m = *this->Impl;
+  const Implementation& m = *this->Impl;
   if (!m.factor)
   {
     throw Error("no factorization to solve with");
   }
   cholmod_dense rhs = cholmodView(b.data(), static_cast<std::size_t>(b.size()));
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, m.factor, &rhs, &m.common);
-  if (!x)
+  if (!cholmod_solve2(CHOLMOD_A, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
   {
     throw Error("the sparse solve failed");
   }
-  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
-  cholmod_free_dense(&x, &m.common);
-  return out;
+  return Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(m.solveX->x), b.size());
 }
 
-SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U) const
+ColumnPlan SparseCholesky::Implementation::planColumns(
+  const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous) const
 {
-  const Implementation& m = *this->Impl;
-  if (!m.factor || U.rows() != static_cast<Eigen::Index>(m.factor->n))
-  {
-    throw Error("the low-rank term does not match the factored matrix");
-  }
-  const int k = static_cast<int>(U.cols());
-  checkFinite(U);
-  auto factor = std::make_shared<LowRankFactor>();
-  LowRankFactor& out = *factor;
-  out.generation = m.generation;
-  const std::shared_ptr<const LowRankFactor> previous = m.last;
-
-  // Each column's key is its entries. Columns of the last call keep their values and come first;
-  // the new ones follow from a whole chunk on, so the sweep touches only theirs.
-  std::map<LowRankFactor::Key, int> lastColumn;
+  std::map<ColumnKey, int> lastColumn;
   if (previous)
   {
     for (const auto& keyed : previous->keys)
@@ -574,45 +495,290 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
       lastColumn.emplace(keyed.first, keyed.second);
     }
   }
-  std::vector<LowRankFactor::Key> keys(k);
-  std::vector<int> kept, fresh, source; // source: the kept columns' places in the last Y
+  const int k = static_cast<int>(U.cols());
+  ColumnPlan plan;
+  plan.keys.resize(k);
   for (int c = 0; c < k; ++c)
   {
     for (Eigen::SparseMatrix<double>::InnerIterator it(U, c); it; ++it)
     {
-      keys[c].emplace_back(static_cast<int>(it.row()), it.value());
+      plan.keys[c].emplace_back(static_cast<int>(it.row()), it.value());
     }
-    const auto found = lastColumn.find(keys[c]);
+    const auto found = lastColumn.find(plan.keys[c]);
     if (found != lastColumn.end())
     {
-      kept.push_back(c);
-      source.push_back(found->second);
+      plan.kept.push_back(c);
+      plan.source.push_back(found->second);
     }
     else
     {
-      fresh.push_back(c);
+      plan.fresh.push_back(c);
     }
   }
-  const int keptCount = static_cast<int>(kept.size());
-  const int freshBase = keptCount == 0 || fresh.empty() ? keptCount : paddedWidth(keptCount);
-  out.width = paddedWidth(freshBase + static_cast<int>(fresh.size()));
-  out.column.assign(k, 0);
+  const int keptCount = static_cast<int>(plan.kept.size());
+  plan.freshBase = keptCount == 0 || plan.fresh.empty() ? keptCount : paddedWidth(keptCount);
+  plan.width = paddedWidth(plan.freshBase + static_cast<int>(plan.fresh.size()));
+  plan.column.assign(k, 0);
   for (int q = 0; q < keptCount; ++q)
   {
-    out.column[kept[q]] = q;
+    plan.column[plan.kept[q]] = q;
   }
-  for (std::size_t f = 0; f < fresh.size(); ++f)
+  for (std::size_t f = 0; f < plan.fresh.size(); ++f)
   {
-    out.column[fresh[f]] = freshBase + static_cast<int>(f);
+    plan.column[plan.fresh[f]] = plan.freshBase + static_cast<int>(f);
   }
+  return plan;
+}
+
+void SparseCholesky::Implementation::copyKeptColumns(
+  const ColumnPlan& plan, const LowRankFactor* previous, LowRankFactor& out) const
+{
+  // Y row by row: the kept columns from the last Y where a row is in its reach, else zero.
+  const std::size_t width = static_cast<std::size_t>(out.width);
+  out.y.assign(out.rows.size() * width, 0.0);
+  if (plan.kept.empty())
+  {
+    return;
+  }
+  const Marks lastMarks(this->lastOffset, previous->supernodes);
+  for (std::size_t i = 0; i < previous->supernodes.size(); ++i)
+  {
+    this->lastOffset[previous->supernodes[i]] = previous->firstRow[i];
+  }
+  for (std::size_t r = 0; r < out.rows.size(); ++r)
+  {
+    const int j = out.rows[r];
+    const int node = this->supernodeOf[j];
+    if (this->lastOffset[node] >= 0)
+    {
+      const double* from = previous->y.data() +
+        static_cast<std::size_t>(this->lastOffset[node] + j - this->super()[node]) *
+          static_cast<std::size_t>(previous->width);
+      double* row = out.y.data() + r * width;
+      for (std::size_t q = 0; q < plan.kept.size(); ++q)
+      {
+        row[q] = from[plan.source[q]];
+      }
+    }
+  }
+}
+
+void SparseCholesky::Implementation::scatterFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const
+{
+  // P U's new columns into y.
+  for (int c : plan.fresh)
+  {
+    for (const auto& entry : plan.keys[c])
+    {
+      out.y[static_cast<std::size_t>(this->position(this->inversePermutation[entry.first])) * out.width +
+        plan.column[c]] += entry.second;
+    }
+  }
+}
+
+void SparseCholesky::Implementation::sweepFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const
+{
+  // Y = L^-1 P U on the new columns, supernode by supernode in ascending (topological) order: a
+  // dense triangular solve with the diagonal block, then the update of the rows below it.
+  this->scatterFreshColumns(plan, out);
+  const std::size_t width = static_cast<std::size_t>(out.width);
+  std::vector<double*> targets;
+  std::vector<int> chunks; // the chunks of new columns not zero on the supernode
+  for (int node : out.supernodes)
+  {
+    const int columns = this->super()[node + 1] - this->super()[node];
+    const int rows = this->pi()[node + 1] - this->pi()[node];
+    double* ys = out.y.data() + static_cast<std::size_t>(this->offset[node]) * width;
+    // A chunk that is zero on the supernode's rows stays zero and changes nothing below:
+    // skipping it is exact.
+    chunks.clear();
+    for (int c0 = plan.freshBase; c0 < out.width; c0 += ColumnChunk)
+    {
+      bool zero = true;
+      for (int t = 0; t < columns && zero; ++t)
+      {
+        for (int c = 0; c < ColumnChunk; ++c)
+        {
+          zero = zero && ys[static_cast<std::size_t>(t) * width + c0 + c] == 0.0;
+        }
+      }
+      if (!zero)
+      {
+        chunks.push_back(c0);
+      }
+    }
+    if (chunks.empty())
+    {
+      continue;
+    }
+    targets.resize(static_cast<std::size_t>(rows - columns));
+    for (int i = columns; i < rows; ++i)
+    {
+      targets[i - columns] = out.y.data() + static_cast<std::size_t>(this->position(this->rows()[this->pi()[node] + i])) * width;
+    }
+    forwardSupernode(this->values() + this->px()[node], rows, columns, rows, ys, targets.data(), out.width,
+      chunks.data(), static_cast<int>(chunks.size()));
+  }
+}
+
+cholmod_factor* SparseCholesky::Implementation::simplicialFactor() const
+{
+  if (!this->simplicial)
+  {
+    this->simplicial = cholmod_copy_factor(this->factor, this->mutableCommon());
+    if (!this->simplicial ||
+      !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 0, this->simplicial, this->mutableCommon()))
+    {
+      throw Error("the factor could not be converted to simplicial form");
+    }
+  }
+  return this->simplicial;
+}
+
+void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan& plan, LowRankFactor& out) const
+{
+  // One cholmod_solve2 per new column with its entries as the sparse right-hand side (Bset): L x
+  // = P u over x's pattern, on a simplicial copy of the factor (Bset needs one).
+  cholmod_factor* simplicial = this->simplicialFactor();
+  const std::size_t n = this->factor->n;
+  std::vector<double> rhs(n, 0.0);
+  std::vector<int> setRows;
+  int setPointers[2];
+  for (int c : plan.fresh)
+  {
+    setRows.clear();
+    for (const auto& entry : plan.keys[c])
+    {
+      const int j = this->inversePermutation[entry.first];
+      rhs[j] += entry.second;
+      setRows.push_back(j);
+    }
+    cholmod_sparse set = cholmodPattern(n, setRows, setPointers);
+    cholmod_dense b = cholmodView(rhs.data(), n);
+    if (!cholmod_solve2(CHOLMOD_L, simplicial, &b, &set, &this->solveX, &this->solveXset, &this->solveY,
+          &this->solveE, this->mutableCommon()))
+    {
+      throw Error("the sparse solve failed");
+    }
+    const int* pattern = static_cast<const int*>(this->solveXset->i);
+    const int count = static_cast<const int*>(this->solveXset->p)[1];
+    const double* x = static_cast<const double*>(this->solveX->x);
+    for (int e = 0; e < count; ++e)
+    {
+      out.y[static_cast<std::size_t>(this->position(pattern[e])) * out.width + plan.column[c]] = x[pattern[e]];
+    }
+    for (int j : setRows)
+    {
+      rhs[j] = 0.0;
+    }
+  }
+}
+
+void SparseCholesky::Implementation::solveFreshColumnsTogether(const ColumnPlan& plan, LowRankFactor& out) const
+{
+  // cholmod_spsolve on all new columns: it solves dense blocks of four and keeps the nonzeros.
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t f = 0; f < plan.fresh.size(); ++f)
+  {
+    for (const auto& entry : plan.keys[plan.fresh[f]])
+    {
+      entries.emplace_back(this->inversePermutation[entry.first], static_cast<int>(f), entry.second);
+    }
+  }
+  Eigen::SparseMatrix<double> permuted(
+    static_cast<Eigen::Index>(this->factor->n), static_cast<Eigen::Index>(plan.fresh.size()));
+  permuted.setFromTriplets(entries.begin(), entries.end());
+  permuted.makeCompressed();
+  cholmod_sparse b = cholmodView(permuted, 0);
+  cholmod_sparse* x = cholmod_spsolve(CHOLMOD_L, this->factor, &b, this->mutableCommon());
+  if (!x)
+  {
+    throw Error("the sparse solve failed");
+  }
+  const int* xp = static_cast<const int*>(x->p);
+  const int* xi = static_cast<const int*>(x->i);
+  const double* xx = static_cast<const double*>(x->x);
+  for (std::size_t f = 0; f < plan.fresh.size(); ++f)
+  {
+    for (int e = xp[f]; e < xp[f + 1]; ++e)
+    {
+      out.y[static_cast<std::size_t>(this->position(xi[e])) * out.width + plan.column[plan.fresh[f]]] = xx[e];
+    }
+  }
+  cholmod_free_sparse(&x, this->mutableCommon());
+}
+
+Eigen::MatrixXd SparseCholesky::Implementation::gramOf(const ColumnPlan& plan, const LowRankFactor& out) const
+{
+  // U^T A^-1 U = Y^T Y with Eigen's blocked product, on the distinct columns sorted by their
+  // entries: every U with the same columns, in any order and whatever the last prepare() kept,
+  // gives the product the same matrix, so its entries do not depend on earlier calls or on the
+  // order of U's columns (+ 0.0 makes every zero positive).
+  const int k = static_cast<int>(plan.keys.size());
+  std::vector<int> order(k);
   for (int c = 0; c < k; ++c)
   {
-    out.keys.emplace_back(keys[c], out.column[c]);
+    order[c] = c;
+  }
+  std::stable_sort(order.begin(), order.end(), [&plan](int a, int b) { return plan.keys[a] < plan.keys[b]; });
+  std::vector<int> distinct(k, 0); // U's column -> its distinct column
+  std::vector<int> representatives;
+  for (int q = 0; q < k; ++q)
+  {
+    if (q == 0 || plan.keys[order[q]] != plan.keys[order[q - 1]])
+    {
+      representatives.push_back(order[q]);
+    }
+    distinct[order[q]] = static_cast<int>(representatives.size()) - 1;
+  }
+  const Eigen::Index rowCount = static_cast<Eigen::Index>(out.rows.size());
+  const int count = static_cast<int>(representatives.size());
+  Eigen::MatrixXd y(rowCount, count);
+  for (int q = 0; q < count; ++q)
+  {
+    const int column = plan.column[representatives[q]];
+    for (Eigen::Index r = 0; r < rowCount; ++r)
+    {
+      y(r, q) = out.y[static_cast<std::size_t>(r) * out.width + column];
+    }
+  }
+  Eigen::MatrixXd product = Eigen::MatrixXd::Zero(count, count);
+  product.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose());
+  Eigen::MatrixXd gram(k, k);
+  for (int a = 0; a < k; ++a)
+  {
+    for (int b = 0; b < k; ++b)
+    {
+      gram(a, b) = product(std::max(distinct[a], distinct[b]), std::min(distinct[a], distinct[b])) + 0.0;
+    }
+  }
+  return gram;
+}
+
+SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U, LowRankRoute route) const
+{
+  const Implementation& m = *this->Impl;
+  if (!m.factor || U.rows() != static_cast<Eigen::Index>(m.factor->n))
+  {
+    throw Error("the low-rank term does not match the factored matrix");
+  }
+  checkFinite(U);
+  const bool sweep = route == LowRankRoute::SupernodalSweep;
+  const std::shared_ptr<const LowRankFactor> previous = sweep ? m.last : nullptr;
+  const ColumnPlan plan = m.planColumns(U, previous.get());
+  auto factor = std::make_shared<LowRankFactor>();
+  LowRankFactor& out = *factor;
+  out.generation = m.generation;
+  out.width = plan.width;
+  out.column = plan.column;
+  for (std::size_t c = 0; c < plan.keys.size(); ++c)
+  {
+    out.keys.emplace_back(plan.keys[c], plan.column[c]);
   }
 
   // The reach: L^-1 P u is nonzero only on the ancestors of u's rows.
   std::vector<int> starts;
-  for (const LowRankFactor::Key& key : keys)
+  for (const ColumnKey& key : plan.keys)
   {
     for (const auto& entry : key)
     {
@@ -627,106 +793,31 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   {
     out.firstRow.push_back(m.offset[node]);
   }
-  const std::vector<int>& reach = out.supernodes;
-  const std::size_t width = static_cast<std::size_t>(out.width);
 
-  // Y row by row: the kept columns from the last Y where a row is in its reach, else zero.
-  out.y.resize(rowCount * width);
+  m.copyKeptColumns(plan, previous.get(), out);
+  if (!plan.fresh.empty())
   {
-    static const std::vector<int> none;
-    const Marks lastMarks(m.lastOffset, previous ? previous->supernodes : none);
-    if (previous)
+    switch (route)
     {
-      for (std::size_t i = 0; i < previous->supernodes.size(); ++i)
-      {
-        m.lastOffset[previous->supernodes[i]] = previous->firstRow[i];
-      }
-    }
-    for (std::size_t r = 0; r < rowCount; ++r)
-    {
-      double* row = out.y.data() + r * width;
-      std::fill(row, row + width, 0.0);
-      const int j = out.rows[r];
-      const int node = m.supernodeOf[j];
-      if (keptCount > 0 && m.lastOffset[node] >= 0)
-      {
-        const double* from = previous->y.data() +
-          static_cast<std::size_t>(m.lastOffset[node] + j - m.super()[node]) * static_cast<std::size_t>(previous->width);
-        for (int q = 0; q < keptCount; ++q)
-        {
-          row[q] = from[source[q]];
-        }
-      }
+      case LowRankRoute::SupernodalSweep:
+        m.sweepFreshColumns(plan, out);
+        break;
+      case LowRankRoute::CholmodSolve2:
+        m.solveFreshColumnsOneByOne(plan, out);
+        break;
+      case LowRankRoute::CholmodSpsolve:
+        m.solveFreshColumnsTogether(plan, out);
+        break;
     }
   }
-
-  // New columns: Y = L^-1 P U, supernode by supernode in ascending (topological) order: a dense
-  // triangular solve with the diagonal block, then the update of the rows below it.
-  if (!fresh.empty())
-  {
-    for (int c : fresh)
-    {
-      for (const auto& entry : keys[c])
-      {
-        out.y[static_cast<std::size_t>(m.position(m.inversePermutation[entry.first])) * width + out.column[c]] += entry.second;
-      }
-    }
-    std::vector<double*> targets;
-    std::vector<int> chunks; // the chunks of new columns not zero on the supernode
-    for (int node : reach)
-    {
-      const int columns = m.super()[node + 1] - m.super()[node];
-      const int rows = m.pi()[node + 1] - m.pi()[node];
-      double* ys = out.y.data() + static_cast<std::size_t>(m.offset[node]) * width;
-      // A chunk that is zero on the supernode's rows stays zero and changes nothing below:
-      // skipping it is exact.
-      chunks.clear();
-      for (int c0 = freshBase; c0 < out.width; c0 += ColumnChunk)
-      {
-        bool zero = true;
-        for (int t = 0; t < columns && zero; ++t)
-        {
-          for (int c = 0; c < ColumnChunk; ++c)
-          {
-            zero = zero && ys[static_cast<std::size_t>(t) * width + c0 + c] == 0.0;
-          }
-        }
-        if (!zero)
-        {
-          chunks.push_back(c0);
-        }
-      }
-      if (chunks.empty())
-      {
-        continue;
-      }
-      targets.resize(static_cast<std::size_t>(rows - columns));
-      for (int i = columns; i < rows; ++i)
-      {
-        targets[i - columns] = out.y.data() + static_cast<std::size_t>(m.position(m.rows()[m.pi()[node] + i])) * width;
-      }
-      forwardSupernode(m.values() + m.px()[node], rows, columns, rows, ys, targets.data(), out.width,
-        chunks.data(), static_cast<int>(chunks.size()));
-    }
-  }
-
-  // U^T A^-1 U = Y^T Y, in U's column order (+ 0.0 makes every zero positive, so skipped zero
-  // blocks cannot show in the sign of a zero).
-  std::vector<double> gram(width * width, 0.0);
-  upperGram(out.y.data(), rowCount, out.width, gram.data());
   LowRank result;
-  result.gram.resize(k, k);
-  for (int a = 0; a < k; ++a)
-  {
-    for (int b = 0; b < k; ++b)
-    {
-      const int i = std::min(out.column[a], out.column[b]);
-      const int j = std::max(out.column[a], out.column[b]);
-      result.gram(a, b) = gram[static_cast<std::size_t>(i) * width + j] + 0.0;
-    }
-  }
-  m.last = factor;
+  result.gram = m.gramOf(plan, out);
+  result.reachRows = rowCount;
   result.factor = factor;
+  if (sweep)
+  {
+    m.last = factor;
+  }
   return result;
 }
 
@@ -741,7 +832,7 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
   const LowRankFactor& f = *lowRank.factor;
   const int n = static_cast<int>(m.factor->n);
   // z = Y s on the reach (summed in U's column order, wherever a column sits in y), then
-  // P^T L^-T z.
+  // P^T L^-T z with CHOLMOD's supernodal backward solve.
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
   const int k = static_cast<int>(f.column.size());
   for (std::size_t r = 0; r < f.rows.size(); ++r)
@@ -754,30 +845,17 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
     }
     z[f.rows[r]] = value;
   }
-  // Supernodes from the root down: each one's rows below its diagonal block are solved.
-  std::vector<double> g;
-  for (int node = static_cast<int>(m.factor->nsuper) - 1; node >= 0; --node)
+  cholmod_dense rhs = cholmodView(z.data(), static_cast<std::size_t>(n));
+  if (!cholmod_solve2(CHOLMOD_Lt, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
   {
-    const int first = m.super()[node];
-    const int columns = m.super()[node + 1] - first;
-    const int rows = m.pi()[node + 1] - m.pi()[node];
-    const int* pattern = m.rows() + m.pi()[node];
-    g.resize(static_cast<std::size_t>(rows));
-    for (int i = 0; i < rows; ++i)
-    {
-      g[i] = z[pattern[i]];
-    }
-    backwardSupernode(m.values() + m.px()[node], rows, columns, rows, g.data());
-    for (int t = 0; t < columns; ++t)
-    {
-      z[first + t] = g[t];
-    }
+    throw Error("the sparse solve failed");
   }
+  const double* x = static_cast<const double*>(m.solveX->x);
   const int* perm = static_cast<const int*>(m.factor->Perm);
   Eigen::VectorXd out(n);
   for (int r = 0; r < n; ++r)
   {
-    out[perm[r]] = z[r] + 0.0;
+    out[perm[r]] = x[r] + 0.0;
   }
   return out;
 }
@@ -810,7 +888,12 @@ std::string SparseCholesky::backend()
   return "Eigen SimplicialLDLT";
 }
 
-bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
+std::size_t SparseCholesky::factorNonZeros() const
+{
+  return this->Impl->ready ? static_cast<std::size_t>(this->Impl->solver.matrixL().nestedExpression().nonZeros()) : 0;
+}
+
+bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering)
 {
   Implementation& m = *this->Impl;
   ++m.generation;
@@ -828,7 +911,7 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
   return this->Impl->solver.solve(b);
 }
 
-SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U) const
+SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U, LowRankRoute) const
 {
   const Implementation& m = *this->Impl;
   if (!m.ready || U.rows() != m.solver.rows())
