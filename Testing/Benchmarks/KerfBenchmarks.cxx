@@ -4,6 +4,8 @@
 //   SurfaceDescriptorsBenchmark.cxx     descriptors filter, vtkCurvatures, Core steps (/10k /100k /1M)
 //   HarmonicCutBenchmark.cxx            harmonic cuts from strokes: factorization, solve, isolines,
 //                                       scoring, the filter pipeline (/22k /100k /1M)
+//   HarmonicSolverBenchmark.cxx         the solver at the Core level: cuts from stroke to labels,
+//                                       orderings, low-rank routes (/22k /100k /1M)
 //   SegmentationEvaluationBenchmark.cxx segmentation metrics (/50k) and the human baseline over
 //                                       psb-dev (/1model /all; only when the folder exists)
 // Run from the build directory with OPENBLAS_NUM_THREADS=1 (CHOLMOD's BLAS on one thread, like
@@ -68,6 +70,7 @@ int main(int argc, char** argv)
   benchmark::AddCustomContext("sparse_cholesky", kerf::SparseCholesky::backend());
   kerf::benchmarks::RegisterSurfaceDescriptorsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterHarmonicSolverBenchmarks();
   kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

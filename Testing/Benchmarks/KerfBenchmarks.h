@@ -20,6 +20,7 @@ bool AnyBenchmarkFailed();
 /// its own minimum time; without it, --benchmark_min_time applies to all.
 void RegisterSurfaceDescriptorsBenchmarks(bool useSizeMinimumTimes);
 void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes);
+void RegisterHarmonicSolverBenchmarks();
 void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks

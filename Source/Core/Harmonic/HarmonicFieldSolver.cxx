@@ -74,6 +74,54 @@ const std::pair<int, double>* findHard(const std::vector<std::pair<int, double>>
   const auto found = std::lower_bound(dirichlet.begin(), dirichlet.end(), std::make_pair(v, -HUGE_VAL));
   return found != dirichlet.end() && found->first == v ? &*found : nullptr;
 }
+
+// The weight w of the constraint term w^2 sum_i (C_i f - c_i)^2.
+double penaltyWeight(const FieldConstraints& constraints)
+{
+  return constraints.formulation == SoftConstraintFormulation::PointValues
+    ? std::sqrt(HarmonicFieldSolver::PointValueStiffness * constraints.softWeight)
+    : constraints.softWeight;
+}
+
+// The corners of the soft constraints' triangles without hard values, ascending, each with the
+// constraint whose value it takes: the one with the largest barycentric coordinate at that corner
+// (the nearest), the first of them on ties. Depends only on the constraints' locations.
+std::vector<std::pair<int, int>> cornerSources(
+  const TriangleMesh& mesh, const std::vector<SoftConstraint>& soft, const std::vector<std::pair<int, double>>& dirichlet)
+{
+  struct Claim
+  {
+    int vertex;
+    double weight;
+    int constraint;
+  };
+  std::vector<Claim> claims;
+  claims.reserve(3 * soft.size());
+  for (std::size_t i = 0; i < soft.size(); ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      claims.push_back({ mesh.triangle(soft[i].face)[j], soft[i].barycentric[j], static_cast<int>(i) });
+    }
+  }
+  std::sort(claims.begin(), claims.end(), [](const Claim& a, const Claim& b) {
+    if (a.vertex != b.vertex)
+    {
+      return a.vertex < b.vertex;
+    }
+    return a.weight != b.weight ? a.weight > b.weight : a.constraint < b.constraint;
+  });
+  std::vector<std::pair<int, int>> corners;
+  for (std::size_t c = 0; c < claims.size(); ++c)
+  {
+    const bool firstClaim = c == 0 || claims[c - 1].vertex != claims[c].vertex;
+    if (firstClaim && !findHard(dirichlet, claims[c].vertex))
+    {
+      corners.emplace_back(claims[c].vertex, claims[c].constraint);
+    }
+  }
+  return corners;
+}
 } // namespace
 
 /// One call's constraints, checked: the hard values sorted by vertex, and which components have
@@ -85,6 +133,7 @@ struct HarmonicFieldSolver::Problem
   std::vector<double> hardValues;
   std::vector<char> hasHard; // per component
   bool softMode = false;
+  bool squared = false; // least squares: the squared Laplacian is factored
 };
 
 struct HarmonicFieldSolver::Cache
@@ -95,19 +144,20 @@ struct HarmonicFieldSolver::Cache
   std::vector<double> weights;
   std::vector<int> dirichlet; // sorted vertices
   bool softMode = false;
+  bool squared = false;
   bool factored = false;
 
   // Unknowns: `column[v]` indexes vertex v among the free columns, or is -1 for hard and pinned
-  // vertices and points used by no triangle. In soft mode the rows are all non-hard vertices and
-  // one vertex per component without hard values is pinned; its component's offset is a separate
-  // unknown (one entry of `offsetIndex`).
+  // vertices and points used by no triangle. In soft mode one vertex per component without hard
+  // values is pinned; its component's offset is a separate unknown (one entry of `offsetIndex`).
+  // The rows are the columns' vertices, and in least squares also the pins.
   std::vector<int> column;
   std::vector<int> columnVertices;
   std::vector<int> offsetIndex; // component -> offset unknown, or -1
   int offsets = 0;
   Eigen::SparseMatrix<double> laplacian;
   Eigen::SparseMatrix<double> rowsFree, rowsHard; // L_RF and L_RD
-  Eigen::SparseMatrix<double> base;               // L_FF, or L_RF^T L_RF
+  Eigen::SparseMatrix<double> base;               // L_FF, or L_RF^T L_RF (least squares)
   SparseCholesky cholesky;
 
   // Hard-value part, for the current hard values.
@@ -118,11 +168,17 @@ struct HarmonicFieldSolver::Cache
   // Soft part, for the current constraint locations and weight.
   std::vector<SoftConstraint> softLocations; // values ignored
   double softWeight = 0.0;
+  SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
   bool prepared = false;
   bool direct = false;           // the prepared form: Woodbury (false) or the direct factor
-  Eigen::SparseMatrix<double> u; // w C_F^T
+  Eigen::SparseMatrix<double> u; // w C_F^T, or the free corners' unit columns E
   SparseCholesky::LowRank lowRank;
-  Eigen::LLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U
+  Eigen::LLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U, or E^T B^-1 E for corner values
+  // Corner values: each free corner's column and the constraint it takes its value from, and
+  // the pins that are corners, whose values fix their component's offset.
+  std::vector<int> cornerColumn;
+  std::vector<int> cornerSource;
+  std::vector<std::pair<int, int>> pinnedCorners; // (offset, constraint)
   // Many constraints: [B + U U^T, w U E; w E^T U^T, w^2 E^T E] over the free values and the
   // offsets, factored as a whole.
   SparseCholesky directCholesky;
@@ -152,6 +208,13 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   }
   problem.dirichlet = sortedDirichlet(constraints, mesh.vertexCount());
   problem.softMode = !constraints.soft.empty();
+  if (constraints.formulation != SoftConstraintFormulation::CornerValues &&
+    constraints.formulation != SoftConstraintFormulation::LeastSquares &&
+    constraints.formulation != SoftConstraintFormulation::PointValues)
+  {
+    throw Error("unknown soft constraint formulation");
+  }
+  problem.squared = problem.softMode && constraints.formulation == SoftConstraintFormulation::LeastSquares;
   if (problem.dirichlet.empty() && !problem.softMode)
   {
     throw Error("the field has no constraint");
@@ -219,7 +282,7 @@ bool HarmonicFieldSolver::factorIfChanged(
   const bool operatorChanged = cache.vertexCount != n || cache.triangles != mesh.triangles() ||
     cache.weights != edgeWeights;
   if (!operatorChanged && cache.factored && cache.dirichlet == problem.dirichletVertices &&
-    cache.softMode == problem.softMode)
+    cache.softMode == problem.softMode && cache.squared == problem.squared)
   {
     return false;
   }
@@ -235,6 +298,7 @@ bool HarmonicFieldSolver::factorIfChanged(
   }
   cache.dirichlet = problem.dirichletVertices;
   cache.softMode = problem.softMode;
+  cache.squared = problem.squared;
   std::vector<char> isHard(n, 0);
   for (int v : problem.dirichletVertices)
   {
@@ -253,13 +317,17 @@ bool HarmonicFieldSolver::factorIfChanged(
     {
       continue;
     }
-    row[v] = rows++;
     const int c = mesh.vertexComponent(v);
     if (problem.softMode && !problem.hasHard[c] && cache.offsetIndex[c] < 0)
     {
       cache.offsetIndex[c] = cache.offsets++; // v is the component's pin
+      if (problem.squared)
+      {
+        row[v] = rows++;
+      }
       continue;
     }
+    row[v] = rows++;
     cache.column[v] = static_cast<int>(cache.columnVertices.size());
     cache.columnVertices.push_back(v);
   }
@@ -293,7 +361,7 @@ bool HarmonicFieldSolver::factorIfChanged(
   cache.rowsFree.setFromTriplets(free.begin(), free.end());
   cache.rowsHard.resize(rows, static_cast<int>(problem.dirichletVertices.size()));
   cache.rowsHard.setFromTriplets(hard.begin(), hard.end());
-  if (problem.softMode)
+  if (problem.squared)
   {
     // SeamCut, Eq. 1: the squared Laplacian of the non-hard rows.
     cache.base = Eigen::SparseMatrix<double>(cache.rowsFree.transpose()) * cache.rowsFree;
@@ -303,7 +371,8 @@ bool HarmonicFieldSolver::factorIfChanged(
     cache.base = cache.rowsFree; // square: rows and columns are the free vertices
   }
   cache.base.makeCompressed();
-  if (columns > 0 && !cache.cholesky.factor(cache.base))
+  // AMD: its ordering costs less than the fill it leaves (see SparseCholesky::Ordering).
+  if (columns > 0 && !cache.cholesky.factor(cache.base, SparseCholesky::Ordering::AMD))
   {
     throw Error("the Laplacian system could not be factored (it is not positive definite)");
   }
@@ -322,7 +391,7 @@ Eigen::VectorXd HarmonicFieldSolver::solveHardValues(const Problem& problem)
   if (!problem.dirichlet.empty() && columns > 0)
   {
     const Eigen::VectorXd flux = cache.rowsHard * hard;
-    hardRhs = problem.softMode ? Eigen::VectorXd(-(cache.rowsFree.transpose() * flux)) : Eigen::VectorXd(-flux);
+    hardRhs = problem.squared ? Eigen::VectorXd(-(cache.rowsFree.transpose() * flux)) : Eigen::VectorXd(-flux);
   }
   if (!cache.hardSolved || cache.hardValues != problem.hardValues)
   {
@@ -339,7 +408,7 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
 {
   Cache& cache = *this->State;
   if (cache.prepared && cache.direct == direct && sameSoftLocations(cache.softLocations, constraints.soft) &&
-    cache.softWeight == constraints.softWeight)
+    cache.softWeight == constraints.softWeight && cache.formulation == constraints.formulation)
   {
     return false;
   }
@@ -356,7 +425,7 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
       const int c = cache.column[mesh.triangle(s.face)[j]];
       if (c >= 0 && s.barycentric[j] != 0.0)
       {
-        entries.emplace_back(c, i, constraints.softWeight * s.barycentric[j]);
+        entries.emplace_back(c, i, penaltyWeight(constraints) * s.barycentric[j]);
       }
     }
   }
@@ -394,6 +463,7 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
   cache.direct = direct;
   cache.softLocations = std::move(locations);
   cache.softWeight = constraints.softWeight;
+  cache.formulation = constraints.formulation;
   cache.prepared = true;
   return true;
 }
@@ -412,7 +482,7 @@ void HarmonicFieldSolver::factorWithConstraints(
     const int c = cache.offsetIndex[mesh.faceComponent(constraints.soft[i].face)];
     if (c >= 0)
     {
-      byComponent.emplace_back(i, c, constraints.softWeight);
+      byComponent.emplace_back(i, c, penaltyWeight(constraints));
       counts[c] += 1.0;
     }
   }
@@ -439,7 +509,7 @@ void HarmonicFieldSolver::factorWithConstraints(
   }
   for (int c = 0; c < cache.offsets; ++c)
   {
-    whole.emplace_back(columns + c, columns + c, constraints.softWeight * constraints.softWeight * counts[c]);
+    whole.emplace_back(columns + c, columns + c, penaltyWeight(constraints) * penaltyWeight(constraints) * counts[c]);
   }
   Eigen::SparseMatrix<double> system(columns + cache.offsets, columns + cache.offsets);
   system.setFromTriplets(whole.begin(), whole.end());
@@ -470,7 +540,7 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
         known += s.barycentric[j] * hard->second;
       }
     }
-    q[i] = constraints.softWeight * (s.value - known);
+    q[i] = penaltyWeight(constraints) * (s.value - known);
     const int c = cache.offsetIndex[mesh.faceComponent(s.face)];
     if (c >= 0)
     {
@@ -482,7 +552,7 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
     // The normal equations of ||R x - r||^2 + ||U^T x + w E alpha - q||^2, as a whole.
     Eigen::VectorXd rhs(columns + cache.offsets);
     rhs.head(columns) = hardRhs + cache.u * q;
-    rhs.tail(cache.offsets) = constraints.softWeight * (E.transpose() * q);
+    rhs.tail(cache.offsets) = penaltyWeight(constraints) * (E.transpose() * q);
     const Eigen::VectorXd whole = cache.directCholesky.solve(rhs);
     x = whole.head(columns);
     for (int c = 0; c < cache.offsets; ++c)
@@ -500,10 +570,10 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
   if (cache.offsets > 0)
   {
     const Eigen::MatrixXd KE = cache.capacitance.solve(E);
-    alpha = (constraints.softWeight * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
+    alpha = (penaltyWeight(constraints) * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
   }
   // The free values: x = x_D + A^-1 U s with s = K (q - w E alpha).
-  const Eigen::VectorXd shift = cache.capacitance.solve(q - constraints.softWeight * (E * alpha));
+  const Eigen::VectorXd shift = cache.capacitance.solve(q - penaltyWeight(constraints) * (E * alpha));
   if (columns > 0)
   {
     x += cache.cholesky.apply(cache.lowRank, shift);
@@ -512,6 +582,147 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
   {
     offset[c] = alpha[c];
   }
+}
+
+bool HarmonicFieldSolver::prepareCornerValues(const TriangleMesh& mesh, const FieldConstraints& constraints,
+  const std::vector<std::pair<int, int>>& corners)
+{
+  Cache& cache = *this->State;
+  if (cache.prepared && cache.formulation == constraints.formulation &&
+    sameSoftLocations(cache.softLocations, constraints.soft))
+  {
+    return false;
+  }
+  // Built aside and kept only once all of it exists, so a failure leaves no half update.
+  cache.prepared = false;
+  std::vector<int> cornerColumn, cornerSource;
+  std::vector<std::pair<int, int>> pinnedCorners;
+  for (const auto& [vertex, source] : corners)
+  {
+    if (cache.column[vertex] >= 0)
+    {
+      cornerColumn.push_back(cache.column[vertex]);
+      cornerSource.push_back(source);
+    }
+    else
+    {
+      pinnedCorners.emplace_back(cache.offsetIndex[mesh.vertexComponent(vertex)], source);
+    }
+  }
+  // The hard values enter through Lagrange multipliers on the factored Laplacian: E^T B^-1 E is
+  // the corners' block of B^-1.
+  const int k = static_cast<int>(cornerColumn.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int i = 0; i < k; ++i)
+  {
+    entries.emplace_back(cornerColumn[i], i, 1.0);
+  }
+  Eigen::SparseMatrix<double> e(cache.columns(), k);
+  e.setFromTriplets(entries.begin(), entries.end());
+  e.makeCompressed();
+  SparseCholesky::LowRank lowRank;
+  Eigen::LLT<Eigen::MatrixXd> gram;
+  if (k > 0)
+  {
+    lowRank = cache.cholesky.prepare(e);
+    gram.compute(lowRank.gram);
+    if (gram.info() != Eigen::Success)
+    {
+      throw Error("the corner values' Gram matrix could not be factored");
+    }
+  }
+  std::vector<SoftConstraint> locations = constraints.soft;
+  cache.u = std::move(e);
+  cache.lowRank = std::move(lowRank);
+  cache.capacitance = std::move(gram);
+  cache.cornerColumn = std::move(cornerColumn);
+  cache.cornerSource = std::move(cornerSource);
+  cache.pinnedCorners = std::move(pinnedCorners);
+  cache.direct = false;
+  cache.formulation = constraints.formulation;
+  cache.softLocations = std::move(locations);
+  cache.prepared = true;
+  return true;
+}
+
+void HarmonicFieldSolver::solveCornerValues(const TriangleMesh& mesh, const FieldConstraints& constraints,
+  Eigen::VectorXd& x, std::vector<double>& offset, Eigen::VectorXd& multipliers) const
+{
+  const Cache& cache = *this->State;
+  const int k = static_cast<int>(cache.cornerColumn.size());
+  // Minimise f^T L f with f = g on the corners: B x + E lambda = b_D, E^T x + O alpha = g and
+  // O^T lambda = 0 for the unknown offsets alpha (O marks each corner's component). Pinned
+  // corners fix their component's offset.
+  std::vector<char> known(cache.offsets, 0);
+  for (const auto& [component, source] : cache.pinnedCorners)
+  {
+    offset[component] = constraints.soft[source].value;
+    known[component] = 1;
+  }
+  std::vector<int> unknownIndex(cache.offsets, -1);
+  int unknowns = 0;
+  for (int c = 0; c < cache.offsets; ++c)
+  {
+    unknownIndex[c] = known[c] ? -1 : unknowns++;
+  }
+  // r = E^T x_D - g + O_known alpha_known; O_unknown.
+  Eigen::VectorXd r(k);
+  Eigen::MatrixXd unknownColumns = Eigen::MatrixXd::Zero(k, unknowns);
+  for (int i = 0; i < k; ++i)
+  {
+    const int vertex = cache.columnVertices[cache.cornerColumn[i]];
+    const int c = cache.offsetIndex[mesh.vertexComponent(vertex)];
+    r[i] = x[cache.cornerColumn[i]] - constraints.soft[cache.cornerSource[i]].value;
+    if (c >= 0 && known[c])
+    {
+      r[i] += offset[c];
+    }
+    else if (c >= 0)
+    {
+      unknownColumns(i, unknownIndex[c]) = 1.0;
+    }
+  }
+  // lambda = G^-1 (r + O alpha) with O^T lambda = 0: (O^T G^-1 O) alpha = -O^T G^-1 r.
+  if (unknowns > 0)
+  {
+    const Eigen::MatrixXd gramInverseO = cache.capacitance.solve(unknownColumns);
+    const Eigen::VectorXd alpha =
+      (unknownColumns.transpose() * gramInverseO).ldlt().solve(-(gramInverseO.transpose() * r));
+    r += unknownColumns * alpha;
+    for (int c = 0; c < cache.offsets; ++c)
+    {
+      if (unknownIndex[c] >= 0)
+      {
+        offset[c] = alpha[unknownIndex[c]];
+      }
+    }
+  }
+  multipliers = k > 0 ? Eigen::VectorXd(cache.capacitance.solve(r)) : Eigen::VectorXd();
+  if (k > 0)
+  {
+    x -= cache.cholesky.apply(cache.lowRank, multipliers);
+  }
+}
+
+double HarmonicFieldSolver::cornerResidual(const TriangleMesh& mesh, const FieldConstraints& constraints,
+  const Eigen::VectorXd& hardRhs, const Eigen::VectorXd& x, const std::vector<double>& offset,
+  const Eigen::VectorXd& multipliers) const
+{
+  const Cache& cache = *this->State;
+  // Both block rows of the system: B x + E lambda - b_D and E^T x + O alpha - g.
+  Eigen::VectorXd stationarity = cache.base.transpose() * x - hardRhs;
+  const int k = static_cast<int>(cache.cornerColumn.size());
+  Eigen::VectorXd misfit(k), values(k);
+  for (int i = 0; i < k; ++i)
+  {
+    stationarity[cache.cornerColumn[i]] += multipliers[i];
+    const int c = cache.offsetIndex[mesh.vertexComponent(cache.columnVertices[cache.cornerColumn[i]])];
+    values[i] = constraints.soft[cache.cornerSource[i]].value;
+    misfit[i] = x[cache.cornerColumn[i]] + (c >= 0 ? offset[c] : 0.0) - values[i];
+  }
+  const double residual = std::sqrt(stationarity.squaredNorm() + misfit.squaredNorm());
+  const double scale = hardRhs.norm() + values.norm();
+  return scale > 0.0 ? residual / scale : residual;
 }
 
 double HarmonicFieldSolver::relativeResidual(const TriangleMesh& mesh, const FieldConstraints& constraints,
@@ -545,7 +756,7 @@ double HarmonicFieldSolver::relativeResidual(const TriangleMesh& mesh, const Fie
         const double hardValue = hard ? hard->second : 0.0;
         value += s.barycentric[j] * ((c >= 0 ? x[c] : hardValue) + (o >= 0 ? offset[o] : 0.0));
       }
-      misfit[i] = constraints.softWeight * (value - s.value);
+      misfit[i] = penaltyWeight(constraints) * (value - s.value);
     }
     residual += cache.u * misfit;
     scale += (cache.u * Eigen::VectorXd::Ones(k)).norm();
@@ -582,6 +793,27 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   const TriangleMesh& mesh, const std::vector<double>& edgeWeights, const FieldConstraints& constraints)
 {
   const Problem problem = checkProblem(mesh, edgeWeights, constraints);
+  std::vector<std::pair<int, int>> corners;
+  const bool cornerMode = problem.softMode && constraints.formulation == SoftConstraintFormulation::CornerValues;
+  if (cornerMode)
+  {
+    corners = cornerSources(mesh, constraints.soft, problem.dirichlet);
+    // Past DirectConstraintCount corners, or more than half the unknowns, the corners' dense Gram
+    // matrix costs more than a factorization without them: they become hard values.
+    const int k = static_cast<int>(corners.size());
+    if (k > DirectConstraintCount || 2 * k > mesh.vertexCount() - static_cast<int>(problem.dirichlet.size()))
+    {
+      FieldConstraints hard;
+      hard.dirichletVertices = problem.dirichletVertices;
+      hard.dirichletValues = problem.hardValues;
+      for (const auto& [vertex, source] : corners)
+      {
+        hard.dirichletVertices.push_back(vertex);
+        hard.dirichletValues.push_back(constraints.soft[source].value);
+      }
+      return this->solve(mesh, edgeWeights, hard);
+    }
+  }
   HarmonicFieldSolution solution;
   solution.work = this->factorIfChanged(mesh, edgeWeights, problem) ? HarmonicFieldSolution::Work::Factorization
                                                                     : HarmonicFieldSolution::Work::BackSubstitution;
@@ -589,7 +821,17 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   const Cache& cache = *this->State;
   Eigen::VectorXd x = cache.hardSolution;
   std::vector<double> offset(cache.offsets, 0.0);
-  if (problem.softMode)
+  Eigen::VectorXd multipliers;
+  if (cornerMode)
+  {
+    if (this->prepareCornerValues(mesh, constraints, corners) &&
+      solution.work == HarmonicFieldSolution::Work::BackSubstitution)
+    {
+      solution.work = HarmonicFieldSolution::Work::Update;
+    }
+    this->solveCornerValues(mesh, constraints, x, offset, multipliers);
+  }
+  else if (problem.softMode)
   {
     // Many constraints make the dense k x k capacitance matrix cost more than factoring the
     // whole system: past DirectConstraintCount constraints, or more than half the unknowns, the
@@ -607,7 +849,9 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   {
     throw Error("the solve produced NaN values");
   }
-  solution.relativeResidual = this->relativeResidual(mesh, constraints, problem, hardRhs, x, offset);
+  solution.relativeResidual = cornerMode
+    ? this->cornerResidual(mesh, constraints, hardRhs, x, offset, multipliers)
+    : this->relativeResidual(mesh, constraints, problem, hardRhs, x, offset);
   solution.field = this->assembleField(mesh, problem, x, offset);
   return solution;
 }
