@@ -250,29 +250,36 @@ int paddedWidth(int k)
 
 using ColumnKey = std::vector<std::pair<int, double>>; // a column's entries
 
-/// Where each column of U goes in y: the columns of the last prepare() found again keep their
-/// values and come first (from `source` in the last y); the new ones follow from a whole chunk on.
+/// U's distinct columns, sorted by their entries, and where the sweep computes each: the ones
+/// the last prepare() computed keep their values and come first; the new ones follow from a
+/// whole chunk on.
 struct ColumnPlan
 {
-  std::vector<ColumnKey> keys; // per column of U
-  std::vector<int> kept, fresh, source;
+  std::vector<ColumnKey> keys; // the distinct columns
+  std::vector<int> distinct;   // U's column -> its distinct column
+  std::vector<int> kept, fresh; // distinct columns computed before / not
+  std::vector<int> source;     // each kept column's distinct column in the last call
+  std::vector<int> slot;       // distinct column -> its column in the sweep's rows
   int freshBase = 0;
-  int width = 0;
-  std::vector<int> column; // U's column -> its column in y
+  int width = 0; // values per row in the sweep (a multiple of ColumnChunk)
 };
+
+// C = A^T A (lower triangle) for a row-major A (k x n): BLAS's syrk on the column-major A^T.
+extern "C" void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
+  const double* a, const int* lda, const double* beta, double* c, const int* ldc);
 } // namespace
 
 /// Y = L^-1 P U on its reach, for apply() and for the next prepare().
 struct SparseCholesky::LowRankFactor
 {
-  std::vector<std::pair<ColumnKey, int>> keys; ///< each column of U and its column in y
-  std::vector<int> column;                     ///< U's column -> its column in y
-  std::vector<int> supernodes;                 ///< the reach, ascending
-  std::vector<int> firstRow;                   ///< each reach supernode's first row in y
-  std::vector<int> rows;                       ///< the permuted row of each row of y
-  int width = 0;                               ///< values per row of y (a multiple of ColumnChunk)
-  std::vector<double> y;                       ///< row-major
-  std::uint64_t generation = 0;                ///< the factorization it belongs to
+  std::vector<ColumnKey> keys;  ///< U's distinct columns, sorted
+  std::vector<int> distinct;    ///< U's column -> its distinct column
+  std::vector<int> supernodes;  ///< the reach, ascending
+  std::vector<int> firstRow;    ///< each reach supernode's first row in y
+  std::vector<int> rows;        ///< the permuted row of each row of y
+  std::vector<double> y;        ///< row-major, one value per distinct column
+  std::uint64_t generation = 0; ///< the factorization it belongs to
+  int count() const { return static_cast<int>(this->keys.size()); }
 };
 
 struct SparseCholesky::Implementation
@@ -379,14 +386,17 @@ struct SparseCholesky::Implementation
     return out;
   }
 
-  // The steps of prepare(), in order.
-  ColumnPlan planColumns(const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous) const;
-  void copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous, LowRankFactor& out) const;
-  void scatterFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const;
-  void sweepFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const;
-  void solveFreshColumnsOneByOne(const ColumnPlan& plan, LowRankFactor& out) const;
-  void solveFreshColumnsTogether(const ColumnPlan& plan, LowRankFactor& out) const;
-  Eigen::MatrixXd gramOf(const ColumnPlan& plan, const LowRankFactor& out) const;
+  // The steps of prepare(), in order; `work` holds the sweep's rows (plan.width values each).
+  static ColumnPlan planColumns(const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous);
+  void reachOfColumns(const ColumnPlan& plan, LowRankFactor& out) const;
+  void copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous, const LowRankFactor& out,
+    std::vector<double>& work) const;
+  void scatterFreshColumns(const ColumnPlan& plan, std::vector<double>& work) const;
+  void sweepFreshColumns(const ColumnPlan& plan, const LowRankFactor& out, std::vector<double>& work) const;
+  void solveFreshColumnsOneByOne(const ColumnPlan& plan, std::vector<double>& work) const;
+  void solveFreshColumnsTogether(const ColumnPlan& plan, std::vector<double>& work) const;
+  static void keepDistinctColumns(const ColumnPlan& plan, const std::vector<double>& work, LowRankFactor& out);
+  static Eigen::MatrixXd gramOf(const LowRankFactor& out);
   cholmod_factor* simplicialFactor() const;
 };
 
@@ -485,57 +495,84 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 }
 
 ColumnPlan SparseCholesky::Implementation::planColumns(
-  const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous) const
+  const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous)
 {
-  std::map<ColumnKey, int> lastColumn;
-  if (previous)
-  {
-    for (const auto& keyed : previous->keys)
-    {
-      lastColumn.emplace(keyed.first, keyed.second);
-    }
-  }
   const int k = static_cast<int>(U.cols());
-  ColumnPlan plan;
-  plan.keys.resize(k);
+  std::vector<ColumnKey> keys(k);
   for (int c = 0; c < k; ++c)
   {
     for (Eigen::SparseMatrix<double>::InnerIterator it(U, c); it; ++it)
     {
-      plan.keys[c].emplace_back(static_cast<int>(it.row()), it.value());
+      keys[c].emplace_back(static_cast<int>(it.row()), it.value());
     }
-    const auto found = lastColumn.find(plan.keys[c]);
-    if (found != lastColumn.end())
+  }
+  ColumnPlan plan;
+  plan.keys = keys;
+  std::sort(plan.keys.begin(), plan.keys.end());
+  plan.keys.erase(std::unique(plan.keys.begin(), plan.keys.end()), plan.keys.end());
+  plan.distinct.resize(k);
+  for (int c = 0; c < k; ++c)
+  {
+    plan.distinct[c] =
+      static_cast<int>(std::lower_bound(plan.keys.begin(), plan.keys.end(), keys[c]) - plan.keys.begin());
+  }
+  for (int d = 0; d < static_cast<int>(plan.keys.size()); ++d)
+  {
+    const auto found = previous
+      ? std::lower_bound(previous->keys.begin(), previous->keys.end(), plan.keys[d])
+      : std::vector<ColumnKey>::const_iterator();
+    if (previous && found != previous->keys.end() && *found == plan.keys[d])
     {
-      plan.kept.push_back(c);
-      plan.source.push_back(found->second);
+      plan.kept.push_back(d);
+      plan.source.push_back(static_cast<int>(found - previous->keys.begin()));
     }
     else
     {
-      plan.fresh.push_back(c);
+      plan.fresh.push_back(d);
     }
   }
   const int keptCount = static_cast<int>(plan.kept.size());
   plan.freshBase = keptCount == 0 || plan.fresh.empty() ? keptCount : paddedWidth(keptCount);
   plan.width = paddedWidth(plan.freshBase + static_cast<int>(plan.fresh.size()));
-  plan.column.assign(k, 0);
+  plan.slot.assign(plan.keys.size(), 0);
   for (int q = 0; q < keptCount; ++q)
   {
-    plan.column[plan.kept[q]] = q;
+    plan.slot[plan.kept[q]] = q;
   }
   for (std::size_t f = 0; f < plan.fresh.size(); ++f)
   {
-    plan.column[plan.fresh[f]] = plan.freshBase + static_cast<int>(f);
+    plan.slot[plan.fresh[f]] = plan.freshBase + static_cast<int>(f);
   }
   return plan;
 }
 
-void SparseCholesky::Implementation::copyKeptColumns(
-  const ColumnPlan& plan, const LowRankFactor* previous, LowRankFactor& out) const
+void SparseCholesky::Implementation::reachOfColumns(const ColumnPlan& plan, LowRankFactor& out) const
 {
-  // Y row by row: the kept columns from the last Y where a row is in its reach, else zero.
-  const std::size_t width = static_cast<std::size_t>(out.width);
-  out.y.assign(out.rows.size() * width, 0.0);
+  // L^-1 P u is nonzero only on the ancestors of u's rows. Leaves `offset` marked for the
+  // reach's supernodes (the caller's Marks guard over out.supernodes clears them).
+  std::vector<int> starts;
+  for (const ColumnKey& key : plan.keys)
+  {
+    for (const auto& entry : key)
+    {
+      starts.push_back(this->supernodeOf[this->inversePermutation[entry.first]]);
+    }
+  }
+  std::size_t rowCount = 0;
+  this->reachOf(starts, out.supernodes, rowCount);
+  out.rows = this->rowsOf(out.supernodes, rowCount);
+  for (int node : out.supernodes)
+  {
+    out.firstRow.push_back(this->offset[node]);
+  }
+}
+
+void SparseCholesky::Implementation::copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous,
+  const LowRankFactor& out, std::vector<double>& work) const
+{
+  // The sweep's rows: the kept columns from the last Y where a row is in its reach, else zero.
+  const std::size_t width = static_cast<std::size_t>(plan.width);
+  work.assign(out.rows.size() * width, 0.0);
   if (plan.kept.empty())
   {
     return;
@@ -545,16 +582,16 @@ void SparseCholesky::Implementation::copyKeptColumns(
   {
     this->lastOffset[previous->supernodes[i]] = previous->firstRow[i];
   }
+  const std::size_t count = static_cast<std::size_t>(previous->count());
   for (std::size_t r = 0; r < out.rows.size(); ++r)
   {
     const int j = out.rows[r];
     const int node = this->supernodeOf[j];
     if (this->lastOffset[node] >= 0)
     {
-      const double* from = previous->y.data() +
-        static_cast<std::size_t>(this->lastOffset[node] + j - this->super()[node]) *
-          static_cast<std::size_t>(previous->width);
-      double* row = out.y.data() + r * width;
+      const double* from =
+        previous->y.data() + static_cast<std::size_t>(this->lastOffset[node] + j - this->super()[node]) * count;
+      double* row = work.data() + r * width;
       for (std::size_t q = 0; q < plan.kept.size(); ++q)
       {
         row[q] = from[plan.source[q]];
@@ -563,36 +600,37 @@ void SparseCholesky::Implementation::copyKeptColumns(
   }
 }
 
-void SparseCholesky::Implementation::scatterFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const
+void SparseCholesky::Implementation::scatterFreshColumns(const ColumnPlan& plan, std::vector<double>& work) const
 {
-  // P U's new columns into y.
-  for (int c : plan.fresh)
+  // P U's new columns into the sweep's rows.
+  for (int d : plan.fresh)
   {
-    for (const auto& entry : plan.keys[c])
+    for (const auto& entry : plan.keys[d])
     {
-      out.y[static_cast<std::size_t>(this->position(this->inversePermutation[entry.first])) * out.width +
-        plan.column[c]] += entry.second;
+      work[static_cast<std::size_t>(this->position(this->inversePermutation[entry.first])) * plan.width +
+        plan.slot[d]] += entry.second;
     }
   }
 }
 
-void SparseCholesky::Implementation::sweepFreshColumns(const ColumnPlan& plan, LowRankFactor& out) const
+void SparseCholesky::Implementation::sweepFreshColumns(
+  const ColumnPlan& plan, const LowRankFactor& out, std::vector<double>& work) const
 {
   // Y = L^-1 P U on the new columns, supernode by supernode in ascending (topological) order: a
   // dense triangular solve with the diagonal block, then the update of the rows below it.
-  this->scatterFreshColumns(plan, out);
-  const std::size_t width = static_cast<std::size_t>(out.width);
+  this->scatterFreshColumns(plan, work);
+  const std::size_t width = static_cast<std::size_t>(plan.width);
   std::vector<double*> targets;
   std::vector<int> chunks; // the chunks of new columns not zero on the supernode
   for (int node : out.supernodes)
   {
     const int columns = this->super()[node + 1] - this->super()[node];
     const int rows = this->pi()[node + 1] - this->pi()[node];
-    double* ys = out.y.data() + static_cast<std::size_t>(this->offset[node]) * width;
+    double* ys = work.data() + static_cast<std::size_t>(this->offset[node]) * width;
     // A chunk that is zero on the supernode's rows stays zero and changes nothing below:
     // skipping it is exact.
     chunks.clear();
-    for (int c0 = plan.freshBase; c0 < out.width; c0 += ColumnChunk)
+    for (int c0 = plan.freshBase; c0 < plan.width; c0 += ColumnChunk)
     {
       bool zero = true;
       for (int t = 0; t < columns && zero; ++t)
@@ -614,9 +652,9 @@ void SparseCholesky::Implementation::sweepFreshColumns(const ColumnPlan& plan, L
     targets.resize(static_cast<std::size_t>(rows - columns));
     for (int i = columns; i < rows; ++i)
     {
-      targets[i - columns] = out.y.data() + static_cast<std::size_t>(this->position(this->rows()[this->pi()[node] + i])) * width;
+      targets[i - columns] = work.data() + static_cast<std::size_t>(this->position(this->rows()[this->pi()[node] + i])) * width;
     }
-    forwardSupernode(this->values() + this->px()[node], rows, columns, rows, ys, targets.data(), out.width,
+    forwardSupernode(this->values() + this->px()[node], rows, columns, rows, ys, targets.data(), plan.width,
       chunks.data(), static_cast<int>(chunks.size()));
   }
 }
@@ -635,7 +673,7 @@ cholmod_factor* SparseCholesky::Implementation::simplicialFactor() const
   return this->simplicial;
 }
 
-void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan& plan, LowRankFactor& out) const
+void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan& plan, std::vector<double>& work) const
 {
   // One cholmod_solve2 per new column with its entries as the sparse right-hand side (Bset): L x
   // = P u over x's pattern, on a simplicial copy of the factor (Bset needs one).
@@ -644,10 +682,10 @@ void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan&
   std::vector<double> rhs(n, 0.0);
   std::vector<int> setRows;
   int setPointers[2];
-  for (int c : plan.fresh)
+  for (int d : plan.fresh)
   {
     setRows.clear();
-    for (const auto& entry : plan.keys[c])
+    for (const auto& entry : plan.keys[d])
     {
       const int j = this->inversePermutation[entry.first];
       rhs[j] += entry.second;
@@ -665,7 +703,7 @@ void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan&
     const double* x = static_cast<const double*>(this->solveX->x);
     for (int e = 0; e < count; ++e)
     {
-      out.y[static_cast<std::size_t>(this->position(pattern[e])) * out.width + plan.column[c]] = x[pattern[e]];
+      work[static_cast<std::size_t>(this->position(pattern[e])) * plan.width + plan.slot[d]] = x[pattern[e]];
     }
     for (int j : setRows)
     {
@@ -674,7 +712,7 @@ void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan&
   }
 }
 
-void SparseCholesky::Implementation::solveFreshColumnsTogether(const ColumnPlan& plan, LowRankFactor& out) const
+void SparseCholesky::Implementation::solveFreshColumnsTogether(const ColumnPlan& plan, std::vector<double>& work) const
 {
   // cholmod_spsolve on all new columns: it solves dense blocks of four and keeps the nonzeros.
   std::vector<Eigen::Triplet<double>> entries;
@@ -702,54 +740,54 @@ void SparseCholesky::Implementation::solveFreshColumnsTogether(const ColumnPlan&
   {
     for (int e = xp[f]; e < xp[f + 1]; ++e)
     {
-      out.y[static_cast<std::size_t>(this->position(xi[e])) * out.width + plan.column[plan.fresh[f]]] = xx[e];
+      work[static_cast<std::size_t>(this->position(xi[e])) * plan.width + plan.slot[plan.fresh[f]]] = xx[e];
     }
   }
   cholmod_free_sparse(&x, this->mutableCommon());
 }
 
-Eigen::MatrixXd SparseCholesky::Implementation::gramOf(const ColumnPlan& plan, const LowRankFactor& out) const
+void SparseCholesky::Implementation::keepDistinctColumns(
+  const ColumnPlan& plan, const std::vector<double>& work, LowRankFactor& out)
 {
-  // U^T A^-1 U = Y^T Y with Eigen's blocked product, on the distinct columns sorted by their
-  // entries: every U with the same columns, in any order and whatever the last prepare() kept,
-  // gives the product the same matrix, so its entries do not depend on earlier calls or on the
-  // order of U's columns (+ 0.0 makes every zero positive).
-  const int k = static_cast<int>(plan.keys.size());
-  std::vector<int> order(k);
-  for (int c = 0; c < k; ++c)
+  // Y row by row in the distinct columns' order, whatever the sweep's layout was (+ 0.0 makes
+  // every zero positive).
+  out.keys = plan.keys;
+  out.distinct = plan.distinct;
+  const std::size_t count = plan.keys.size();
+  out.y.resize(out.rows.size() * count);
+  for (std::size_t r = 0; r < out.rows.size(); ++r)
   {
-    order[c] = c;
-  }
-  std::stable_sort(order.begin(), order.end(), [&plan](int a, int b) { return plan.keys[a] < plan.keys[b]; });
-  std::vector<int> distinct(k, 0); // U's column -> its distinct column
-  std::vector<int> representatives;
-  for (int q = 0; q < k; ++q)
-  {
-    if (q == 0 || plan.keys[order[q]] != plan.keys[order[q - 1]])
+    const double* from = work.data() + r * static_cast<std::size_t>(plan.width);
+    double* to = out.y.data() + r * count;
+    for (std::size_t d = 0; d < count; ++d)
     {
-      representatives.push_back(order[q]);
-    }
-    distinct[order[q]] = static_cast<int>(representatives.size()) - 1;
-  }
-  const Eigen::Index rowCount = static_cast<Eigen::Index>(out.rows.size());
-  const int count = static_cast<int>(representatives.size());
-  Eigen::MatrixXd y(rowCount, count);
-  for (int q = 0; q < count; ++q)
-  {
-    const int column = plan.column[representatives[q]];
-    for (Eigen::Index r = 0; r < rowCount; ++r)
-    {
-      y(r, q) = out.y[static_cast<std::size_t>(r) * out.width + column];
+      to[d] = from[plan.slot[d]] + 0.0;
     }
   }
+}
+
+Eigen::MatrixXd SparseCholesky::Implementation::gramOf(const LowRankFactor& out)
+{
+  // U^T A^-1 U = Y^T Y by the BLAS (syrk) on the distinct columns in their sorted order: every U
+  // with the same columns, in any order and whatever the last prepare() kept, gives it the same
+  // matrix, so the entries depend only on U.
+  const int count = out.count();
+  const int rows = static_cast<int>(out.rows.size());
   Eigen::MatrixXd product = Eigen::MatrixXd::Zero(count, count);
-  product.selfadjointView<Eigen::Lower>().rankUpdate(y.transpose());
+  if (count > 0 && rows > 0)
+  {
+    const char lower = 'L', plain = 'N';
+    const double one = 1.0, zero = 0.0;
+    dsyrk_(&lower, &plain, &count, &rows, &one, out.y.data(), &count, &zero, product.data(), &count);
+  }
+  const int k = static_cast<int>(out.distinct.size());
   Eigen::MatrixXd gram(k, k);
   for (int a = 0; a < k; ++a)
   {
     for (int b = 0; b < k; ++b)
     {
-      gram(a, b) = product(std::max(distinct[a], distinct[b]), std::min(distinct[a], distinct[b])) + 0.0;
+      const int i = out.distinct[a], j = out.distinct[b];
+      gram(a, b) = product(std::max(i, j), std::min(i, j)) + 0.0;
     }
   }
   return gram;
@@ -765,54 +803,33 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   checkFinite(U);
   const bool sweep = route == LowRankRoute::SupernodalSweep;
   const std::shared_ptr<const LowRankFactor> previous = sweep ? m.last : nullptr;
-  const ColumnPlan plan = m.planColumns(U, previous.get());
+  const ColumnPlan plan = Implementation::planColumns(U, previous.get());
   auto factor = std::make_shared<LowRankFactor>();
   LowRankFactor& out = *factor;
   out.generation = m.generation;
-  out.width = plan.width;
-  out.column = plan.column;
-  for (std::size_t c = 0; c < plan.keys.size(); ++c)
-  {
-    out.keys.emplace_back(plan.keys[c], plan.column[c]);
-  }
-
-  // The reach: L^-1 P u is nonzero only on the ancestors of u's rows.
-  std::vector<int> starts;
-  for (const ColumnKey& key : plan.keys)
-  {
-    for (const auto& entry : key)
-    {
-      starts.push_back(m.supernodeOf[m.inversePermutation[entry.first]]);
-    }
-  }
-  std::size_t rowCount = 0;
   const Marks reachMarks(m.offset, out.supernodes);
-  m.reachOf(starts, out.supernodes, rowCount);
-  out.rows = m.rowsOf(out.supernodes, rowCount);
-  for (int node : out.supernodes)
-  {
-    out.firstRow.push_back(m.offset[node]);
-  }
-
-  m.copyKeptColumns(plan, previous.get(), out);
+  m.reachOfColumns(plan, out);
+  std::vector<double> work;
+  m.copyKeptColumns(plan, previous.get(), out, work);
   if (!plan.fresh.empty())
   {
     switch (route)
     {
       case LowRankRoute::SupernodalSweep:
-        m.sweepFreshColumns(plan, out);
+        m.sweepFreshColumns(plan, out, work);
         break;
       case LowRankRoute::CholmodSolve2:
-        m.solveFreshColumnsOneByOne(plan, out);
+        m.solveFreshColumnsOneByOne(plan, work);
         break;
       case LowRankRoute::CholmodSpsolve:
-        m.solveFreshColumnsTogether(plan, out);
+        m.solveFreshColumnsTogether(plan, work);
         break;
     }
   }
+  Implementation::keepDistinctColumns(plan, work, out);
   LowRank result;
-  result.gram = m.gramOf(plan, out);
-  result.reachRows = rowCount;
+  result.gram = Implementation::gramOf(out);
+  result.reachRows = out.rows.size();
   result.factor = factor;
   if (sweep)
   {
@@ -825,25 +842,26 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
 {
   const Implementation& m = *this->Impl;
   if (!m.factor || !lowRank.factor || lowRank.factor->generation != m.generation ||
-    s.size() != static_cast<Eigen::Index>(lowRank.factor->column.size()))
+    s.size() != static_cast<Eigen::Index>(lowRank.factor->distinct.size()))
   {
     throw Error("the low-rank term does not belong to this factorization or has another size");
   }
   const LowRankFactor& f = *lowRank.factor;
   const int n = static_cast<int>(m.factor->n);
-  // z = Y s on the reach (summed in U's column order, wherever a column sits in y), then
-  // P^T L^-T z with CHOLMOD's supernodal backward solve.
+  // z = Y s on the reach (s summed over equal columns in U's order), then P^T L^-T z with
+  // CHOLMOD's supernodal backward solve.
+  Eigen::VectorXd t = Eigen::VectorXd::Zero(f.count());
+  for (Eigen::Index c = 0; c < s.size(); ++c)
+  {
+    t[f.distinct[c]] += s[c];
+  }
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> y(
+    f.y.data(), static_cast<Eigen::Index>(f.rows.size()), f.count());
+  const Eigen::VectorXd reach = y * t;
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-  const int k = static_cast<int>(f.column.size());
   for (std::size_t r = 0; r < f.rows.size(); ++r)
   {
-    const double* row = f.y.data() + r * static_cast<std::size_t>(f.width);
-    double value = 0.0;
-    for (int c = 0; c < k; ++c)
-    {
-      value += row[f.column[c]] * s[c];
-    }
-    z[f.rows[r]] = value;
+    z[f.rows[r]] = reach[static_cast<Eigen::Index>(r)];
   }
   cholmod_dense rhs = cholmodView(z.data(), static_cast<std::size_t>(n));
   if (!cholmod_solve2(CHOLMOD_Lt, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
