@@ -4,7 +4,7 @@
 // 1,002,252 triangles), cotangent weights and strokes: a closed stroke around the neck (64
 // constraints) alternating with a shifted, tilted one, and a half-loop refinement stroke (64 more,
 // at iso-value 0.25) alternating with its mirror image. For each size, in this order, and for
-// each soft-constraint formulation (leastSquares, cornerValues, pointValues):
+// each soft-constraint formulation (leastSquares, pointValues):
 //   BM_SolverFirstCut/<size>/<formulation>   a cut on a fresh mesh, every Core step: TriangleMesh
 //                                            from points and triangles, inspectMesh, cotangent
 //                                            weights, closest-point locator and vertex normals,
@@ -331,8 +331,6 @@ const char* formulationName(Formulation formulation)
   {
     case Formulation::LeastSquares:
       return "leastSquares";
-    case Formulation::CornerValues:
-      return "cornerValues";
     case Formulation::PointValues:
       return "pointValues";
   }
@@ -534,7 +532,7 @@ void RegisterHarmonicSolverBenchmarks()
   for (const SolverSize& size : Sizes)
   {
     const std::string label = std::string("/") + size.label;
-    for (Formulation formulation : { Formulation::LeastSquares, Formulation::CornerValues, Formulation::PointValues })
+    for (Formulation formulation : { Formulation::LeastSquares, Formulation::PointValues })
     {
       const std::string suffix = label + "/" + formulationName(formulation);
       add("BM_SolverFirstCut" + suffix, size,

@@ -83,45 +83,6 @@ double penaltyWeight(const FieldConstraints& constraints)
     : constraints.softWeight;
 }
 
-// The corners of the soft constraints' triangles without hard values, ascending, each with the
-// constraint whose value it takes: the one with the largest barycentric coordinate at that corner
-// (the nearest), the first of them on ties. Depends only on the constraints' locations.
-std::vector<std::pair<int, int>> cornerSources(
-  const TriangleMesh& mesh, const std::vector<SoftConstraint>& soft, const std::vector<std::pair<int, double>>& dirichlet)
-{
-  struct Claim
-  {
-    int vertex;
-    double weight;
-    int constraint;
-  };
-  std::vector<Claim> claims;
-  claims.reserve(3 * soft.size());
-  for (std::size_t i = 0; i < soft.size(); ++i)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      claims.push_back({ mesh.triangle(soft[i].face)[j], soft[i].barycentric[j], static_cast<int>(i) });
-    }
-  }
-  std::sort(claims.begin(), claims.end(), [](const Claim& a, const Claim& b) {
-    if (a.vertex != b.vertex)
-    {
-      return a.vertex < b.vertex;
-    }
-    return a.weight != b.weight ? a.weight > b.weight : a.constraint < b.constraint;
-  });
-  std::vector<std::pair<int, int>> corners;
-  for (std::size_t c = 0; c < claims.size(); ++c)
-  {
-    const bool firstClaim = c == 0 || claims[c - 1].vertex != claims[c].vertex;
-    if (firstClaim && !findHard(dirichlet, claims[c].vertex))
-    {
-      corners.emplace_back(claims[c].vertex, claims[c].constraint);
-    }
-  }
-  return corners;
-}
 } // namespace
 
 /// One call's constraints, checked: the hard values sorted by vertex, and which components have
@@ -171,14 +132,9 @@ struct HarmonicFieldSolver::Cache
   SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
   bool prepared = false;
   bool direct = false;           // the prepared form: Woodbury (false) or the direct factor
-  Eigen::SparseMatrix<double> u; // w C_F^T, or the free corners' unit columns E
+  Eigen::SparseMatrix<double> u; // w C_F^T
   SparseCholesky::LowRank lowRank;
-  Eigen::LLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U, or E^T B^-1 E for corner values
-  // Corner values: each free corner's column and the constraint it takes its value from, and
-  // the pins that are corners, whose values fix their component's offset.
-  std::vector<int> cornerColumn;
-  std::vector<int> cornerSource;
-  std::vector<std::pair<int, int>> pinnedCorners; // (offset, constraint)
+  Eigen::LLT<Eigen::MatrixXd> capacitance; // I + U^T B^-1 U
   // Many constraints: [B + U U^T, w U E; w E^T U^T, w^2 E^T E] over the free values and the
   // offsets, factored as a whole.
   SparseCholesky directCholesky;
@@ -208,9 +164,8 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   }
   problem.dirichlet = sortedDirichlet(constraints, mesh.vertexCount());
   problem.softMode = !constraints.soft.empty();
-  if (constraints.formulation != SoftConstraintFormulation::CornerValues &&
-    constraints.formulation != SoftConstraintFormulation::LeastSquares &&
-    constraints.formulation != SoftConstraintFormulation::PointValues)
+  if (constraints.formulation != SoftConstraintFormulation::PointValues &&
+    constraints.formulation != SoftConstraintFormulation::LeastSquares)
   {
     throw Error("unknown soft constraint formulation");
   }
@@ -584,147 +539,6 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
   }
 }
 
-bool HarmonicFieldSolver::prepareCornerValues(const TriangleMesh& mesh, const FieldConstraints& constraints,
-  const std::vector<std::pair<int, int>>& corners)
-{
-  Cache& cache = *this->State;
-  if (cache.prepared && cache.formulation == constraints.formulation &&
-    sameSoftLocations(cache.softLocations, constraints.soft))
-  {
-    return false;
-  }
-  // Built aside and kept only once all of it exists, so a failure leaves no half update.
-  cache.prepared = false;
-  std::vector<int> cornerColumn, cornerSource;
-  std::vector<std::pair<int, int>> pinnedCorners;
-  for (const auto& [vertex, source] : corners)
-  {
-    if (cache.column[vertex] >= 0)
-    {
-      cornerColumn.push_back(cache.column[vertex]);
-      cornerSource.push_back(source);
-    }
-    else
-    {
-      pinnedCorners.emplace_back(cache.offsetIndex[mesh.vertexComponent(vertex)], source);
-    }
-  }
-  // The hard values enter through Lagrange multipliers on the factored Laplacian: E^T B^-1 E is
-  // the corners' block of B^-1.
-  const int k = static_cast<int>(cornerColumn.size());
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int i = 0; i < k; ++i)
-  {
-    entries.emplace_back(cornerColumn[i], i, 1.0);
-  }
-  Eigen::SparseMatrix<double> e(cache.columns(), k);
-  e.setFromTriplets(entries.begin(), entries.end());
-  e.makeCompressed();
-  SparseCholesky::LowRank lowRank;
-  Eigen::LLT<Eigen::MatrixXd> gram;
-  if (k > 0)
-  {
-    lowRank = cache.cholesky.prepare(e);
-    gram.compute(lowRank.gram);
-    if (gram.info() != Eigen::Success)
-    {
-      throw Error("the corner values' Gram matrix could not be factored");
-    }
-  }
-  std::vector<SoftConstraint> locations = constraints.soft;
-  cache.u = std::move(e);
-  cache.lowRank = std::move(lowRank);
-  cache.capacitance = std::move(gram);
-  cache.cornerColumn = std::move(cornerColumn);
-  cache.cornerSource = std::move(cornerSource);
-  cache.pinnedCorners = std::move(pinnedCorners);
-  cache.direct = false;
-  cache.formulation = constraints.formulation;
-  cache.softLocations = std::move(locations);
-  cache.prepared = true;
-  return true;
-}
-
-void HarmonicFieldSolver::solveCornerValues(const TriangleMesh& mesh, const FieldConstraints& constraints,
-  Eigen::VectorXd& x, std::vector<double>& offset, Eigen::VectorXd& multipliers) const
-{
-  const Cache& cache = *this->State;
-  const int k = static_cast<int>(cache.cornerColumn.size());
-  // Minimise f^T L f with f = g on the corners: B x + E lambda = b_D, E^T x + O alpha = g and
-  // O^T lambda = 0 for the unknown offsets alpha (O marks each corner's component). Pinned
-  // corners fix their component's offset.
-  std::vector<char> known(cache.offsets, 0);
-  for (const auto& [component, source] : cache.pinnedCorners)
-  {
-    offset[component] = constraints.soft[source].value;
-    known[component] = 1;
-  }
-  std::vector<int> unknownIndex(cache.offsets, -1);
-  int unknowns = 0;
-  for (int c = 0; c < cache.offsets; ++c)
-  {
-    unknownIndex[c] = known[c] ? -1 : unknowns++;
-  }
-  // r = E^T x_D - g + O_known alpha_known; O_unknown.
-  Eigen::VectorXd r(k);
-  Eigen::MatrixXd unknownColumns = Eigen::MatrixXd::Zero(k, unknowns);
-  for (int i = 0; i < k; ++i)
-  {
-    const int vertex = cache.columnVertices[cache.cornerColumn[i]];
-    const int c = cache.offsetIndex[mesh.vertexComponent(vertex)];
-    r[i] = x[cache.cornerColumn[i]] - constraints.soft[cache.cornerSource[i]].value;
-    if (c >= 0 && known[c])
-    {
-      r[i] += offset[c];
-    }
-    else if (c >= 0)
-    {
-      unknownColumns(i, unknownIndex[c]) = 1.0;
-    }
-  }
-  // lambda = G^-1 (r + O alpha) with O^T lambda = 0: (O^T G^-1 O) alpha = -O^T G^-1 r.
-  if (unknowns > 0)
-  {
-    const Eigen::MatrixXd gramInverseO = cache.capacitance.solve(unknownColumns);
-    const Eigen::VectorXd alpha =
-      (unknownColumns.transpose() * gramInverseO).ldlt().solve(-(gramInverseO.transpose() * r));
-    r += unknownColumns * alpha;
-    for (int c = 0; c < cache.offsets; ++c)
-    {
-      if (unknownIndex[c] >= 0)
-      {
-        offset[c] = alpha[unknownIndex[c]];
-      }
-    }
-  }
-  multipliers = k > 0 ? Eigen::VectorXd(cache.capacitance.solve(r)) : Eigen::VectorXd();
-  if (k > 0)
-  {
-    x -= cache.cholesky.apply(cache.lowRank, multipliers);
-  }
-}
-
-double HarmonicFieldSolver::cornerResidual(const TriangleMesh& mesh, const FieldConstraints& constraints,
-  const Eigen::VectorXd& hardRhs, const Eigen::VectorXd& x, const std::vector<double>& offset,
-  const Eigen::VectorXd& multipliers) const
-{
-  const Cache& cache = *this->State;
-  // Both block rows of the system: B x + E lambda - b_D and E^T x + O alpha - g.
-  Eigen::VectorXd stationarity = cache.base.transpose() * x - hardRhs;
-  const int k = static_cast<int>(cache.cornerColumn.size());
-  Eigen::VectorXd misfit(k), values(k);
-  for (int i = 0; i < k; ++i)
-  {
-    stationarity[cache.cornerColumn[i]] += multipliers[i];
-    const int c = cache.offsetIndex[mesh.vertexComponent(cache.columnVertices[cache.cornerColumn[i]])];
-    values[i] = constraints.soft[cache.cornerSource[i]].value;
-    misfit[i] = x[cache.cornerColumn[i]] + (c >= 0 ? offset[c] : 0.0) - values[i];
-  }
-  const double residual = std::sqrt(stationarity.squaredNorm() + misfit.squaredNorm());
-  const double scale = hardRhs.norm() + values.norm();
-  return scale > 0.0 ? residual / scale : residual;
-}
-
 double HarmonicFieldSolver::relativeResidual(const TriangleMesh& mesh, const FieldConstraints& constraints,
   const Problem& problem, const Eigen::VectorXd& hardRhs, const Eigen::VectorXd& x,
   const std::vector<double>& offset) const
@@ -793,27 +607,6 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   const TriangleMesh& mesh, const std::vector<double>& edgeWeights, const FieldConstraints& constraints)
 {
   const Problem problem = checkProblem(mesh, edgeWeights, constraints);
-  std::vector<std::pair<int, int>> corners;
-  const bool cornerMode = problem.softMode && constraints.formulation == SoftConstraintFormulation::CornerValues;
-  if (cornerMode)
-  {
-    corners = cornerSources(mesh, constraints.soft, problem.dirichlet);
-    // Past DirectConstraintCount corners, or more than half the unknowns, the corners' dense Gram
-    // matrix costs more than a factorization without them: they become hard values.
-    const int k = static_cast<int>(corners.size());
-    if (k > DirectConstraintCount || 2 * k > mesh.vertexCount() - static_cast<int>(problem.dirichlet.size()))
-    {
-      FieldConstraints hard;
-      hard.dirichletVertices = problem.dirichletVertices;
-      hard.dirichletValues = problem.hardValues;
-      for (const auto& [vertex, source] : corners)
-      {
-        hard.dirichletVertices.push_back(vertex);
-        hard.dirichletValues.push_back(constraints.soft[source].value);
-      }
-      return this->solve(mesh, edgeWeights, hard);
-    }
-  }
   HarmonicFieldSolution solution;
   solution.work = this->factorIfChanged(mesh, edgeWeights, problem) ? HarmonicFieldSolution::Work::Factorization
                                                                     : HarmonicFieldSolution::Work::BackSubstitution;
@@ -821,17 +614,7 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   const Cache& cache = *this->State;
   Eigen::VectorXd x = cache.hardSolution;
   std::vector<double> offset(cache.offsets, 0.0);
-  Eigen::VectorXd multipliers;
-  if (cornerMode)
-  {
-    if (this->prepareCornerValues(mesh, constraints, corners) &&
-      solution.work == HarmonicFieldSolution::Work::BackSubstitution)
-    {
-      solution.work = HarmonicFieldSolution::Work::Update;
-    }
-    this->solveCornerValues(mesh, constraints, x, offset, multipliers);
-  }
-  else if (problem.softMode)
+  if (problem.softMode)
   {
     // Many constraints make the dense k x k capacitance matrix cost more than factoring the
     // whole system: past DirectConstraintCount constraints, or more than half the unknowns, the
@@ -849,9 +632,7 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   {
     throw Error("the solve produced NaN values");
   }
-  solution.relativeResidual = cornerMode
-    ? this->cornerResidual(mesh, constraints, hardRhs, x, offset, multipliers)
-    : this->relativeResidual(mesh, constraints, problem, hardRhs, x, offset);
+  solution.relativeResidual = this->relativeResidual(mesh, constraints, problem, hardRhs, x, offset);
   solution.field = this->assembleField(mesh, problem, x, offset);
   return solution;
 }

@@ -31,16 +31,11 @@ enum class SoftConstraintFormulation
   PointValues,
   /// SeamCut's least squares, ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2; the squared Laplacian is
   /// factored. Smoother fields and straighter cuts on coarse meshes, at a higher cost.
-  LeastSquares,
-  /// The corners of each constraint's triangle take its value as hard values (the constraint with
-  /// the largest barycentric coordinate there, where corners are shared) and f is harmonic
-  /// elsewhere. On triangles as large as the stroke offset, corners across the stroke take the
-  /// wrong side's value and the cut zigzags.
-  CornerValues
+  LeastSquares
 };
 
 /// The constraints of one field: any combination of hard Dirichlet values on vertices and soft
-/// constraints inside faces with weight w (no weight for CornerValues).
+/// constraints inside faces with weight w.
 struct FieldConstraints
 {
   std::vector<int> dirichletVertices;
@@ -81,9 +76,7 @@ struct HarmonicFieldSolution
 /// constraint term is the low-rank correction U U^T, applied through the Woodbury identity
 /// (SparseCholesky::prepare/apply), so new strokes cost a sparse forward solve over the strokes'
 /// elimination-tree reach and a k x k solve, and new values only the k x k solve and one
-/// back-substitution. CornerValues adds the corners' values through Lagrange multipliers on the
-/// factored Laplacian (a low-rank term too). In a component without hard values the Laplacian
-/// term annihilates constants: one vertex of it is fixed at 0 in the factored term and the
+/// back-substitution. In a component without hard values the Laplacian term annihilates constants: one vertex of it is fixed at 0 in the factored term and the
 /// component's constant offset becomes a separate unknown fitted to the constraints, so the
 /// solution is that of the system itself, without regularization.
 ///
@@ -131,16 +124,6 @@ private:
   /// Adds the soft constraints' correction to the free values x and fills the offsets.
   void solveSoftConstraints(const TriangleMesh& mesh, const FieldConstraints& constraints,
     const Problem& problem, const Eigen::VectorXd& hardRhs, Eigen::VectorXd& x, std::vector<double>& offset) const;
-  /// Corner values: the Lagrange multipliers' low-rank term for new constraint locations; true
-  /// if it was made.
-  bool prepareCornerValues(const TriangleMesh& mesh, const FieldConstraints& constraints,
-    const std::vector<std::pair<int, int>>& corners);
-  /// Corner values: corrects the free values x for the corners' values, fills the offsets and
-  /// the multipliers.
-  void solveCornerValues(const TriangleMesh& mesh, const FieldConstraints& constraints, Eigen::VectorXd& x,
-    std::vector<double>& offset, Eigen::VectorXd& multipliers) const;
-  double cornerResidual(const TriangleMesh& mesh, const FieldConstraints& constraints, const Eigen::VectorXd& hardRhs,
-    const Eigen::VectorXd& x, const std::vector<double>& offset, const Eigen::VectorXd& multipliers) const;
   double relativeResidual(const TriangleMesh& mesh, const FieldConstraints& constraints, const Problem& problem,
     const Eigen::VectorXd& hardRhs, const Eigen::VectorXd& x, const std::vector<double>& offset) const;
   std::vector<double> assembleField(const TriangleMesh& mesh, const Problem& problem, const Eigen::VectorXd& x,
