@@ -75,6 +75,39 @@ const std::pair<int, double>* findHard(const std::vector<std::pair<int, double>>
   return found != dirichlet.end() && found->first == v ? &*found : nullptr;
 }
 
+// The rows and columns of a compressed column-major matrix mapped to new indices (-1: dropped),
+// both maps increasing where defined, so the entries come out in order: one pass, no sorting.
+Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& row,
+  int rows, const std::vector<int>& column, int columns)
+{
+  Eigen::SparseMatrix<double> out(rows, columns);
+  std::vector<int> starts(1, 0);
+  std::vector<int> indices;
+  std::vector<double> values;
+  for (int c = 0; c < static_cast<int>(matrix.outerSize()); ++c)
+  {
+    if (column[c] < 0)
+    {
+      continue;
+    }
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, c); it; ++it)
+    {
+      const int r = row[static_cast<int>(it.row())];
+      if (r >= 0)
+      {
+        indices.push_back(r);
+        values.push_back(it.value());
+      }
+    }
+    starts.push_back(static_cast<int>(indices.size()));
+  }
+  out.resizeNonZeros(static_cast<Eigen::Index>(indices.size()));
+  std::copy(starts.begin(), starts.end(), out.outerIndexPtr());
+  std::copy(indices.begin(), indices.end(), out.innerIndexPtr());
+  std::copy(values.begin(), values.end(), out.valuePtr());
+  return out;
+}
+
 // The weight w of the constraint term w^2 sum_i (C_i f - c_i)^2.
 double penaltyWeight(const FieldConstraints& constraints)
 {
@@ -291,31 +324,9 @@ bool HarmonicFieldSolver::factorIfChanged(
   {
     hardIndex[problem.dirichletVertices[i]] = static_cast<int>(i);
   }
-  std::vector<Eigen::Triplet<double>> free, hard;
-  for (int v = 0; v < n; ++v)
-  {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(cache.laplacian, v); it; ++it)
-    {
-      const int r = row[static_cast<int>(it.row())];
-      if (r < 0)
-      {
-        continue;
-      }
-      if (cache.column[v] >= 0)
-      {
-        free.emplace_back(r, cache.column[v], it.value());
-      }
-      else if (hardIndex[v] >= 0)
-      {
-        hard.emplace_back(r, hardIndex[v], it.value());
-      }
-    }
-  }
   const int columns = cache.columns();
-  cache.rowsFree.resize(rows, columns);
-  cache.rowsFree.setFromTriplets(free.begin(), free.end());
-  cache.rowsHard.resize(rows, static_cast<int>(problem.dirichletVertices.size()));
-  cache.rowsHard.setFromTriplets(hard.begin(), hard.end());
+  cache.rowsFree = submatrix(cache.laplacian, row, rows, cache.column, columns);
+  cache.rowsHard = submatrix(cache.laplacian, row, rows, hardIndex, static_cast<int>(problem.dirichletVertices.size()));
   if (problem.squared)
   {
     // SeamCut, Eq. 1: the squared Laplacian of the non-hard rows.

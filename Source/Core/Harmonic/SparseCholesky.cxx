@@ -424,9 +424,13 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering order
   m.freeFactors();
   m.last.reset();
   ++m.generation;
-  Eigen::SparseMatrix<double> compressed = A;
-  compressed.makeCompressed();
-  cholmod_sparse s = cholmodView(compressed, -1);
+  Eigen::SparseMatrix<double> compressed;
+  if (!A.isCompressed())
+  {
+    compressed = A;
+    compressed.makeCompressed();
+  }
+  cholmod_sparse s = cholmodView(A.isCompressed() ? A : compressed, -1);
   m.common.nmethods = 1;
   m.common.method[0].ordering = ordering == Ordering::AMD ? CHOLMOD_AMD : CHOLMOD_METIS;
   m.common.supernodal = CHOLMOD_SUPERNODAL;
