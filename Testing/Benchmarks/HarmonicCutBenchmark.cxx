@@ -536,20 +536,7 @@ using Function = void (*)(benchmark::State&, HarmonicScene&);
 // Runs one benchmark on its size's scene; any exception fails it.
 void run(benchmark::State& state, const CutSize* size, Function function)
 {
-  HarmonicScene* scene = nullptr;
-  try
-  {
-    scene = &sceneOfSize(*size);
-    function(state, *scene);
-  }
-  catch (const std::exception& e)
-  {
-    Fail(state, e.what());
-  }
-  if (scene)
-  {
-    setCounters(state, *scene);
-  }
+  kerf::benchmarks::RunOnScene(state, [size]() -> HarmonicScene& { return sceneOfSize(*size); }, function, setCounters);
 }
 
 } // namespace

@@ -489,20 +489,7 @@ void applyLowRank(benchmark::State& state, SolverScene& scene, Matrix matrix)
 template <typename Function>
 void run(benchmark::State& state, const SolverSize* size, Function function)
 {
-  SolverScene* scene = nullptr;
-  try
-  {
-    scene = &sceneOfSize(*size);
-    function(state, *scene);
-  }
-  catch (const std::exception& e)
-  {
-    Fail(state, e.what());
-  }
-  if (scene)
-  {
-    setCounters(state, *scene);
-  }
+  kerf::benchmarks::RunOnScene(state, [size]() -> SolverScene& { return sceneOfSize(*size); }, function, setCounters);
 }
 
 template <typename Function>

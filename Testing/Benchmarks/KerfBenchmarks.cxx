@@ -12,7 +12,7 @@
 // everything else), for example:
 //   bin/KerfBenchmarks
 //   bin/KerfBenchmarks --benchmark_filter=/100k --benchmark_format=json
-// and the full run (one command; about 6 minutes, most of it the 1M factorizations, which run
+// and the full run (one command; about 20 minutes, most of it the 1M factorizations, which run
 // once per repetition; under 7 GB of memory):
 //   bin/KerfBenchmarks --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //     --benchmark_min_time=0.2

@@ -22,10 +22,25 @@
 #include <sstream>
 #include <string>
 
+#if __has_include(<valgrind/valgrind.h>)
+#include <valgrind/valgrind.h>
+#define KERF_RUNNING_ON_VALGRIND (RUNNING_ON_VALGRIND != 0)
+#else
+#define KERF_RUNNING_ON_VALGRIND false
+#endif
+
 using namespace kerf;
 
 namespace
 {
+// These tests solve each cut twice on meshes of 20,000 triangles and more: minutes under
+// valgrind, whose memory checks the smaller harmonic-field tests make on the same code.
+#define KERF_SKIP_UNDER_VALGRIND()                                                                 \
+  if (KERF_RUNNING_ON_VALGRIND)                                                                    \
+  {                                                                                                \
+    GTEST_SKIP() << "too slow under valgrind";                                                     \
+  }
+
 // The points of a legacy VTK poly-data file (the "POINTS n type" section).
 std::vector<Vector3> legacyVTKPoints(const std::string& fileName)
 {
@@ -217,6 +232,7 @@ void expectCutsAgree(const std::string& name, const TriangleMesh& mesh, const st
 // shifted, tilted and turned.
 TEST(CutFormulations, PointValueCutFollowsLeastSquaresCutOnCubeDumbbell)
 {
+  KERF_SKIP_UNDER_VALGRIND();
   const TriangleMesh shape = benchmarks::MakeBenchmarkDumbbell(43);
   const benchmarks::DumbbellStrokes strokes = benchmarks::MakeDumbbellStrokes();
   expectCutsAgree("cube dumbbell", shape, strokes.around[0], 0.5, 0.15, 0.1);
@@ -225,6 +241,7 @@ TEST(CutFormulations, PointValueCutFollowsLeastSquaresCutOnCubeDumbbell)
 
 TEST(CutFormulations, PointValueCutFollowsLeastSquaresCutOnTheCamel)
 {
+  KERF_SKIP_UNDER_VALGRIND();
   const PolygonMesh polygons = readOFF(std::string(KERF_SOURCE_DIR) + "/Data/camel.off");
   const TriangleMesh camel(polygons.points, triangulatePolygons(polygons).triangles);
   const std::vector<Vector3> stroke = legacyVTKPoints(std::string(KERF_SOURCE_DIR) + "/Data/camel-neck-stroke.vtk");
@@ -240,6 +257,7 @@ TEST(CutFormulations, PointValueCutFollowsLeastSquaresCutOnTheCamel)
 // guard against worse.
 TEST(CutFormulations, PointValueCutBendsOnStretchedTriangles)
 {
+  KERF_SKIP_UNDER_VALGRIND();
   const TriangleMesh shape = makeDumbbell(benchmarks::DumbbellHalfLength, benchmarks::DumbbellLobeRadii,
     benchmarks::DumbbellNeckCentre, benchmarks::DumbbellNeckDepth, 5);
   const benchmarks::DumbbellStrokes strokes = benchmarks::MakeDumbbellStrokes();
@@ -252,6 +270,7 @@ TEST(CutFormulations, PointValueCutBendsOnStretchedTriangles)
 // 1%), and the stroke's samples lie within 0.75 offsets of it in 90% of the strokes.
 TEST(CutFormulations, PointValueCutsFollowBoundaryStrokesOnPrincetonModels)
 {
+  KERF_SKIP_UNDER_VALGRIND();
   const std::filesystem::path root = std::filesystem::path(KERF_SHARED_DATA) / "psb-dev";
   if (!std::filesystem::exists(root / "off"))
   {

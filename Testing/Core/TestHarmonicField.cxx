@@ -448,6 +448,12 @@ struct SoftGrid
   std::vector<double> weights = cotangentWeights(mesh);
   SoftConstraintFormulation formulation = FieldConstraints().formulation;
 
+  SoftGrid() = default;
+  explicit SoftGrid(SoftConstraintFormulation f)
+    : formulation(f)
+  {
+  }
+
   // +1 at x = 0.4 and -1 at x = 0.6 on three heights, shifted by `shift`.
   FieldConstraints pairs(double shift, double softWeight, double plus = 1.0, double minus = -1.0) const
   {
@@ -520,8 +526,7 @@ TEST(HarmonicField, SoftConstraintsOnFlatGridForEveryWeighting)
   for (const SoftConstraintFormulation formulation : BothFormulations)
   {
     SCOPED_TRACE(formulationName(formulation));
-    SoftGrid g;
-    g.formulation = formulation;
+    const SoftGrid g(formulation);
     const FieldConstraints c = g.pairs(0.0, 10.0);
     for (LaplacianWeighting weighting : AllWeightings)
     {
@@ -550,8 +555,7 @@ TEST(HarmonicField, NewSoftValuesCostOnlyBackSubstitution)
   for (const SoftConstraintFormulation formulation : BothFormulations)
   {
     SCOPED_TRACE(formulationName(formulation));
-    SoftGrid g;
-    g.formulation = formulation;
+    const SoftGrid g(formulation);
     HarmonicFieldSolver solver;
     const FieldConstraints first = g.pairs(0.0, 2.0);
     const HarmonicFieldSolution a = solver.solve(g.mesh, g.weights, first);
@@ -577,8 +581,7 @@ TEST(HarmonicField, NewSoftLocationsCostAnUpdate)
   for (const SoftConstraintFormulation formulation : BothFormulations)
   {
     SCOPED_TRACE(formulationName(formulation));
-    SoftGrid g;
-    g.formulation = formulation;
+    const SoftGrid g(formulation);
     HarmonicFieldSolver solver;
     const FieldConstraints first = g.pairs(0.0, 2.0);
     const HarmonicFieldSolution a = solver.solve(g.mesh, g.weights, first);
@@ -640,8 +643,7 @@ TEST(HarmonicField, NewLaplacianWeightsCostAFactorization)
   for (const SoftConstraintFormulation formulation : BothFormulations)
   {
     SCOPED_TRACE(formulationName(formulation));
-    SoftGrid g;
-    g.formulation = formulation;
+    const SoftGrid g(formulation);
     HarmonicFieldSolver solver;
     const FieldConstraints c = g.pairs(0.0, 2.0);
     ASSERT_EQ(solver.solve(g.mesh, g.weights, c).work, HarmonicFieldSolution::Work::Factorization);
@@ -694,6 +696,12 @@ struct MixedCylinder
   std::vector<double> weights = cotangentWeights(mesh);
   SoftConstraintFormulation formulation = FieldConstraints().formulation;
 
+  MixedCylinder() = default;
+  explicit MixedCylinder(SoftConstraintFormulation f)
+    : formulation(f)
+  {
+  }
+
   // Hard 2 at the bottom, 5 at the top; soft constraints at points given as (angle, z), with
   // values of the linear field 2 + 3 z / height plus `offset`.
   FieldConstraints constraints(const std::vector<std::pair<double, double>>& at, double offset, double w) const
@@ -724,8 +732,7 @@ TEST(HarmonicField, MixedHardAndConsistentSoftKeepLinearField)
   for (const SoftConstraintFormulation formulation : BothFormulations)
   {
     SCOPED_TRACE(formulationName(formulation));
-    MixedCylinder m;
-    m.formulation = formulation;
+    const MixedCylinder m(formulation);
     const FieldConstraints c = m.constraints(MixedPoints, 0.0, 3.0);
     // At least one soft constraint has a hard corner with a non-zero value.
     bool touchesHard = false;
@@ -752,8 +759,7 @@ TEST(HarmonicField, MixedHardAndSoftCaching)
   for (const SoftConstraintFormulation formulation : BothFormulations)
   {
     SCOPED_TRACE(formulationName(formulation));
-    MixedCylinder m;
-    m.formulation = formulation;
+    const MixedCylinder m(formulation);
     HarmonicFieldSolver solver;
     double previous = std::numeric_limits<double>::infinity();
     // The soft values pull the field away from the linear one; more weight, smaller misfit.

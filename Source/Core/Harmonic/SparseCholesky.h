@@ -19,7 +19,7 @@ namespace kerf
 /// U, Y = L^-1 P U is nonzero only on the supernodes on the paths from U's rows to the root of the
 /// elimination tree (the "reach"), which constraints confined to a region of the surface keep
 /// short: one sweep over the reach computes all k columns together with dense vector kernels
-/// (three to ten times faster than CHOLMOD's sparse solves, see Documentation/filters/
+/// (3 to 11 times faster than CHOLMOD's sparse solves, see Documentation/filters/
 /// HarmonicCuts.md), U^T A^-1 U is Y^T Y (Eigen's product), and A^-1 U s is one backward solve
 /// P^T L^-T Y s (CHOLMOD's). The last prepare()'s Y is kept, so a U that adds columns to the
 /// previous one only sweeps the new ones. Each column's arithmetic in the sweep is the same
