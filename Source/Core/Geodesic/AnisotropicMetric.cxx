@@ -72,6 +72,7 @@ AnisotropicMetric computeAnisotropicMetric(
   {
     return metric;
   }
+  metric.normals = descriptors.normals;
   double squaredCurvature = 0.0;
   int used = 0;
   for (int v = 0; v < n; ++v)

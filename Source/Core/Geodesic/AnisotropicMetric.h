@@ -51,6 +51,7 @@ struct AnisotropicMetric
   std::vector<Eigen::Matrix3d> tensors;  ///< M_i, per vertex
   std::vector<Eigen::Matrix3d> inverses; ///< M_i^-1
   std::vector<double> lambda1;           ///< per vertex, >= 1 for gamma >= 0
+  std::vector<Vector3> normals;          ///< unit vertex normals (the third eigenvector); empty if isotropic
   bool isotropic = true;                 ///< every M_i is the identity (gamma = 0)
 
   /// The metric tensor at a surface point: the corners' tensors interpolated linearly.

@@ -40,8 +40,17 @@ std::vector<Vector3> descentDirections(
   {
     if (weight[v] > 0.0)
     {
-      directions[v] = metric.isotropic ? Vector3(-directions[v] / weight[v])
-                                       : Vector3(-(metric.inverses[v] * directions[v]) / weight[v]);
+      if (metric.isotropic)
+      {
+        directions[v] = -directions[v] / weight[v];
+        continue;
+      }
+      // In the tangent plane: across a crease the mean gradient leans out of it, and M^-1 would
+      // shrink its tangent part and leave that lean.
+      const Vector3& normal = metric.normals[v];
+      const Vector3 tangent = directions[v] - directions[v].dot(normal) * normal;
+      const Vector3 descent = -(metric.inverses[v] * tangent) / weight[v];
+      directions[v] = descent - descent.dot(normal) * normal;
     }
   }
   return directions;
@@ -563,7 +572,7 @@ std::vector<Vector3> descentFrom(const Surface& surface, const SurfacePoint& fro
   const TriangleMesh& mesh = surface.mesh();
   GeodesicSource source;
   source.points = { from };
-  if (metric.isotropic && options.metric.gamma == 0.0)
+  if (options.metric.gamma == 0.0 && !options.vectorDijkstra)
   {
     const GeodesicDistance distance = HeatGeodesics::of(surface, options.heat).compute(source);
     return descentDirections(mesh, distance.faceGradients, metric);

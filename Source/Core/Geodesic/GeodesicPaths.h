@@ -51,6 +51,8 @@ struct GeodesicPathOptions
   /// under this metric.
   AnisotropicMetricOptions metric;
   int depth = 3; ///< Short-Term Vector Dijkstra's depth k
+  /// Short-Term Vector Dijkstra also for gamma = 0 (isotropic paths as seams trace them).
+  bool vectorDijkstra = false;
   HeatGeodesicOptions heat;
 };
 
