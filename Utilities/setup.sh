@@ -16,6 +16,8 @@ packages=(
   libeigen3-dev libopenmesh-dev libboost-graph-dev libsuitesparse-dev libopenblas-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth valgrind
+  # CGAL's heat method, benchmarked beside Kerf's (header-only)
+  libcgal-dev
 )
 
 missing=()

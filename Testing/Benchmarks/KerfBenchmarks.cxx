@@ -69,6 +69,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterSurfaceDescriptorsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

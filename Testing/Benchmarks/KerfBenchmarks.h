@@ -21,6 +21,7 @@ bool AnyBenchmarkFailed();
 void RegisterSurfaceDescriptorsBenchmarks(bool useSizeMinimumTimes);
 void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes);
 void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes);
+void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks
 } // namespace kerf
