@@ -239,15 +239,34 @@ HeatGeodesics::HeatGeodesics(const TriangleMesh& mesh, const HeatGeodesicOptions
 
   // The lower triangle of L (diagonal included) in compressed columns; the three matrices are
   // this pattern with other values.
-  const std::vector<IntrinsicTriangulation::PairWeight> pairs = triangulation.cotangentWeights();
+  // Straight from the halfedges (setFromTriplets sums edges that join the same pair): no sort.
   std::vector<Eigen::Triplet<double>> entries;
-  entries.reserve(pairs.size() + static_cast<std::size_t>(n));
+  entries.reserve(3 * static_cast<std::size_t>(faces) / 2 + static_cast<std::size_t>(n));
   std::vector<double> diagonal(n, 0.0);
-  for (const IntrinsicTriangulation::PairWeight& pair : pairs)
+  for (int f = 0; f < faces; ++f)
   {
-    entries.emplace_back(pair.j, pair.i, -pair.weight);
-    diagonal[pair.i] += pair.weight;
-    diagonal[pair.j] += pair.weight;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int h = 3 * f + k, t = triangulation.twin(h);
+      if (t >= 0 && t < h)
+      {
+        continue; // counted from the other side
+      }
+      const int i = m.corners[f][k], j = m.corners[f][(k + 1) % 3];
+      if (i == j)
+      {
+        continue;
+      }
+      double weight = 0.5 * m.cotangents[f][(k + 2) % 3];
+      if (t >= 0)
+      {
+        weight += 0.5 * m.cotangents[t / 3][(t % 3 + 2) % 3];
+      }
+      weight = std::max(weight, 0.0);
+      entries.emplace_back(std::max(i, j), std::min(i, j), -weight);
+      diagonal[i] += weight;
+      diagonal[j] += weight;
+    }
   }
   double diagonalSum = 0.0;
   int used = 0;
