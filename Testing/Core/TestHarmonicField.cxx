@@ -38,6 +38,8 @@ std::string weightingName(LaplacianWeighting weighting)
       return "ConcavityAware";
     case LaplacianWeighting::SmoothConcavity:
       return "SmoothConcavity";
+    case LaplacianWeighting::IntrinsicDelaunay:
+      return "IntrinsicDelaunay";
   }
   return "?";
 }
