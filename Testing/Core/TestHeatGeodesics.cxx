@@ -45,6 +45,18 @@ ErrorStatistics relativeErrors(const TriangleMesh& mesh, const std::vector<doubl
   return s;
 }
 
+// The 40,962-vertex unit icosphere and its heat-method set-up, shared by the sphere tests.
+const TriangleMesh& unitSphere()
+{
+  static const TriangleMesh sphere = makeIcosphere(1.0, 6);
+  return sphere;
+}
+const HeatGeodesics& unitSphereHeat()
+{
+  static const HeatGeodesics heat(unitSphere());
+  return heat;
+}
+
 bool inOneRing(const TriangleMesh& mesh, int center, int v)
 {
   if (v == center)
@@ -64,9 +76,9 @@ bool inOneRing(const TriangleMesh& mesh, int center, int v)
 
 TEST(HeatGeodesics, SphereMatchesGreatCircleDistance)
 {
-  const TriangleMesh sphere = makeIcosphere(1.0, 6); // 40,962 vertices
+  const TriangleMesh& sphere = unitSphere(); // 40,962 vertices
   ASSERT_GE(sphere.vertexCount(), 20000);
-  const HeatGeodesics heat(sphere);
+  const HeatGeodesics& heat = unitSphereHeat();
   EXPECT_EQ(heat.flips(), 0); // an icosphere is Delaunay
   const int source = 7;
   const Vector3 s = sphere.point(source);
@@ -85,8 +97,8 @@ TEST(HeatGeodesics, SphereMatchesGreatCircleDistance)
 
 TEST(HeatGeodesics, PointInsideAFaceMatchesGreatCircleDistance)
 {
-  const TriangleMesh sphere = makeIcosphere(1.0, 6);
-  const HeatGeodesics heat(sphere);
+  const TriangleMesh& sphere = unitSphere();
+  const HeatGeodesics& heat = unitSphereHeat();
   SurfacePoint point;
   point.face = 1234;
   point.barycentric = Vector3(0.2, 0.3, 0.5);

@@ -20,9 +20,12 @@ namespace
 const double HalfLength = 2.2, NeckHeight = 0.3, NeckDepth = 0.65;
 const std::array<double, 2> Radii{ 1.0, 0.8 };
 
+// One surface for every test: its heat-method set-up, curvature and weights are cached on it.
 std::shared_ptr<Surface> dumbbell()
 {
-  return std::make_shared<Surface>(makeDumbbell(HalfLength, Radii, NeckHeight, NeckDepth, 5));
+  static const std::shared_ptr<Surface> surface =
+    std::make_shared<Surface>(makeDumbbell(HalfLength, Radii, NeckHeight, NeckDepth, 5));
+  return surface;
 }
 
 // Height of the crease: where the profile is narrowest near the neck.
