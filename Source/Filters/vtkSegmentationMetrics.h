@@ -35,6 +35,8 @@
 #include "KerfFiltersModule.h"
 #include "vtkTableAlgorithm.h"
 
+#include <memory>
+
 class KERFFILTERS_EXPORT vtkSegmentationMetrics : public vtkTableAlgorithm
 {
 public:
@@ -47,7 +49,7 @@ public:
 
 protected:
   vtkSegmentationMetrics();
-  ~vtkSegmentationMetrics() override = default;
+  ~vtkSegmentationMetrics() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
@@ -56,6 +58,9 @@ protected:
 private:
   vtkSegmentationMetrics(const vtkSegmentationMetrics&) = delete;
   void operator=(const vtkSegmentationMetrics&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> State;
 };
 
 #endif

@@ -37,6 +37,7 @@
 #include "KerfFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory>
 #include <string>
 
 class KERFFILTERS_EXPORT vtkSurfaceDescriptors : public vtkPolyDataAlgorithm
@@ -90,6 +91,10 @@ protected:
 private:
   vtkSurfaceDescriptors(const vtkSurfaceDescriptors&) = delete;
   void operator=(const vtkSurfaceDescriptors&) = delete;
+
+  /// The converted surface, kept between executions (see kerf::SurfaceInput).
+  struct Internals;
+  std::unique_ptr<Internals> State;
 };
 
 #endif

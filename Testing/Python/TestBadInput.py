@@ -126,7 +126,8 @@ class BadConstraintsTest(unittest.TestCase):
         surface.GetPointData().AddArray(point_set([], "Hard", values).GetPointData().GetArray("Hard"))
         field = kerf.vtkHarmonicField()
         field.SetInputData(surface)
-        field.SetHardValueArrayName("Hard")
+        field.SetInputArrayToProcess(0, 0, 0, 0, "Hard")
+        field.UseHardValuesOn()
         return field
 
     def test_hard_values_of_the_wrong_length(self):
@@ -192,7 +193,7 @@ class BadConstraintsTest(unittest.TestCase):
         cut.SetInputData(surface)
         cut.SetInputData(1, point_set([(math.nan, 0, 0)]))
         cut.SetModeToNearStroke()
-        self.assert_refused(cut, "Stroke point 0 has a NaN")
+        self.assert_refused(cut, "stroke point 0 has a NaN")
 
     def test_huge_and_tiny_meshes(self):
         for scale, phrase in ((1e300, "beyond +-1e50"), (1e-300, "below 1e-50")):
