@@ -3,8 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/PolygonMesh.h"
-#include "Mesh/PointWelding.h"
-#include "Mesh/Triangulation.h"
+#include "Mesh/SurfaceConversion.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -230,22 +229,16 @@ std::shared_ptr<ConvertedSurface> convert(vtkPolyData* input)
   appendCellArray(input->GetPolys(), verts + lines, false, pointCount, polygons, polygonCell);
   appendCellArray(input->GetStrips(), verts + lines + polys, true, pointCount, polygons, polygonCell);
 
-  Triangulation triangulation = triangulatePolygons(polygons);
-  converted->rebuild = verts > 0 || lines > 0 || strips > 0 || !triangulation.allTriangles;
-  converted->source.resize(triangulation.sourcePolygon.size());
+  ConvertedPolygons triangles = convertPolygons(std::move(polygons));
+  converted->rebuild = verts > 0 || lines > 0 || strips > 0 || !triangles.allTriangles;
+  converted->source.resize(triangles.sourcePolygon.size());
   for (std::size_t t = 0; t < converted->source.size(); ++t)
   {
-    converted->source[t] = polygonCell[triangulation.sourcePolygon[t]];
+    converted->source[t] = polygonCell[triangles.sourcePolygon[t]];
   }
-  TriangleMesh::checkIndices(triangulation.triangles, static_cast<int>(polygons.points.size()));
-  converted->representatives = findCoincidentPoints(polygons.points);
-  for (std::size_t i = 0; i < converted->representatives.size(); ++i)
-  {
-    converted->welded += converted->representatives[i] != static_cast<int>(i) ? 1 : 0;
-  }
-  weldTriangles(converted->representatives, triangulation.triangles);
-  converted->surface =
-    std::make_shared<const Surface>(TriangleMesh(std::move(polygons.points), std::move(triangulation.triangles)));
+  converted->representatives = std::move(triangles.representatives);
+  converted->welded = triangles.welded;
+  converted->surface = std::make_shared<const Surface>(std::move(triangles.mesh));
   converted->report = inspectMesh(converted->surface->mesh());
   return converted;
 }

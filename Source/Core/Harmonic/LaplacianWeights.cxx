@@ -234,7 +234,7 @@ LaplacianWeighting parseLaplacianWeighting(const std::string& name)
       return entry.first;
     }
   }
-  throw Error("the weighting must be uniform, cotangent, concavity or smooth-concavity, got '" + name + "'");
+  throw Error("weighting must be uniform, cotangent, concavity or smooth-concavity, got '" + name + "'");
 }
 
 std::string cacheKey(const LaplacianWeightOptions& options)
