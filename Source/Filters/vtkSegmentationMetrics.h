@@ -10,7 +10,7 @@
  * With two inputs, both must be the same mesh (same points and triangles).
  *
  * The output is a one-row vtkTable (Chen, Golovinskiy, Funkhouser, "A Benchmark for 3D Mesh
- * Segmentation", 2009; mesh-partitioning-survey.txt section 4), every value lower-is-better:
+ * Segmentation", 2009; Kouhestani 2013, section 4), every value lower-is-better:
  * - CutDiscrepancy = (DCD(E => R) + DCD(R => E)) / average radius, with the directional parts
  *   CutDiscrepancyEvaluatedToReference and CutDiscrepancyReferenceToEvaluated. DCD(A => B) is the
  *   mean distance from A's cut vertices to B's cut, measured along mesh edges (the edge-graph

@@ -264,7 +264,7 @@ SurfaceDescriptors computeSurfaceDescriptors(const TriangleMesh& mesh)
     out.gaussianCurvature[v] = k1 * k2;
   }
 
-  // Concavity (roi-scissor.txt Eq. 3) from the one-ring centroid.
+  // Concavity (ROI Scissor, Eq. 3) from the one-ring centroid.
   out.concave.assign(n, 0);
   for (int v = 0; v < n; ++v)
   {
@@ -282,7 +282,7 @@ SurfaceDescriptors computeSurfaceDescriptors(const TriangleMesh& mesh)
     out.concave[v] = (centroid - mesh.point(v)).dot(out.normals[v]) > 0.0 ? 1 : 0;
   }
 
-  // Normal-cone angle (geometry-seam-carving.txt Eq. 4): the widest pair of face normals.
+  // Normal-cone angle (Dekkers and Kobbelt 2014, Eq. 4): the widest pair of face normals.
   std::vector<Vector3> faceNormals(mesh.faceCount());
   for (int f = 0; f < mesh.faceCount(); ++f)
   {

@@ -19,10 +19,10 @@ enum class LaplacianWeighting
   Uniform,
   /// w_ij = (cot alpha + cot beta) / 2 over the angles opposite the edge.
   Cotangent,
-  /// Au et al. 2011 (roi-scissor.txt Eq. 2-3): w_ij = |e_ij| / G_ij * beta, G_ij = |K_i| + |K_j|
+  /// Au et al. 2011 (ROI Scissor, Eq. 2-3): w_ij = |e_ij| / G_ij * beta, G_ij = |K_i| + |K_j|
   /// and beta = 0.01 if i or j is concave, else 1.
   ConcavityAware,
-  /// ROI Scissor (roi-scissor.txt 3.1): as ConcavityAware with the smooth
+  /// ROI Scissor (ROI Scissor, section 3.1): as ConcavityAware with the smooth
   /// beta(t) = 1 / (1 + 100 t^2) for t = H_ij / (2 H_max) > 0, else 1.
   SmoothConcavity
 };
