@@ -40,9 +40,26 @@ vtkStrokeConstraints::vtkStrokeConstraints()
 
 vtkStrokeConstraints::~vtkStrokeConstraints() = default;
 
+namespace
+{
+// More stroke points than anyone draws: a larger count or index is a mistake, refused before it
+// allocates gigabytes.
+constexpr int MaximumStrokePoints = 10000000;
+
+void checkStrokePointCount(long long count)
+{
+  if (count > MaximumStrokePoints)
+  {
+    throw kerf::Error("a stroke has at most " + std::to_string(MaximumStrokePoints) + " points, not " +
+      std::to_string(count));
+  }
+}
+} // namespace
+
 void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
 {
   kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
+    checkStrokePointCount(count);
     if (count >= 0 && static_cast<std::size_t>(count) != this->State->strokePoints.size())
     {
       this->State->strokePoints.resize(static_cast<std::size_t>(count), kerf::Vector3::Zero());
@@ -63,6 +80,7 @@ void vtkStrokeConstraints::SetStrokePoint(int index, double x, double y, double 
     {
       return;
     }
+    checkStrokePointCount(static_cast<long long>(index) + 1);
     std::vector<kerf::Vector3>& points = this->State->strokePoints;
     if (static_cast<std::size_t>(index) >= points.size())
     {

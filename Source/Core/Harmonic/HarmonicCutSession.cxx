@@ -65,9 +65,9 @@ void HarmonicCutSession::projectConstraints(const std::vector<Vector3>& points, 
   const ClosestPointLocator& locator = this->surface().locator();
   for (std::size_t i = 0; i < points.size(); ++i)
   {
-    if (!points[i].allFinite() || !std::isfinite(values[i]))
+    if (!points[i].allFinite() || points[i].cwiseAbs().maxCoeff() > CoordinateLimit || !std::isfinite(values[i]))
     {
-      throw Error("constraint point " + std::to_string(i) + " has a NaN or infinite coordinate or value");
+      throw Error("constraint point " + std::to_string(i) + " has a NaN, infinite or huge coordinate or value");
     }
     const ClosestPointLocator::Hit hit = locator.closest(points[i]);
     if (hit.distance > limit)
