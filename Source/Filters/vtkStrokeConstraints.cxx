@@ -1,9 +1,9 @@
-// vtkStrokeConstraints: reads strokes, keeps the surface and its locator, calls kerf::strokeConstraints.
+// vtkStrokeConstraints: reads the strokes, places their constraints with the surface's session, writes the points.
 #include "vtkStrokeConstraints.h"
 
-#include "Geometry/ClosestPoint.h"
-#include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/StrokeConstraints.h"
+#include "Error.h"
+#include "Harmonic/HarmonicCutSession.h"
+#include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellArray.h>
@@ -21,14 +21,14 @@
 #include <vtkSmartPointer.h>
 
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkStrokeConstraints);
 
 struct vtkStrokeConstraints::Internals
 {
   kerf::SurfaceInput surface;
-  std::unique_ptr<kerf::ClosestPointLocator> locator;
-  std::vector<kerf::Vector3> normals;
+  std::unique_ptr<kerf::HarmonicCutSession> session;
   std::vector<kerf::Vector3> strokePoints;
 };
 
@@ -40,13 +40,32 @@ vtkStrokeConstraints::vtkStrokeConstraints()
 
 vtkStrokeConstraints::~vtkStrokeConstraints() = default;
 
+namespace
+{
+// More stroke points than anyone draws: a larger count or index is a mistake, refused before it
+// allocates gigabytes.
+constexpr int MaximumStrokePoints = 10000000;
+
+void checkStrokePointCount(long long count)
+{
+  if (count > MaximumStrokePoints)
+  {
+    throw kerf::Error("a stroke has at most " + std::to_string(MaximumStrokePoints) + " points, not " +
+      std::to_string(count));
+  }
+}
+} // namespace
+
 void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
 {
-  if (count >= 0 && static_cast<std::size_t>(count) != this->State->strokePoints.size())
-  {
-    this->State->strokePoints.resize(static_cast<std::size_t>(count), kerf::Vector3::Zero());
-    this->Modified();
-  }
+  kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
+    checkStrokePointCount(count);
+    if (count >= 0 && static_cast<std::size_t>(count) != this->State->strokePoints.size())
+    {
+      this->State->strokePoints.resize(static_cast<std::size_t>(count), kerf::Vector3::Zero());
+      this->Modified();
+    }
+  });
 }
 
 int vtkStrokeConstraints::GetNumberOfStrokePoints() const
@@ -56,20 +75,24 @@ int vtkStrokeConstraints::GetNumberOfStrokePoints() const
 
 void vtkStrokeConstraints::SetStrokePoint(int index, double x, double y, double z)
 {
-  if (index < 0)
-  {
-    return;
-  }
-  if (static_cast<std::size_t>(index) >= this->State->strokePoints.size())
-  {
-    this->State->strokePoints.resize(static_cast<std::size_t>(index) + 1, kerf::Vector3::Zero());
-  }
-  const kerf::Vector3 p(x, y, z);
-  if (this->State->strokePoints[static_cast<std::size_t>(index)] != p)
-  {
-    this->State->strokePoints[static_cast<std::size_t>(index)] = p;
-    this->Modified();
-  }
+  kerf::GuardSetter(this, "Cannot set a stroke point", [&]() {
+    if (index < 0)
+    {
+      return;
+    }
+    checkStrokePointCount(static_cast<long long>(index) + 1);
+    std::vector<kerf::Vector3>& points = this->State->strokePoints;
+    if (static_cast<std::size_t>(index) >= points.size())
+    {
+      points.resize(static_cast<std::size_t>(index) + 1, kerf::Vector3::Zero());
+    }
+    const kerf::Vector3 p(x, y, z);
+    if (points[static_cast<std::size_t>(index)] != p)
+    {
+      points[static_cast<std::size_t>(index)] = p;
+      this->Modified();
+    }
+  });
 }
 
 int vtkStrokeConstraints::FillInputPortInformation(int port, vtkInformation* info)
@@ -85,119 +108,66 @@ int vtkStrokeConstraints::FillInputPortInformation(int port, vtkInformation* inf
 int vtkStrokeConstraints::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  Internals& state = *this->State;
-
-  if (!std::isfinite(this->IsoValue) || !(this->IsoValue + 1.0 > this->IsoValue) ||
-    !(this->IsoValue - 1.0 < this->IsoValue))
-  {
-    vtkErrorMacro("IsoValue " << this->IsoValue
-                              << " must be finite, and small enough that IsoValue +- 1 differ from it.");
-    return 0;
-  }
-  if (!std::isfinite(this->MaximumProjectionDistance))
-  {
-    vtkErrorMacro("MaximumProjectionDistance must be a number (0 for no limit).");
-    return 0;
-  }
-
-  kerf::MeshRequirements requirements;
-  bool reused = false;
-  std::string error;
-  if (!state.surface.LoadIfChanged(input, requirements, error, reused))
-  {
-    vtkErrorMacro("Cannot place stroke constraints: " << error);
-    return 0;
-  }
-  const kerf::TriangleMesh& mesh = state.surface.Mesh();
-  if (!reused)
-  {
-    state.locator.reset(new kerf::ClosestPointLocator(mesh));
-    state.normals = kerf::computeVertexNormals(mesh);
-  }
-
-  std::vector<std::vector<kerf::Vector3>> strokes;
-  if (strokeInput)
-  {
-    auto lines = vtk::TakeSmartPointer(strokeInput->GetLines()->NewIterator());
-    const vtkIdType pointCount = strokeInput->GetNumberOfPoints();
-    for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell())
+  return kerf::RunGuarded(this, "Cannot place stroke constraints", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    if (!std::isfinite(this->IsoValue) || !(this->IsoValue + 1.0 > this->IsoValue) ||
+      !(this->IsoValue - 1.0 < this->IsoValue))
     {
-      vtkIdType size;
-      const vtkIdType* ids;
-      lines->GetCurrentCell(size, ids);
-      std::vector<kerf::Vector3> stroke(static_cast<std::size_t>(size));
-      for (vtkIdType k = 0; k < size; ++k)
+      throw kerf::Error("IsoValue " + std::to_string(this->IsoValue) +
+        " must be finite, and small enough that IsoValue +- 1 differ from it");
+    }
+    kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
+    kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
+    const double diagonal = session.mesh().boundingBoxDiagonal();
+
+    std::vector<std::vector<kerf::Vector3>> strokes;
+    if (strokeInput)
+    {
+      strokes = kerf::ReadPolylines(strokeInput, "the stroke input");
+      if (strokes.empty())
       {
-        if (ids[k] < 0 || ids[k] >= pointCount)
-        {
-          vtkErrorMacro("Stroke line " << lines->GetCurrentCellId() << " uses point " << ids[k]
-                                       << ", but the stroke input has " << pointCount << " points.");
-          return 0;
-        }
-        strokeInput->GetPoint(ids[k], stroke[static_cast<std::size_t>(k)].data());
+        throw kerf::Error("the stroke input holds no lines");
       }
-      strokes.push_back(std::move(stroke));
     }
-    if (strokes.empty())
+    else if (!this->State->strokePoints.empty())
     {
-      vtkErrorMacro("The stroke input holds no lines.");
-      return 0;
+      strokes.push_back(this->State->strokePoints);
     }
-  }
-  else if (!state.strokePoints.empty())
-  {
-    strokes.push_back(state.strokePoints);
-  }
-  else
-  {
-    vtkErrorMacro("No stroke: connect polylines to input 1 or set the stroke points.");
-    return 0;
-  }
+    else
+    {
+      throw kerf::Error("there is no stroke: connect polylines to input 1 or set the stroke points");
+    }
 
-  kerf::StrokeConstraintSet set;
-  try
-  {
     kerf::StrokeOptions options;
-    const double diagonal = mesh.boundingBoxDiagonal();
     options.samplesPerSegment = this->SamplesPerSegment;
-    options.offset = this->Offset * diagonal;
+    options.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
     options.isoValue = this->IsoValue;
-    options.maximumDistance = this->MaximumProjectionDistance * diagonal;
-    set = kerf::strokeConstraints(mesh, *state.locator, state.normals, strokes, options);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot place stroke constraints: " << e.what());
-    return 0;
-  }
+    options.maximumDistance =
+      kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
+    const kerf::StrokeConstraintSet set = session.strokeConstraints(strokes, options);
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> vertices;
-  vtkNew<vtkDoubleArray> values;
-  values->SetName("ConstraintValue");
-  vtkNew<vtkSignedCharArray> sides;
-  sides->SetName("Side");
-  for (std::size_t i = 0; i < set.constraints.size(); ++i)
-  {
-    const vtkIdType id = points->InsertNextPoint(set.positions[i].data());
-    vertices->InsertNextCell(1, &id);
-    values->InsertNextValue(set.constraints[i].value);
-    sides->InsertNextValue(set.constraints[i].value > this->IsoValue ? 1 : -1);
-  }
-  output->SetPoints(points);
-  output->SetVerts(vertices);
-  output->GetPointData()->AddArray(values);
-  output->GetPointData()->SetActiveScalars("ConstraintValue");
-  output->GetPointData()->AddArray(sides);
-  vtkNew<vtkDoubleArray> isoValue;
-  isoValue->SetName("IsoValue");
-  isoValue->InsertNextValue(this->IsoValue);
-  output->GetFieldData()->AddArray(isoValue);
-  return 1;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> vertices;
+    std::vector<double> values;
+    vtkNew<vtkSignedCharArray> sides;
+    sides->SetName("Side");
+    for (std::size_t i = 0; i < set.constraints.size(); ++i)
+    {
+      const vtkIdType id = points->InsertNextPoint(set.positions[i].data());
+      vertices->InsertNextCell(1, &id);
+      values.push_back(set.constraints[i].value);
+      sides->InsertNextValue(set.constraints[i].value > this->IsoValue ? 1 : -1);
+    }
+    output->SetPoints(points);
+    output->SetVerts(vertices);
+    output->GetPointData()->AddArray(kerf::MakeArray("ConstraintValue", values));
+    output->GetPointData()->SetActiveScalars("ConstraintValue");
+    output->GetPointData()->AddArray(sides);
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("IsoValue", this->IsoValue));
+  });
 }
 
 void vtkStrokeConstraints::PrintSelf(ostream& os, vtkIndent indent)

@@ -431,7 +431,7 @@ TEST(HarmonicField, FaceGradientsOnSphereFacesAndDegenerateFaces)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Soft constraints (seamcut.txt Eq. 1) and the cached factorization.
+// Soft constraints (SeamCut, Eq. 1) and the cached factorization.
 
 namespace
 {
@@ -757,7 +757,7 @@ std::vector<SoftConstraint> scatteredConstraints(const TriangleMesh& mesh, int c
   return soft;
 }
 
-// The least-squares field by dense normal equations over every non-hard vertex (seamcut.txt
+// The least-squares field by dense normal equations over every non-hard vertex (SeamCut
 // Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F = -L_F^T L_D f_D + w^2 C_F^T (c - C_D f_D), L_F the
 // Laplacian rows of the non-hard vertices.
 std::vector<double> denseLeastSquares(const TriangleMesh& mesh, const std::vector<double>& weights,
@@ -1007,7 +1007,7 @@ TEST(HarmonicField, RefusesBadSoftConstraints)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Strokes to constraints (seamcut.txt 2.1.1).
+// Strokes to constraints (SeamCut, section 2.1.1).
 
 TEST(StrokeConstraints, StraightStrokeOnPlane)
 {

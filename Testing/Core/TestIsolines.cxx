@@ -356,7 +356,7 @@ TEST(Isolines, RefusesFieldOfWrongSize)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Scores (roi-scissor.txt 4.2).
+// Scores (ROI Scissor, section 4.2).
 
 TEST(Isolines, ScoreOfLinearFieldIsItsSlope)
 {

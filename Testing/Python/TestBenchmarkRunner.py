@@ -95,8 +95,8 @@ class BenchmarkRunner(unittest.TestCase):
     def test_errors_are_reported(self):
         for arguments, message in (
                 (["--data", "/nonexistent/psb"], "no off/ subfolder"),
-                (["--data", DATA, "--method", "nonsense", "--models", "1"], "Unknown method 'nonsense'"),
-                (["--data", DATA, "--models", "12345"], "Model 12345 is not in"),
+                (["--data", DATA, "--method", "nonsense", "--models", "1"], "unknown method 'nonsense'"),
+                (["--data", DATA, "--models", "12345"], "model 12345 is not in"),
                 (["--data", DATA, "--jobs", "0"], "--jobs expects")):
             for command in ([PROGRAM, "benchmark"], [sys.executable, "-m", "kerf.benchmark"]):
                 result = subprocess.run(command + arguments + ["--no-pictures", "-o", os.path.join(self.folder, "bad")],

@@ -29,7 +29,7 @@ struct Isoline
 /// edge's length from a vertex is placed on the vertex, so near-ties give no vanishing segments.
 std::vector<Isoline> extractIsolines(const TriangleMesh& mesh, const std::vector<double>& field, double value);
 
-/// ROI Scissor's score of a set of polylines (roi-scissor.txt 4.2):
+/// ROI Scissor's score of a set of polylines (ROI Scissor, section 4.2):
 /// S = sum_T |I cap T| / |I| * |grad f_T|, the length-weighted mean gradient magnitude.
 double isolineScore(const std::vector<Isoline>& isolines, const std::vector<double>& gradientMagnitudes);
 

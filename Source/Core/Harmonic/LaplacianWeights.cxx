@@ -268,7 +268,7 @@ LaplacianWeighting parseLaplacianWeighting(const std::string& name)
       return entry.first;
     }
   }
-  throw Error("the weighting must be uniform, cotangent, concavity, smooth-concavity or intrinsic-delaunay, got '" + name + "'");
+  throw Error("weighting must be uniform, cotangent, concavity, smooth-concavity or intrinsic-delaunay, got '" + name + "'");
 }
 
 std::string cacheKey(const LaplacianWeightOptions& options)
