@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 
 namespace kerf
@@ -146,7 +147,7 @@ struct MetricSums
 };
 
 // The benchmark's human baseline: every unordered pair of human segmentations.
-ModelScores runHumans(const BenchmarkCase& c, const MethodParameters&)
+ModelScores scoreHumans(const BenchmarkCase& c)
 {
   const SegmentationEvaluator evaluator(c.surface->mesh());
   std::vector<PreparedSegmentation> humans;
@@ -167,15 +168,91 @@ ModelScores runHumans(const BenchmarkCase& c, const MethodParameters&)
     }
   }
   ModelScores result = sums.scores(segments / static_cast<double>(humans.size()), 0.0);
+  for (const char* column : { "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" })
+  {
+    result.values[column] = std::numeric_limits<double>::quiet_NaN();
+  }
   result.shownMethod = c.humans[0];
   result.shownHuman = c.humans[1];
   return result;
 }
 
+// Automatic methods: the mesh and the number of segments only, scored against every human.
+ModelScores scoreAutomatic(const BenchmarkCase& c, const SegmentationMethod& method, const MethodParameters& parameters)
+{
+  const SegmentationEvaluator evaluator(c.surface->mesh());
+  const auto start = std::chrono::steady_clock::now();
+  const MethodOutput output = method.segment(c, nullptr, parameters);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const PreparedSegmentation prepared = evaluator.prepare(output.labels);
+  MetricSums sums;
+  for (const std::vector<int>& human : c.humans)
+  {
+    sums.add(evaluator.compare(prepared, evaluator.prepare(human)), nullptr);
+  }
+  ModelScores result = sums.scores(prepared.segmentCount, seconds);
+  for (const char* column : { "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" })
+  {
+    result.values[column] = std::numeric_limits<double>::quiet_NaN();
+  }
+  result.shownMethod = output.labels;
+  result.shownHuman = c.humans[0];
+  return result;
+}
+
+// Interactive methods: every human in turn gives the input, the others are the references.
+ModelScores scoreInteractive(const BenchmarkCase& c, const SegmentationMethod& method, const MethodParameters& parameters)
+{
+  const SegmentationEvaluator evaluator(c.surface->mesh());
+  std::vector<PreparedSegmentation> humans;
+  for (const std::vector<int>& labels : c.humans)
+  {
+    humans.push_back(evaluator.prepare(labels));
+  }
+  MetricSums sums;
+  double segments = 0.0, seconds = 0.0, inputs = 0.0, fidelity = 0.0, fidelityHamming = 0.0, matched = 0.0;
+  ModelScores result;
+  for (std::size_t input = 0; input < c.humans.size(); ++input)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const MethodOutput output = method.segment(c, &c.humans[input], parameters);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const PreparedSegmentation prepared = evaluator.prepare(output.labels);
+    for (std::size_t h = 0; h < humans.size(); ++h)
+    {
+      if (h != input)
+      {
+        sums.add(evaluator.compare(prepared, humans[h]), nullptr);
+      }
+    }
+    const SegmentationScores self = evaluator.compare(prepared, humans[input]);
+    fidelity += self.randIndexError;
+    fidelityHamming += self.hammingDistance;
+    segments += prepared.segmentCount;
+    inputs += output.inputs;
+    matched += prepared.segmentCount == humans[input].segmentCount ? 1.0 : 0.0;
+    if (input == 0)
+    {
+      result.shownMethod = output.labels;
+      result.shownHuman = c.humans[0];
+    }
+  }
+  const double runs = static_cast<double>(c.humans.size());
+  ModelScores scores = sums.scores(segments / runs, seconds / runs);
+  scores.values["Fidelity"] = fidelity / runs;
+  scores.values["FidelityHamming"] = fidelityHamming / runs;
+  scores.values["Inputs"] = inputs / runs;
+  scores.values["InputSegmentsMatched"] = matched / runs;
+  scores.shownMethod = std::move(result.shownMethod);
+  scores.shownHuman = std::move(result.shownHuman);
+  return scores;
+}
+
 // SeamCut's harmonic cuts with simulated strokes: one stroke along each boundary between two
-// segments of human 0, one field and cut per stroke, all cuts together segmenting the mesh;
-// scored against the other humans.
-ModelScores runHarmonicCuts(const BenchmarkCase& c, const MethodParameters& parameters)
+// segments of the input human, one field and cut per stroke, and the segments the strokes
+// intend (labelStrokeCuts).
+MethodOutput segmentWithHarmonicCuts(
+  const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters)
 {
   const TriangleMesh& mesh = c.surface->mesh();
   HarmonicFieldOptions fieldOptions;
@@ -187,36 +264,30 @@ ModelScores runHarmonicCuts(const BenchmarkCase& c, const MethodParameters& para
   strokeOptions.offset = parameters.positive("offset", 0.01) * diagonal;
   strokeOptions.maximumDistance = 0.05 * diagonal;
   const double spacing = parameters.positive("spacing", 0.03) * diagonal;
+  const double support = parameters.positive("support", 3.0) * strokeOptions.offset;
 
-  const auto start = std::chrono::steady_clock::now();
   HarmonicCutSession session(c.surface);
+  const std::vector<BoundaryStroke> strokes = boundaryStrokes(mesh, *input, spacing);
   std::vector<HarmonicCutSession::StrokeCut> strokeCuts;
-  const std::vector<BoundaryStroke> strokes = boundaryStrokes(mesh, c.humans[0], spacing);
   strokeCuts.reserve(strokes.size());
-  std::vector<FieldCut> cuts;
+  std::vector<CutWithStroke> cuts;
   for (const BoundaryStroke& stroke : strokes)
   {
     strokeCuts.push_back(session.cutFromStroke({ stroke.points }, strokeOptions, fieldOptions));
     const HarmonicCutSession::StrokeCut& cut = strokeCuts.back();
     if (cut.chosen >= 0)
     {
-      cuts.push_back({ &cut.field, strokeOptions.isoValue, { &cut.isolines[static_cast<std::size_t>(cut.chosen)] } });
+      CutWithStroke withStroke;
+      withStroke.cut = { &cut.field, strokeOptions.isoValue, { &cut.isolines[static_cast<std::size_t>(cut.chosen)] } };
+      withStroke.stroke = stroke.points;
+      withStroke.sideFaces = cut.sideFaces;
+      cuts.push_back(std::move(withStroke));
     }
   }
-  const std::vector<int> labels = labelCuts(mesh, cuts);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  const SegmentationEvaluator evaluator(mesh);
-  const PreparedSegmentation prepared = evaluator.prepare(labels);
-  MetricSums sums;
-  for (std::size_t h = 1; h < c.humans.size(); ++h)
-  {
-    sums.add(evaluator.compare(prepared, evaluator.prepare(c.humans[h])), nullptr);
-  }
-  ModelScores result = sums.scores(prepared.segmentCount, seconds);
-  result.shownMethod = labels;
-  result.shownHuman = c.humans[0];
-  return result;
+  MethodOutput output;
+  output.labels = labelStrokeCuts(mesh, cuts, support);
+  output.inputs = static_cast<int>(strokes.size());
+  return output;
 }
 
 std::string quoted(const std::string& text)
@@ -268,11 +339,12 @@ std::vector<std::string> splitCsv(const std::string& line)
 const std::vector<SegmentationMethod>& segmentationMethods()
 {
   static const std::vector<SegmentationMethod> methods = {
-    { "human",
-      "every pair of the model's human segmentations (the benchmark's human baseline)", {}, runHumans },
+    { "human", "every pair of the model's human segmentations (the benchmark's human baseline)", {},
+      SegmentationMethod::Protocol::HumanBaseline, nullptr },
     { "harmonic-cuts",
-      "SeamCut's cuts from simulated strokes along human 0's boundaries, scored against the other humans",
-      { "weighting", "samples", "offset", "spacing", "weight" }, runHarmonicCuts },
+      "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
+      { "weighting", "samples", "offset", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
+      segmentWithHarmonicCuts },
   };
   return methods;
 }
@@ -295,14 +367,14 @@ const std::vector<std::string>& benchmarkMetricColumns()
 {
   static const std::vector<std::string> columns = { "Comparisons", "CutDiscrepancy", "HammingDistance",
     "MissingRate", "FalseAlarmRate", "RandIndexError", "GlobalConsistencyError", "LocalConsistencyError",
-    "Segments", "Seconds" };
+    "Segments", "Seconds", "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" };
   return columns;
 }
 
 const std::vector<std::string>& benchmarkSummaryColumns()
 {
   static const std::vector<std::string> columns = { "CutDiscrepancy", "HammingDistance", "RandIndexError",
-    "GlobalConsistencyError", "LocalConsistencyError", "Seconds" };
+    "GlobalConsistencyError", "LocalConsistencyError", "Fidelity", "InputSegmentsMatched", "Seconds" };
   return columns;
 }
 
@@ -310,7 +382,19 @@ BenchmarkRow runBenchmarkModel(const BenchmarkCase& benchmarkCase, const Segment
   const std::string& parameters, ModelScores* scores)
 {
   const MethodParameters parsed(parameters, method.parameters);
-  ModelScores result = method.run(benchmarkCase, parsed);
+  ModelScores result;
+  switch (method.protocol)
+  {
+    case SegmentationMethod::Protocol::HumanBaseline:
+      result = scoreHumans(benchmarkCase);
+      break;
+    case SegmentationMethod::Protocol::Interactive:
+      result = scoreInteractive(benchmarkCase, method, parsed);
+      break;
+    case SegmentationMethod::Protocol::Automatic:
+      result = scoreAutomatic(benchmarkCase, method, parsed);
+      break;
+  }
   BenchmarkRow row;
   row.model = benchmarkCase.model.id;
   row.category = benchmarkCase.model.category;
@@ -417,9 +501,16 @@ std::string writeSummary(const std::vector<BenchmarkRow>& rows, const std::strin
     csv << "," << column;
   }
   csv << "\n";
-  table << std::left << std::setw(11) << "category" << std::right << std::setw(7) << "models" << std::setw(9)
-        << "CD" << std::setw(9) << "HD" << std::setw(9) << "1-RI" << std::setw(9) << "GCE" << std::setw(9) << "LCE"
-        << std::setw(10) << "seconds" << "\n";
+  // Terminal headings of the summary columns: the fidelity is 1 - RI against the input human.
+  const std::map<std::string, std::string> headings = { { "CutDiscrepancy", "CD" }, { "HammingDistance", "HD" },
+    { "RandIndexError", "1-RI" }, { "GlobalConsistencyError", "GCE" }, { "LocalConsistencyError", "LCE" },
+    { "Fidelity", "fidelity" }, { "InputSegmentsMatched", "k-match" }, { "Seconds", "seconds" } };
+  table << std::left << std::setw(11) << "category" << std::right << std::setw(7) << "models";
+  for (const std::string& column : benchmarkSummaryColumns())
+  {
+    table << std::setw(column == "Seconds" ? 10 : 9) << headings.at(column);
+  }
+  table << "\n";
   for (const auto& group : groups)
   {
     csv << group.first << "," << method << "," << group.second.size();

@@ -48,13 +48,33 @@ struct ModelScores
   std::vector<int> shownHuman;          ///< the human it is shown beside
 };
 
-/// A segmentation method the runner knows.
+/// What a method made of one model.
+struct MethodOutput
+{
+  std::vector<int> labels; ///< per face
+  int inputs = 0;          ///< strokes or clicks it was given (interactive methods)
+};
+
+/// A segmentation method the runner knows, and the protocol it is scored with.
 struct SegmentationMethod
 {
+  enum class Protocol
+  {
+    /// The humans against each other (the benchmark's human baseline); `segment` is unused.
+    HumanBaseline,
+    /// Input simulated from one human: every human of the model in turn is the input and the
+    /// others the references (leave one out, as the human baseline); also scored against the
+    /// input human itself (the fidelity: how well the user's intent is reproduced).
+    Interactive,
+    /// The mesh and the number of segments only (nSeg-ByModel.txt), scored against every human.
+    Automatic
+  };
   std::string name;
   std::string description;
   std::vector<std::string> parameters;
-  std::function<ModelScores(const BenchmarkCase&, const MethodParameters&)> run;
+  Protocol protocol = Protocol::Interactive;
+  /// Segments a model; `input` is the human the input is simulated from (Interactive) or null.
+  std::function<MethodOutput(const BenchmarkCase&, const std::vector<int>* input, const MethodParameters&)> segment;
 };
 
 /// Every method, in the order the help lists them.
@@ -63,7 +83,11 @@ const std::vector<SegmentationMethod>& segmentationMethods();
 const SegmentationMethod& findSegmentationMethod(const std::string& name);
 
 /// The columns a method fills for each model (after Model, Category, Method, Parameters): the
-/// comparisons made, the benchmark's metrics, the number of segments and the method's time.
+/// comparisons made, the benchmark's metrics against the reference humans, the number of
+/// segments and the method's time per segmentation; for interactive methods also the fidelity
+/// (1 - Rand index and Hamming distance against the input human), the inputs given (strokes or
+/// clicks, mean per run) and the fraction of runs that made as many segments as the input human
+/// (NaN for methods without input).
 const std::vector<std::string>& benchmarkMetricColumns();
 /// The columns summary.csv averages per category.
 const std::vector<std::string>& benchmarkSummaryColumns();

@@ -212,6 +212,10 @@ HarmonicCutSession::StrokeCut HarmonicCutSession::cutFromStroke(const std::vecto
   cut.field = this->solve(constraints, fieldOptions).field;
   cut.isolines = extractIsolines(this->mesh(), cut.field, strokeOptions.isoValue);
   cut.chosen = nearestIsoline(cut.isolines, set.strokeSamples);
+  for (const SoftConstraint& constraint : set.constraints)
+  {
+    cut.sideFaces.push_back(constraint.face);
+  }
   return cut;
 }
 

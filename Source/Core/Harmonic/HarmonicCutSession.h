@@ -103,6 +103,7 @@ public:
     std::vector<double> field;
     std::vector<Isoline> isolines; ///< every component of f = isoValue
     int chosen = -1;               ///< the one nearest to the stroke, or -1
+    std::vector<int> sideFaces;    ///< the faces holding the stroke's constraint points
   };
   StrokeCut cutFromStroke(const std::vector<std::vector<Vector3>>& strokes, const StrokeOptions& strokeOptions,
     const HarmonicFieldOptions& fieldOptions);
