@@ -61,7 +61,7 @@ class KerfPluginTest(unittest.TestCase):
         segments = vtk_to_numpy(servermanager.Fetch(cut).GetCellData().GetArray("Segment"))
         self.assertEqual(len(segments), 19536)
         self.assertGreaterEqual(segments.max(), 1)
-        self.assertEqual(servermanager.Fetch(cut, 1).GetNumberOfLines() >= 1, True)
+        self.assertGreaterEqual(servermanager.Fetch(cut, idx=1).GetNumberOfLines(), 1)
 
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}
