@@ -12,6 +12,7 @@
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
@@ -391,6 +392,14 @@ void WriteCutLines(const CutResult& cut, vtkPolyData* lines)
   lines->GetCellData()->AddArray(MakeArray("Score", cut.scores));
   lines->GetCellData()->AddArray(MakeArray("Length", lengths));
   lines->GetCellData()->AddArray(MakeArray("Closed", closed));
+}
+
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output)
+{
+  output->GetPointData()->AddArray(MakeArray(name, surface.ToInputPoints(solution.field)));
+  output->GetPointData()->SetActiveScalars(name);
+  output->GetFieldData()->AddArray(MakeFieldValue("RelativeResidual", solution.relativeResidual));
+  output->GetFieldData()->AddArray(MakeFieldValue("SolverWork", SolverWorkName(solution.work)));
 }
 
 std::string SolverWorkName(HarmonicFieldSolution::Work work)

@@ -109,6 +109,10 @@ vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vect
 /// IsoValue, Score, Length and Closed.
 void WriteCutLines(const CutResult& cut, vtkPolyData* lines);
 
+/// A solved field on the output: the point array `name` (its active scalars) and the field data
+/// RelativeResidual and SolverWork.
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output);
+
 /// "factorization", "update" or "back-substitution".
 std::string SolverWorkName(HarmonicFieldSolution::Work work);
 

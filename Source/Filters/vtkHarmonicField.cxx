@@ -110,13 +110,9 @@ int vtkHarmonicField::RequestData(
     kerf::CheckFinite({ &solution.field, &magnitudes }, solution.relativeResidual,
       "the field or its gradient overflows (hard or constraint values too large for double precision)");
     this->State->surface.MakeOutput(input, output);
-    output->GetPointData()->AddArray(
-      kerf::MakeArray(this->FieldArrayName, this->State->surface.ToInputPoints(solution.field)));
-    output->GetPointData()->SetActiveScalars(this->FieldArrayName);
+    kerf::WriteField(this->State->surface, solution, this->FieldArrayName, output);
     output->GetCellData()->AddArray(kerf::MakeArray(this->GradientArrayName, gradients));
     output->GetCellData()->AddArray(kerf::MakeArray(this->GradientMagnitudeArrayName, magnitudes));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("RelativeResidual", solution.relativeResidual));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SolverWork", kerf::SolverWorkName(solution.work)));
   });
 }
 

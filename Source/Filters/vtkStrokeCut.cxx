@@ -117,12 +117,8 @@ int vtkStrokeCut::RequestData(
     const kerf::CutResult cut = session.chooseCut(solution.field, cutOptions);
 
     this->State->surface.MakeOutput(input, output);
-    output->GetPointData()->AddArray(
-      kerf::MakeArray("HarmonicField", this->State->surface.ToInputPoints(solution.field)));
-    output->GetPointData()->SetActiveScalars("HarmonicField");
+    kerf::WriteField(this->State->surface, solution, "HarmonicField", output);
     output->GetCellData()->AddArray(kerf::MakeIntArray("Segment", cut.labels));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("RelativeResidual", solution.relativeResidual));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SolverWork", kerf::SolverWorkName(solution.work)));
     kerf::WriteCutLines(cut, vtkPolyData::GetData(outputVector, 1));
   });
 }
