@@ -72,6 +72,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicSolverBenchmarks();
   kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

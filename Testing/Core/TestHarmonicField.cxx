@@ -38,6 +38,8 @@ std::string weightingName(LaplacianWeighting weighting)
       return "ConcavityAware";
     case LaplacianWeighting::SmoothConcavity:
       return "SmoothConcavity";
+    case LaplacianWeighting::IntrinsicDelaunay:
+      return "IntrinsicDelaunay";
   }
   return "?";
 }
@@ -437,7 +439,7 @@ TEST(HarmonicField, FaceGradientsOnSphereFacesAndDegenerateFaces)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Soft constraints (seamcut.txt Eq. 1) and the cached factorization.
+// Soft constraints (SeamCut, Eq. 1) and the cached factorization.
 
 namespace
 {
@@ -829,7 +831,7 @@ std::vector<SoftConstraint> scatteredConstraints(const TriangleMesh& mesh, int c
 }
 
 // The field by dense normal equations over every non-hard vertex, L_F the Laplacian rows of the
-// non-hard vertices. Least squares (seamcut.txt Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F =
+// non-hard vertices. Least squares (SeamCut, Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F =
 // -L_F^T L_D f_D + w^2 C_F^T (c - C_D f_D). Point values: (L_FF + K w C_F^T C_F) f_F = -L_FD f_D +
 // K w C_F^T (c - C_D f_D), K = HarmonicFieldSolver::PointValueStiffness.
 std::vector<double> denseReference(const TriangleMesh& mesh, const std::vector<double>& weights,
@@ -1095,7 +1097,7 @@ TEST(HarmonicField, RefusesBadSoftConstraints)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Strokes to constraints (seamcut.txt 2.1.1).
+// Strokes to constraints (SeamCut, section 2.1.1).
 
 TEST(StrokeConstraints, StraightStrokeOnPlane)
 {
