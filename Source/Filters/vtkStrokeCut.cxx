@@ -104,6 +104,7 @@ int vtkStrokeCut::RequestData(
     kerf::HarmonicFieldOptions fieldOptions;
     fieldOptions.weights.weighting = static_cast<kerf::LaplacianWeighting>(this->Weighting);
     fieldOptions.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
+    fieldOptions.formulation = static_cast<kerf::SoftConstraintFormulation>(this->Formulation);
     const kerf::HarmonicFieldSolution solution = session.solve(constraints, fieldOptions);
     this->UpdateProgress(0.8);
 
@@ -127,6 +128,7 @@ void vtkStrokeCut::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Weighting: " << this->Weighting << "\n";
+  os << indent << "Formulation: " << this->Formulation << "\n";
   os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
   os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
   os << indent << "Offset: " << this->Offset << "\n";

@@ -42,6 +42,13 @@ public:
   ///@}
 
   ///@{
+  /// How the stroke's constraints shape the field, as vtkHarmonicField's Formulation.
+  /// Default 1 (least squares, the most faithful cut); 0 (point values) is faster.
+  vtkSetClampMacro(Formulation, int, 0, 1);
+  vtkGetMacro(Formulation, int);
+  ///@}
+
+  ///@{
   /// Weight of the stroke's soft constraints, relative to the Laplacian's mean diagonal. Default 1.
   vtkSetClampMacro(SoftConstraintWeight, double, 1e-6, 1e6);
   vtkGetMacro(SoftConstraintWeight, double);
@@ -92,6 +99,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int Weighting = 1;
+  int Formulation = 1;
   double SoftConstraintWeight = 1.0;
   int SamplesPerSegment = 4;
   double Offset = 0.01;

@@ -42,7 +42,7 @@ struct FieldConstraints
   std::vector<double> dirichletValues;
   std::vector<SoftConstraint> soft;
   double softWeight = 1.0;
-  SoftConstraintFormulation formulation = SoftConstraintFormulation::PointValues;
+  SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
 };
 
 /// A solved field and how it was obtained.
