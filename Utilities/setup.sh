@@ -13,9 +13,11 @@ packages=(
   libpng-dev libfreetype-dev libglew-dev libgl2ps-dev libutfcpp-dev libxml2-dev libexpat1-dev
   zlib1g-dev libx11-dev libxt-dev libgl-dev python3-dev
   # Core dependencies; OpenBLAS makes CHOLMOD's supernodal factorization fast
-  libeigen3-dev libopenmesh-dev libboost-graph-dev libsuitesparse-dev libopenblas-dev
+  libeigen3-dev libopenmesh-dev libsuitesparse-dev libopenblas-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth valgrind
+  # CGAL's heat method, benchmarked beside Kerf's (header-only)
+  libcgal-dev
 )
 
 missing=()

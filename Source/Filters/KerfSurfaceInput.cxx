@@ -3,8 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/PolygonMesh.h"
-#include "Mesh/PointWelding.h"
-#include "Mesh/Triangulation.h"
+#include "Mesh/SurfaceConversion.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -18,8 +17,10 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <string>
 
@@ -140,90 +141,26 @@ bool CopyToDoubles(vtkDataArray* array, int components, std::vector<double>& val
   return true;
 }
 
-bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements, std::string& error)
+/// One conversion of a vtkPolyData's geometry, shared by every SurfaceInput that loads it.
+struct ConvertedSurface
 {
-  if (!input)
-  {
-    error = "the input is not a vtkPolyData";
-    return false;
-  }
-  try
-  {
-    PolygonMesh polygons;
-    const vtkIdType pointCount = input->GetNumberOfPoints();
-    if (pointCount > std::numeric_limits<int>::max())
-    {
-      error = "the input has more points than Kerf indexes (2^31 - 1)";
-      return false;
-    }
-    if (pointCount > 0)
-    {
-      std::vector<double> coordinates;
-      if (!CopyToDoubles(input->GetPoints()->GetData(), 3, coordinates))
-      {
-        error = "the input points do not have 3 components";
-        return false;
-      }
-      polygons.points.resize(static_cast<std::size_t>(pointCount));
-      for (vtkIdType i = 0; i < pointCount; ++i)
-      {
-        polygons.points[i] = Vector3(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]);
-      }
-    }
-    const vtkIdType verts = cellCount(input->GetVerts());
-    const vtkIdType lines = cellCount(input->GetLines());
-    const vtkIdType polys = cellCount(input->GetPolys());
-    const vtkIdType strips = cellCount(input->GetStrips());
-    std::vector<vtkIdType> polygonCell;
-    polygonCell.reserve(static_cast<std::size_t>(polys + strips));
-    polygons.polygonIndices.reserve(static_cast<std::size_t>(polys) * 3);
-    polygons.polygonOffsets.reserve(static_cast<std::size_t>(polys + strips) + 1);
-    appendCellArray(input->GetPolys(), verts + lines, false, pointCount, polygons, polygonCell);
-    appendCellArray(input->GetStrips(), verts + lines + polys, true, pointCount, polygons, polygonCell);
-
-    Triangulation triangulation = triangulatePolygons(polygons);
-    this->Rebuild = verts > 0 || lines > 0 || strips > 0 || !triangulation.allTriangles;
-    this->Source.resize(triangulation.sourcePolygon.size());
-    for (std::size_t t = 0; t < this->Source.size(); ++t)
-    {
-      this->Source[t] = polygonCell[triangulation.sourcePolygon[t]];
-    }
-    TriangleMesh::checkIndices(triangulation.triangles, static_cast<int>(polygons.points.size()));
-    this->Representatives = findCoincidentPoints(polygons.points);
-    this->Welded = 0;
-    for (std::size_t i = 0; i < this->Representatives.size(); ++i)
-    {
-      this->Welded += this->Representatives[i] != static_cast<int>(i) ? 1 : 0;
-    }
-    weldTriangles(this->Representatives, triangulation.triangles);
-    this->Surface = TriangleMesh(std::move(polygons.points), std::move(triangulation.triangles));
-    this->Inspection = inspectMesh(this->Surface);
-    const std::string problems = describeProblems(this->Inspection, requirements);
-    if (!problems.empty())
-    {
-      error = "the input surface is not accepted: " + problems + ".";
-      return false;
-    }
-  }
-  catch (const Error& e)
-  {
-    error = std::string("the input surface is not accepted: ") + e.what() + ".";
-    return false;
-  }
-  catch (const std::bad_alloc&)
-  {
-    error = "out of memory while converting the input surface";
-    return false;
-  }
-  return true;
-}
+  std::shared_ptr<const Surface> surface;
+  MeshReport report;
+  std::vector<vtkIdType> source;
+  std::vector<int> representatives;
+  int welded = 0;
+  bool rebuild = false;
+  /// The geometry it came from: objects and modification times of the point array and the four
+  /// cell arrays (the coordinates are compared as well).
+  std::vector<std::pair<const void*, vtkMTimeType>> key;
+};
 
 namespace
 {
 std::vector<std::pair<const void*, vtkMTimeType>> geometryKey(vtkPolyData* input)
 {
   std::vector<std::pair<const void*, vtkMTimeType>> key;
-  vtkDataArray* points = input && input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
+  vtkDataArray* points = input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
   key.emplace_back(points, points ? points->GetMTime() : 0);
   for (vtkCellArray* cells : { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
   {
@@ -231,13 +168,13 @@ std::vector<std::pair<const void*, vtkMTimeType>> geometryKey(vtkPolyData* input
   }
   return key;
 }
-} // namespace
 
-bool SurfaceInput::SamePoints(vtkPolyData* input) const
+// Whether the input's coordinates are, bit for bit, those of the converted mesh. Points edited in
+// place without vtkPoints::Modified() keep their modification time: the coordinates themselves
+// are compared (the mesh keeps every input point, unreferenced ones included).
+bool samePoints(vtkPolyData* input, const ConvertedSurface& converted)
 {
-  // Points edited in place without vtkPoints::Modified() keep their modification time: compare
-  // the coordinates themselves (the mesh keeps every input point, unreferenced ones included).
-  const std::vector<Vector3>& loaded = this->Surface.points();
+  const std::vector<Vector3>& loaded = converted.surface->mesh().points();
   vtkDataArray* points = input->GetPoints() ? input->GetPoints()->GetData() : nullptr;
   if (!points || points->GetNumberOfTuples() != static_cast<vtkIdType>(loaded.size()))
   {
@@ -248,43 +185,178 @@ bool SurfaceInput::SamePoints(vtkPolyData* input) const
     return true;
   }
   static_assert(sizeof(Vector3) == 3 * sizeof(double), "Vector3 holds three packed doubles");
-  std::vector<double> converted;
+  std::vector<double> copied;
   auto* doubles = vtkDoubleArray::SafeDownCast(points);
-  if (!doubles && !CopyToDoubles(points, 3, converted))
+  if (!doubles && !CopyToDoubles(points, 3, copied))
   {
     return false;
   }
-  const double* coordinates = doubles ? doubles->GetPointer(0) : converted.data();
+  const double* coordinates = doubles ? doubles->GetPointer(0) : copied.data();
   return std::memcmp(coordinates, loaded.data(), loaded.size() * sizeof(Vector3)) == 0;
 }
 
-bool SurfaceInput::LoadIfChanged(
-  vtkPolyData* input, const MeshRequirements& requirements, std::string& error, bool& reused)
+// Triangulates, welds and validates the input; throws kerf::Error or std::bad_alloc.
+std::shared_ptr<ConvertedSurface> convert(vtkPolyData* input)
+{
+  auto converted = std::make_shared<ConvertedSurface>();
+  PolygonMesh polygons;
+  const vtkIdType pointCount = input->GetNumberOfPoints();
+  if (pointCount > std::numeric_limits<int>::max())
+  {
+    throw Error("the input has more points than Kerf indexes (2^31 - 1)");
+  }
+  if (pointCount > 0)
+  {
+    std::vector<double> coordinates;
+    if (!CopyToDoubles(input->GetPoints()->GetData(), 3, coordinates))
+    {
+      throw Error("the input points do not have 3 components");
+    }
+    polygons.points.resize(static_cast<std::size_t>(pointCount));
+    for (vtkIdType i = 0; i < pointCount; ++i)
+    {
+      polygons.points[i] = Vector3(coordinates[3 * i], coordinates[3 * i + 1], coordinates[3 * i + 2]);
+    }
+  }
+  const vtkIdType verts = cellCount(input->GetVerts());
+  const vtkIdType lines = cellCount(input->GetLines());
+  const vtkIdType polys = cellCount(input->GetPolys());
+  const vtkIdType strips = cellCount(input->GetStrips());
+  std::vector<vtkIdType> polygonCell;
+  polygonCell.reserve(static_cast<std::size_t>(polys + strips));
+  polygons.polygonIndices.reserve(static_cast<std::size_t>(polys) * 3);
+  polygons.polygonOffsets.reserve(static_cast<std::size_t>(polys + strips) + 1);
+  appendCellArray(input->GetPolys(), verts + lines, false, pointCount, polygons, polygonCell);
+  appendCellArray(input->GetStrips(), verts + lines + polys, true, pointCount, polygons, polygonCell);
+
+  ConvertedPolygons triangles = convertPolygons(std::move(polygons));
+  converted->rebuild = verts > 0 || lines > 0 || strips > 0 || !triangles.allTriangles;
+  converted->source.resize(triangles.sourcePolygon.size());
+  for (std::size_t t = 0; t < converted->source.size(); ++t)
+  {
+    converted->source[t] = polygonCell[triangles.sourcePolygon[t]];
+  }
+  converted->representatives = std::move(triangles.representatives);
+  converted->welded = triangles.welded;
+  converted->surface = std::make_shared<const Surface>(std::move(triangles.mesh));
+  converted->report = inspectMesh(converted->surface->mesh());
+  return converted;
+}
+
+// The conversions alive in this process, found by their geometry key.
+std::mutex RegistryMutex;
+std::vector<std::weak_ptr<const ConvertedSurface>> Registry;
+
+std::shared_ptr<const ConvertedSurface> findConverted(
+  vtkPolyData* input, const std::vector<std::pair<const void*, vtkMTimeType>>& key)
+{
+  std::lock_guard<std::mutex> lock(RegistryMutex);
+  for (const auto& entry : Registry)
+  {
+    std::shared_ptr<const ConvertedSurface> converted = entry.lock();
+    if (converted && converted->key == key && samePoints(input, *converted))
+    {
+      return converted;
+    }
+  }
+  return nullptr;
+}
+
+void registerConverted(const std::shared_ptr<const ConvertedSurface>& converted)
+{
+  std::lock_guard<std::mutex> lock(RegistryMutex);
+  Registry.erase(std::remove_if(Registry.begin(), Registry.end(),
+                   [](const std::weak_ptr<const ConvertedSurface>& entry) { return entry.expired(); }),
+    Registry.end());
+  Registry.push_back(converted);
+}
+} // namespace
+
+SurfaceInput::SurfaceInput() = default;
+SurfaceInput::~SurfaceInput() = default;
+
+bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements, std::string& error)
 {
   if (!input)
   {
     error = "the input is not a vtkPolyData";
     return false;
   }
-  const std::vector<std::pair<const void*, vtkMTimeType>> key = geometryKey(input);
-  reused = this->Loaded && key == this->LoadedGeometry && this->SamePoints(input);
-  if (reused)
+  try
   {
-    return true;
+    const std::vector<std::pair<const void*, vtkMTimeType>> key = geometryKey(input);
+    std::shared_ptr<const ConvertedSurface> converted;
+    if (this->Current && this->Current->key == key && samePoints(input, *this->Current))
+    {
+      converted = this->Current;
+    }
+    else
+    {
+      converted = findConverted(input, key);
+    }
+    if (!converted)
+    {
+      std::shared_ptr<ConvertedSurface> fresh = convert(input);
+      fresh->key = key;
+      registerConverted(fresh);
+      converted = std::move(fresh);
+    }
+    this->Current = converted;
   }
-  this->Loaded = false;
-  if (!this->Load(input, requirements, error))
+  catch (const Error& e)
   {
+    this->Current.reset();
+    error = std::string("the input surface is not accepted: ") + e.what() + ".";
     return false;
   }
-  this->LoadedGeometry = key;
-  this->Loaded = true;
+  catch (const std::bad_alloc&)
+  {
+    this->Current.reset();
+    error = "out of memory while converting the input surface";
+    return false;
+  }
+  const std::string problems = describeProblems(this->Current->report, requirements);
+  if (!problems.empty())
+  {
+    error = "the input surface is not accepted: " + problems + ".";
+    return false;
+  }
   return true;
+}
+
+const std::shared_ptr<const Surface>& SurfaceInput::SharedSurface() const
+{
+  return this->Current->surface;
+}
+
+const MeshReport& SurfaceInput::Report() const
+{
+  return this->Current->report;
+}
+
+const std::vector<vtkIdType>& SurfaceInput::SourceCells() const
+{
+  return this->Current->source;
+}
+
+int SurfaceInput::WeldedPointCount() const
+{
+  return this->Current->welded;
+}
+
+int SurfaceInput::Representative(int point) const
+{
+  return this->Current->representatives[static_cast<std::size_t>(point)];
+}
+
+bool SurfaceInput::Rebuilt() const
+{
+  return this->Current->rebuild;
 }
 
 void SurfaceInput::MakeOutput(vtkPolyData* input, vtkPolyData* output) const
 {
-  if (!this->Rebuild)
+  if (!this->Rebuilt())
   {
     output->CopyStructure(input);
     output->GetPointData()->PassData(input->GetPointData());
@@ -294,8 +366,9 @@ void SurfaceInput::MakeOutput(vtkPolyData* input, vtkPolyData* output) const
   }
   output->SetPoints(input->GetPoints());
   vtkNew<vtkCellArray> triangles;
-  triangles->AllocateExact(this->Surface.faceCount(), 3 * this->Surface.faceCount());
-  for (const Triangle& t : this->Surface.triangles())
+  const TriangleMesh& mesh = this->Mesh();
+  triangles->AllocateExact(mesh.faceCount(), 3 * mesh.faceCount());
+  for (const Triangle& t : mesh.triangles())
   {
     const vtkIdType ids[3] = { t[0], t[1], t[2] };
     triangles->InsertNextCell(3, ids);
@@ -304,10 +377,11 @@ void SurfaceInput::MakeOutput(vtkPolyData* input, vtkPolyData* output) const
   output->GetPointData()->PassData(input->GetPointData());
   vtkCellData* inCells = input->GetCellData();
   vtkCellData* outCells = output->GetCellData();
-  outCells->CopyAllocate(inCells, this->Surface.faceCount());
-  for (vtkIdType t = 0; t < static_cast<vtkIdType>(this->Source.size()); ++t)
+  outCells->CopyAllocate(inCells, mesh.faceCount());
+  const std::vector<vtkIdType>& source = this->SourceCells();
+  for (vtkIdType t = 0; t < static_cast<vtkIdType>(source.size()); ++t)
   {
-    outCells->CopyData(inCells, this->Source[t], t);
+    outCells->CopyData(inCells, source[t], t);
   }
   output->GetFieldData()->PassData(input->GetFieldData());
 }

@@ -1,78 +1,39 @@
-// vtkHarmonicField: gathers constraints, keeps mesh, weights and factorization between runs.
+// vtkHarmonicField: reads the constraints, solves with the surface's HarmonicCutSession, writes the field.
 #include "vtkHarmonicField.h"
 
-#include "Error.h"
-#include "Geometry/ClosestPoint.h"
-#include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/FieldGradient.h"
-#include "Harmonic/HarmonicFieldSolver.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Harmonic/HarmonicCutSession.h"
+#include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>
-#include <vtkDataArray.h>
-#include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
+#include <vtkDataObject.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPolyData.h>
-#include <vtkStringArray.h>
-
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <string>
 
 vtkStandardNewMacro(vtkHarmonicField);
+
+// The filter's weighting codes are the Core enumeration's values.
+static_assert(static_cast<int>(kerf::LaplacianWeighting::Uniform) == vtkHarmonicField::UNIFORM &&
+    static_cast<int>(kerf::LaplacianWeighting::Cotangent) == vtkHarmonicField::COTANGENT &&
+    static_cast<int>(kerf::LaplacianWeighting::ConcavityAware) == vtkHarmonicField::CONCAVITY_AWARE &&
+    static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY,
+  "vtkHarmonicField's Weightings follow kerf::LaplacianWeighting");
+static_assert(static_cast<int>(kerf::SoftConstraintFormulation::PointValues) == vtkHarmonicField::POINT_VALUES &&
+    static_cast<int>(kerf::SoftConstraintFormulation::LeastSquares) == vtkHarmonicField::LEAST_SQUARES,
+  "vtkHarmonicField's Formulations follow kerf::SoftConstraintFormulation");
 
 struct vtkHarmonicField::Internals
 {
   kerf::SurfaceInput surface;
-  std::unique_ptr<kerf::ClosestPointLocator> locator;
-  // The weights and what they were computed from.
-  bool weightsValid = false;
-  kerf::LaplacianWeightOptions weightOptions;
-  std::vector<double> weights;
-  double meanDiagonal = 1.0;
-  kerf::HarmonicFieldSolver solver;
+  std::unique_ptr<kerf::HarmonicCutSession> session;
 };
-
-namespace
-{
-kerf::LaplacianWeighting toWeighting(int w)
-{
-  switch (w)
-  {
-    case vtkHarmonicField::UNIFORM:
-      return kerf::LaplacianWeighting::Uniform;
-    case vtkHarmonicField::CONCAVITY_AWARE:
-      return kerf::LaplacianWeighting::ConcavityAware;
-    case vtkHarmonicField::SMOOTH_CONCAVITY:
-      return kerf::LaplacianWeighting::SmoothConcavity;
-    default:
-      return kerf::LaplacianWeighting::Cotangent;
-  }
-}
-
-const char* workName(kerf::HarmonicFieldSolution::Work work)
-{
-  switch (work)
-  {
-    case kerf::HarmonicFieldSolution::Work::Factorization:
-      return "factorization";
-    case kerf::HarmonicFieldSolution::Work::Update:
-      return "update";
-    default:
-      return "back-substitution";
-  }
-}
-
-} // namespace
 
 vtkHarmonicField::vtkHarmonicField()
   : State(new Internals)
@@ -81,12 +42,12 @@ vtkHarmonicField::vtkHarmonicField()
   this->SetFieldArrayName("HarmonicField");
   this->SetGradientArrayName("FieldGradient");
   this->SetGradientMagnitudeArrayName("FieldGradientMagnitude");
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "HardValue");
   this->SetConstraintValueArrayName("ConstraintValue");
 }
 
 vtkHarmonicField::~vtkHarmonicField()
 {
-  this->SetHardValueArrayName(nullptr);
   this->SetConstraintValueArrayName(nullptr);
   this->SetFieldArrayName(nullptr);
   this->SetGradientArrayName(nullptr);
@@ -95,238 +56,80 @@ vtkHarmonicField::~vtkHarmonicField()
 
 int vtkHarmonicField::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 0)
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  }
-  else
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-  }
-  return 1;
+  return kerf::FillSurfaceAndOptionalPointsPorts(port, info);
 }
 
 int vtkHarmonicField::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPointSet* constraintPoints = vtkPointSet::GetData(inputVector[1], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  Internals& state = *this->State;
+  return kerf::RunGuarded(this, "Cannot compute the harmonic field", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPointSet* constraintPoints = vtkPointSet::GetData(inputVector[1], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    kerf::CheckOutputNames({ this->FieldArrayName, this->GradientArrayName, this->GradientMagnitudeArrayName });
+    kerf::CheckDifferentNames(this->GradientArrayName, this->GradientMagnitudeArrayName, "the gradient and its magnitude");
 
-  for (const char* name : { this->FieldArrayName, this->GradientArrayName, this->GradientMagnitudeArrayName })
-  {
-    if (!name || !*name)
+    kerf::MeshRequirements requirements;
+    requirements.manifold = true;
+    requirements.consistentOrientation = true;
+    kerf::LoadSurface(this->State->surface, input, requirements);
+    kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
+    const double diagonal = session.mesh().boundingBoxDiagonal();
+    this->UpdateProgress(0.1);
+
+    kerf::FieldConstraints constraints;
+    if (this->UseHardValues)
     {
-      vtkErrorMacro("Every output array needs a non-empty name.");
-      return 0;
-    }
-  }
-  if (std::string(this->GradientArrayName) == this->GradientMagnitudeArrayName)
-  {
-    vtkErrorMacro("The gradient and its magnitude need different names (both are cell arrays).");
-    return 0;
-  }
-
-  kerf::MeshRequirements requirements;
-  requirements.manifold = true;
-  requirements.consistentOrientation = true;
-  bool reused = false;
-  std::string error;
-  if (!state.surface.LoadIfChanged(input, requirements, error, reused))
-  {
-    vtkErrorMacro("Cannot compute the harmonic field: " << error);
-    return 0;
-  }
-  const kerf::TriangleMesh& mesh = state.surface.Mesh();
-  if (!reused)
-  {
-    state.locator.reset(new kerf::ClosestPointLocator(mesh));
-    state.weightsValid = false;
-  }
-  this->UpdateProgress(0.1);
-
-  try
-  {
-    kerf::LaplacianWeightOptions options;
-    options.weighting = toWeighting(this->Weighting);
-    options.concaveBeta = this->ConcaveBeta;
-    options.concavityQuantile = this->ConcavityQuantile;
-    if (!state.weightsValid || options.weighting != state.weightOptions.weighting ||
-      options.concaveBeta != state.weightOptions.concaveBeta ||
-      options.concavityQuantile != state.weightOptions.concavityQuantile)
-    {
-      const bool needsCurvature = options.weighting == kerf::LaplacianWeighting::ConcavityAware ||
-        options.weighting == kerf::LaplacianWeighting::SmoothConcavity;
-      kerf::SurfaceDescriptors descriptors;
-      if (needsCurvature)
+      const std::vector<double> values =
+        kerf::ReadInputArray(this, 0, this->GetInputArrayToProcess(0, inputVector), input->GetNumberOfPoints(), "the surface");
+      std::vector<int> vertices(values.size());
+      for (std::size_t i = 0; i < values.size(); ++i)
       {
-        descriptors = kerf::computeSurfaceDescriptors(mesh);
+        vertices[i] = this->State->surface.Representative(static_cast<int>(i));
       }
-      state.weights = kerf::computeLaplacianWeights(mesh, options, needsCurvature ? &descriptors : nullptr);
-      state.meanDiagonal = kerf::laplacianMeanDiagonal(mesh, state.weights);
-      state.weightOptions = options;
-      state.weightsValid = true;
+      session.addHardValues(vertices, values, constraints);
     }
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot compute the Laplacian weights: " << e.what());
-    return 0;
-  }
-  this->UpdateProgress(0.3);
+    if (constraintPoints && constraintPoints->GetNumberOfPoints() > 0)
+    {
+      kerf::ConstraintPlacement placement;
+      placement.hard = this->HardConstraints;
+      placement.maximumDistance = kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
+      session.projectConstraints(kerf::ReadPoints(constraintPoints),
+        kerf::ReadNamedPointArray(constraintPoints, this->ConstraintValueArrayName, "the constraint points"),
+        placement, constraints);
+    }
+    this->UpdateProgress(0.3);
 
-  // Constraints.
-  kerf::FieldConstraints constraints;
-  constraints.softWeight = this->SoftConstraintWeight * state.meanDiagonal;
-  if (this->UseHardValues && this->HardValueArrayName && *this->HardValueArrayName)
-  {
-    vtkDataArray* hard = input->GetPointData()->GetArray(this->HardValueArrayName);
-    if (!hard || hard->GetNumberOfComponents() != 1)
-    {
-      vtkErrorMacro("The surface has no one-component point array named '" << this->HardValueArrayName
-                                                                             << "' (HardValueArrayName).");
-      return 0;
-    }
-    if (hard->GetNumberOfTuples() != input->GetNumberOfPoints())
-    {
-      vtkErrorMacro("The hard-value array '" << this->HardValueArrayName << "' has "
-                                            << hard->GetNumberOfTuples() << " values for "
-                                            << input->GetNumberOfPoints() << " points.");
-      return 0;
-    }
-    std::vector<double> values(static_cast<std::size_t>(hard->GetNumberOfTuples()));
-    for (vtkIdType i = 0; i < hard->GetNumberOfTuples(); ++i)
-    {
-      values[static_cast<std::size_t>(i)] = hard->GetComponent(i, 0);
-    }
-    for (std::size_t i = 0; i < values.size(); ++i)
-    {
-      const int vertex = state.surface.Representative(static_cast<int>(i));
-      if (!std::isnan(values[i]) && !mesh.vertexFaces(vertex).empty())
-      {
-        constraints.dirichletVertices.push_back(vertex);
-        constraints.dirichletValues.push_back(values[i]);
-      }
-    }
-  }
-  if (constraintPoints && constraintPoints->GetNumberOfPoints() > 0)
-  {
-    vtkDataArray* values = this->ConstraintValueArrayName
-      ? constraintPoints->GetPointData()->GetArray(this->ConstraintValueArrayName)
-      : nullptr;
-    if (!values || values->GetNumberOfComponents() != 1)
-    {
-      vtkErrorMacro("The constraint points have no one-component point array named '"
-        << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "")
-        << "' (ConstraintValueArrayName).");
-      return 0;
-    }
-    if (values->GetNumberOfTuples() != constraintPoints->GetNumberOfPoints())
-    {
-      vtkErrorMacro("The constraint-value array '" << this->ConstraintValueArrayName << "' has "
-                                                  << values->GetNumberOfTuples() << " values for "
-                                                  << constraintPoints->GetNumberOfPoints() << " points.");
-      return 0;
-    }
-    if (!std::isfinite(this->MaximumProjectionDistance))
-    {
-      vtkErrorMacro("MaximumProjectionDistance must be a number (0 for no limit).");
-      return 0;
-    }
-    const double limit = this->MaximumProjectionDistance > 0.0
-      ? this->MaximumProjectionDistance * mesh.boundingBoxDiagonal()
-      : std::numeric_limits<double>::infinity();
-    for (vtkIdType i = 0; i < constraintPoints->GetNumberOfPoints(); ++i)
-    {
-      kerf::Vector3 p;
-      constraintPoints->GetPoint(i, p.data());
-      const double value = values->GetComponent(i, 0);
-      if (!p.allFinite() || !std::isfinite(value))
-      {
-        vtkErrorMacro("Constraint point " << i << " has a NaN or infinite coordinate or value.");
-        return 0;
-      }
-      const kerf::ClosestPointLocator::Hit hit = state.locator->closest(p);
-      if (hit.distance > limit)
-      {
-        vtkErrorMacro("Constraint point " << i << " is " << hit.distance
-                                          << " away from the surface, farther than the allowed "
-                                          << limit << " (MaximumProjectionDistance).");
-        return 0;
-      }
-      if (this->HardConstraints)
-      {
-        int corner;
-        hit.barycentric.maxCoeff(&corner);
-        constraints.dirichletVertices.push_back(mesh.triangle(hit.face)[corner]);
-        constraints.dirichletValues.push_back(value);
-      }
-      else
-      {
-        constraints.soft.push_back({ hit.face, hit.barycentric, value });
-      }
-    }
-  }
-  this->UpdateProgress(0.4);
+    kerf::HarmonicFieldOptions options;
+    options.weights.weighting = kerf::LaplacianWeighting(this->Weighting);
+    options.weights.concaveBeta = kerf::Finite(this->ConcaveBeta, "ConcaveBeta");
+    options.weights.concavityQuantile = kerf::Finite(this->ConcavityQuantile, "ConcavityQuantile");
+    options.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
+    options.formulation = kerf::SoftConstraintFormulation(this->Formulation);
+    kerf::HarmonicFieldSolution solution = session.solve(constraints, options);
+    this->UpdateProgress(0.9);
 
-  kerf::HarmonicFieldSolution solution;
-  try
-  {
-    solution = state.solver.solve(mesh, state.weights, constraints);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot compute the harmonic field: " << e.what());
-    return 0;
-  }
-  this->UpdateProgress(0.9);
-
-  const std::vector<kerf::Vector3> gradients = kerf::computeFaceGradients(mesh, solution.field);
-  std::vector<double> magnitudes(gradients.size());
-  for (std::size_t f = 0; f < gradients.size(); ++f)
-  {
-    magnitudes[f] = gradients[f].norm();
-  }
-  const auto finite = [](const std::vector<double>& values) {
-    return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
-  };
-  if (!finite(solution.field) || !finite(magnitudes) || !std::isfinite(solution.relativeResidual))
-  {
-    vtkErrorMacro("Cannot compute the harmonic field: the field or its gradient overflows (hard or "
-                  "constraint values too large for double precision).");
-    return 0;
-  }
-  state.surface.ExpandToInputPoints(solution.field);
-
-  state.surface.MakeOutput(input, output);
-  output->GetPointData()->AddArray(kerf::MakeArray(this->FieldArrayName, solution.field));
-  output->GetPointData()->SetActiveScalars(this->FieldArrayName);
-  output->GetCellData()->AddArray(kerf::MakeArray(this->GradientArrayName, gradients));
-  output->GetCellData()->AddArray(kerf::MakeArray(this->GradientMagnitudeArrayName, magnitudes));
-  vtkNew<vtkDoubleArray> residual;
-  residual->SetName("RelativeResidual");
-  residual->InsertNextValue(solution.relativeResidual);
-  output->GetFieldData()->AddArray(residual);
-  vtkNew<vtkStringArray> work;
-  work->SetName("SolverWork");
-  work->InsertNextValue(workName(solution.work));
-  output->GetFieldData()->AddArray(work);
-  this->UpdateProgress(1.0);
-  return 1;
+    const std::vector<kerf::Vector3> gradients = kerf::computeFaceGradients(session.mesh(), solution.field);
+    const std::vector<double> magnitudes = kerf::faceGradientMagnitudes(session.mesh(), solution.field);
+    kerf::CheckFinite({ &solution.field, &magnitudes }, solution.relativeResidual,
+      "the field or its gradient overflows (hard or constraint values too large for double precision)");
+    this->State->surface.MakeOutput(input, output);
+    kerf::WriteField(this->State->surface, solution, this->FieldArrayName, output);
+    output->GetCellData()->AddArray(kerf::MakeArray(this->GradientArrayName, gradients));
+    output->GetCellData()->AddArray(kerf::MakeArray(this->GradientMagnitudeArrayName, magnitudes));
+  });
 }
 
 void vtkHarmonicField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Weighting: " << this->Weighting << "\n";
+  os << indent << "Formulation: " << this->Formulation << "\n";
   os << indent << "ConcaveBeta: " << this->ConcaveBeta << "\n";
   os << indent << "ConcavityQuantile: " << this->ConcavityQuantile << "\n";
   os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
   os << indent << "HardConstraints: " << this->HardConstraints << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "HardValueArrayName: " << (this->HardValueArrayName ? this->HardValueArrayName : "(none)") << "\n";
   os << indent << "UseHardValues: " << this->UseHardValues << "\n";
   os << indent << "ConstraintValueArrayName: "
      << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "(none)") << "\n";

@@ -4,22 +4,23 @@
  * constraints, with its per-face gradient.
  *
  * Constraints, in any combination:
- * - hard (Dirichlet) values on vertices: the point array of the surface named
- *   HardValueArrayName, whose non-NaN entries are fixed values (NaN marks a free vertex); no
- *   name (the default) or UseHardValues off means no hard values, a name the surface lacks is
- *   an error;
- * - points on the second input (any vtkPointSet, for example vtkStrokeConstraints' output) with a
- *   value array named ConstraintValueArrayName (default "ConstraintValue"). Each point is
- *   projected onto the surface; its nearest face and
- *   barycentric coordinates make a soft least-squares constraint of weight
- *   SoftConstraintWeight (seamcut.txt Eq. 1), or, with HardConstraints on, a hard value at the
- *   nearest vertex.
- * With hard values only the field is harmonic (L_FF f = -L_FD f_D, roi-scissor.txt Eq. 1); with
+ * - hard (Dirichlet) values on vertices, with UseHardValues on: the surface's point array
+ *   selected as input array 0 (SetInputArrayToProcess(0, 0, 0,
+ *   vtkDataObject::FIELD_ASSOCIATION_POINTS, name); default "HardValue"), whose non-NaN entries are
+ *   fixed values (NaN marks a free vertex);
+ * - points on the second input (any vtkPointSet, for example vtkStrokeConstraints' output) with
+ *   the point array named ConstraintValueArrayName (default "ConstraintValue"; a name rather than
+ *   an input array index because ParaView 5.11's pipeline aborts on input arrays selected on a
+ *   second input port while the first has its own, see Documentation/architecture.md). Each point is
+ *   projected onto the surface; its nearest face and barycentric coordinates make a soft
+ *   least-squares constraint of weight SoftConstraintWeight (SeamCut, Eq. 1), or, with
+ *   HardConstraints on, a hard value at the nearest vertex.
+ * With hard values only the field is harmonic (L_FF f = -L_FD f_D, ROI Scissor, Eq. 1); with
  * soft constraints it minimises ||L f||^2 + w^2 sum (C_i f - c_i)^2 (see kerf::HarmonicFieldSolver).
  *
  * The Laplacian's weights are chosen with Weighting: uniform, cotangent (default), the
- * concavity-aware weights of Au et al. 2011 (roi-scissor.txt Eq. 2-3) or ROI Scissor's smooth
- * concavity weights (roi-scissor.txt 3.1).
+ * concavity-aware weights of Au et al. 2011 (as ROI Scissor, Eq. 2-3) or ROI Scissor's smooth
+ * concavity weights (section 3.1).
  *
  * The sparse Cholesky factorization (CHOLMOD; Eigen's SimplicialLDLT without it) is kept between
  * executions: while the surface, the weights and the constraint locations stay the same, a new
@@ -70,6 +71,21 @@ public:
   void SetWeightingToSmoothConcavity() { this->SetWeighting(SMOOTH_CONCAVITY); }
   ///@}
 
+  enum Formulations
+  {
+    POINT_VALUES = 0,
+    LEAST_SQUARES = 1
+  };
+
+  ///@{
+  /// How the soft constraints shape the field. LEAST_SQUARES (default): SeamCut's least squares,
+  /// the squared Laplacian factored, the cut that follows the user's strokes most closely.
+  /// POINT_VALUES: the field harmonic away from the constraint points and equal to their values
+  /// there; the plain Laplacian factored, about three times faster on a fresh mesh.
+  vtkSetClampMacro(Formulation, int, POINT_VALUES, LEAST_SQUARES);
+  vtkGetMacro(Formulation, int);
+  ///@}
+
   ///@{
   /// beta on edges touching a concave vertex (CONCAVITY_AWARE). Default 0.01 (Au et al.).
   vtkSetClampMacro(ConcaveBeta, double, 1e-6, 1.0);
@@ -106,22 +122,16 @@ public:
   ///@}
 
   ///@{
-  /// Name of the point array of the surface holding hard values (NaN: free vertex). Default
-  /// none.
-  vtkSetStringMacro(HardValueArrayName);
-  vtkGetStringMacro(HardValueArrayName);
-  ///@}
-
-  ///@{
-  /// Whether HardValueArrayName is used; off ignores it (ParaView's Use Hard Values toggle, so
-  /// an array can stay selected). Default on.
+  /// Whether the hard values (input array 0, a point array of the surface; NaN: free vertex)
+  /// are used; off ignores them, so an array can stay selected. Default off.
   vtkSetMacro(UseHardValues, bool);
   vtkGetMacro(UseHardValues, bool);
   vtkBooleanMacro(UseHardValues, bool);
   ///@}
 
   ///@{
-  /// Name of the value array of the constraint points (second input). Default "ConstraintValue".
+  /// Name of the point array of the constraint points (second input) holding their values.
+  /// Default "ConstraintValue".
   vtkSetStringMacro(ConstraintValueArrayName);
   vtkGetStringMacro(ConstraintValueArrayName);
   ///@}
@@ -148,13 +158,13 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int Weighting = COTANGENT;
+  int Formulation = LEAST_SQUARES;
   double ConcaveBeta = 0.01;
   double ConcavityQuantile = 1.0;
   double SoftConstraintWeight = 1.0;
   bool HardConstraints = false;
   double MaximumProjectionDistance = 0.02;
-  char* HardValueArrayName = nullptr;
-  bool UseHardValues = true;
+  bool UseHardValues = false;
   char* ConstraintValueArrayName = nullptr;
   char* FieldArrayName = nullptr;
   char* GradientArrayName = nullptr;

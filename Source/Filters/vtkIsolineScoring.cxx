@@ -1,11 +1,10 @@
-// vtkIsolineScoring: keeps the surface between runs, extracts, scores and labels the cut.
+// vtkIsolineScoring: reads the field and the stroke, chooses the cut with the surface's session, writes it.
 #include "vtkIsolineScoring.h"
 
 #include "Harmonic/FieldGradient.h"
-#include "Harmonic/HarmonicFieldSolver.h"
-#include "Harmonic/Isolines.h"
+#include "Harmonic/HarmonicCutSession.h"
+#include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
-#include "Mesh/MeshValidation.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -29,9 +28,16 @@
 
 vtkStandardNewMacro(vtkIsolineScoring);
 
+// The mode codes are the Core enumeration's values.
+static_assert(static_cast<int>(kerf::CutMode::Value) == vtkIsolineScoring::VALUE &&
+    static_cast<int>(kerf::CutMode::BestScore) == vtkIsolineScoring::BEST_SCORE &&
+    static_cast<int>(kerf::CutMode::NearStroke) == vtkIsolineScoring::NEAR_STROKE,
+  "vtkIsolineScoring's Modes follow kerf::CutMode");
+
 struct vtkIsolineScoring::Internals
 {
   kerf::SurfaceInput surface;
+  std::unique_ptr<kerf::HarmonicCutSession> session;
 };
 
 vtkIsolineScoring::vtkIsolineScoring()
@@ -60,16 +66,7 @@ vtkTable* vtkIsolineScoring::GetCandidates()
 
 int vtkIsolineScoring::FillInputPortInformation(int port, vtkInformation* info)
 {
-  if (port == 0)
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  }
-  else
-  {
-    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-  }
-  return 1;
+  return kerf::FillSurfaceAndOptionalPointsPorts(port, info);
 }
 
 int vtkIsolineScoring::FillOutputPortInformation(int port, vtkInformation* info)
@@ -78,202 +75,56 @@ int vtkIsolineScoring::FillOutputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+namespace
+{
+// Output 2: the candidates' values, scores and lengths (BEST_SCORE).
+void writeCandidates(const kerf::CutResult& cut, vtkTable* table)
+{
+  std::vector<double> values, scores, lengths;
+  for (const kerf::IsovalueScore& candidate : cut.candidates)
+  {
+    values.push_back(candidate.value);
+    scores.push_back(candidate.score);
+    lengths.push_back(candidate.length);
+  }
+  if (!cut.candidates.empty())
+  {
+    table->AddColumn(kerf::MakeArray("IsoValue", values));
+    table->AddColumn(kerf::MakeArray("Score", scores));
+    table->AddColumn(kerf::MakeArray("Length", lengths));
+  }
+}
+} // namespace
+
 int vtkIsolineScoring::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPointSet* stroke = vtkPointSet::GetData(inputVector[1], 0);
-  vtkPolyData* lines = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* labelled = vtkPolyData::GetData(outputVector, 1);
-  vtkTable* candidates = vtkTable::GetData(outputVector, 2);
-  Internals& state = *this->State;
+  return kerf::RunGuarded(this, "Cannot extract isolines", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPointSet* stroke = vtkPointSet::GetData(inputVector[1], 0);
+    kerf::CheckOutputNames({ this->SegmentArrayName });
+    kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
+    kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
 
-  if (!this->SegmentArrayName || !*this->SegmentArrayName)
-  {
-    vtkErrorMacro("The segment array needs a non-empty name.");
-    return 0;
-  }
-  kerf::MeshRequirements requirements;
-  bool reused = false;
-  std::string error;
-  if (!state.surface.LoadIfChanged(input, requirements, error, reused))
-  {
-    vtkErrorMacro("Cannot extract isolines: " << error);
-    return 0;
-  }
-  const kerf::TriangleMesh& mesh = state.surface.Mesh();
+    kerf::CutOptions options;
+    options.mode = static_cast<kerf::CutMode>(this->Mode);
+    options.isoValue = this->IsoValue;
+    options.candidateCount = this->NumberOfCandidates;
+    if (this->Mode == NEAR_STROKE)
+    {
+      options.stroke = kerf::ReadPoints(stroke);
+    }
+    const std::vector<double> field =
+      kerf::ReadInputArray(this, 0, this->GetInputArrayToProcess(0, inputVector), input->GetNumberOfPoints(), "the surface");
+    const kerf::CutResult cut = session.chooseCut(field, options);
+    this->UpdateProgress(0.8);
 
-  vtkDataArray* array = this->GetInputArrayToProcess(0, inputVector);
-  if (!array || array->GetNumberOfComponents() != 1 || array->GetNumberOfTuples() != input->GetNumberOfPoints())
-  {
-    vtkErrorMacro("The field must be a one-component point array of the surface (select it with "
-                  "SetInputArrayToProcess; default \"HarmonicField\").");
-    return 0;
-  }
-  std::vector<double> field(static_cast<std::size_t>(mesh.vertexCount()));
-  double lowest = std::numeric_limits<double>::infinity();
-  double highest = -lowest;
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-  {
-    field[v] = array->GetComponent(v, 0);
-    if (mesh.vertexFaces(v).empty())
-    {
-      continue;
-    }
-    if (!std::isfinite(field[v]))
-    {
-      vtkErrorMacro("The field has a NaN or infinite value at point " << v << ".");
-      return 0;
-    }
-    lowest = std::min(lowest, field[v]);
-    highest = std::max(highest, field[v]);
-  }
-  if (!std::isfinite(highest - lowest))
-  {
-    vtkErrorMacro("The field's range [" << lowest << ", " << highest
-                                        << "] overflows double precision; rescale the field.");
-    return 0;
-  }
-  if (this->Mode != BEST_SCORE && !std::isfinite(this->IsoValue))
-  {
-    vtkErrorMacro("IsoValue must be finite.");
-    return 0;
-  }
-  if (this->Mode == NEAR_STROKE && (!stroke || stroke->GetNumberOfPoints() == 0))
-  {
-    vtkErrorMacro("NEAR_STROKE needs a stroke on input 1.");
-    return 0;
-  }
-  if (this->Mode == NEAR_STROKE)
-  {
-    for (vtkIdType i = 0; i < stroke->GetNumberOfPoints(); ++i)
-    {
-      kerf::Vector3 p;
-      stroke->GetPoint(i, p.data());
-      if (!p.allFinite() || p.cwiseAbs().maxCoeff() > kerf::CoordinateLimit)
-      {
-        vtkErrorMacro("Stroke point " << i << " has a NaN, infinite or huge coordinate.");
-        return 0;
-      }
-    }
-  }
-
-  // Gradient magnitudes: every face's to score candidates, else only those the cut crosses.
-  std::vector<double> magnitudes(static_cast<std::size_t>(mesh.faceCount()), 0.0);
-  if (this->Mode == BEST_SCORE)
-  {
-    for (int f = 0; f < mesh.faceCount(); ++f)
-    {
-      magnitudes[f] = kerf::faceGradient(mesh, field, f).norm();
-    }
-  }
-
-  double value = this->IsoValue;
-  if (this->Mode == BEST_SCORE)
-  {
-    const std::vector<kerf::IsovalueScore> scores =
-      kerf::scoreIsovalues(mesh, field, magnitudes, this->NumberOfCandidates);
-    if (scores.empty())
-    {
-      vtkErrorMacro("The field is constant: there is no isoline to score.");
-      return 0;
-    }
-    vtkNew<vtkDoubleArray> values, scoreColumn, lengths;
-    values->SetName("IsoValue");
-    scoreColumn->SetName("Score");
-    lengths->SetName("Length");
-    std::size_t best = 0;
-    for (std::size_t i = 0; i < scores.size(); ++i)
-    {
-      values->InsertNextValue(scores[i].value);
-      scoreColumn->InsertNextValue(scores[i].score);
-      lengths->InsertNextValue(scores[i].length);
-      best = scores[i].score > scores[best].score ? i : best;
-    }
-    candidates->AddColumn(values);
-    candidates->AddColumn(scoreColumn);
-    candidates->AddColumn(lengths);
-    value = scores[best].value;
-  }
-  this->UpdateProgress(0.4);
-
-  std::vector<kerf::Isoline> isolines = kerf::extractIsolines(mesh, field, value);
-  if (this->Mode == NEAR_STROKE && !isolines.empty())
-  {
-    std::vector<kerf::Vector3> points(static_cast<std::size_t>(stroke->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < stroke->GetNumberOfPoints(); ++i)
-    {
-      stroke->GetPoint(i, points[static_cast<std::size_t>(i)].data());
-    }
-    const int nearest = kerf::nearestIsoline(isolines, points);
-    isolines = { isolines[static_cast<std::size_t>(nearest)] };
-  }
-  std::vector<const kerf::Isoline*> cut;
-  for (const kerf::Isoline& line : isolines)
-  {
-    cut.push_back(&line);
-    if (this->Mode != BEST_SCORE)
-    {
-      for (int f : line.faces)
-      {
-        magnitudes[f] = kerf::faceGradient(mesh, field, f).norm();
-      }
-    }
-  }
-  const std::vector<int> labels = kerf::labelCutSides(mesh, field, value, cut);
-  this->UpdateProgress(0.8);
-
-  // Output 0: the polylines.
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polylines;
-  vtkNew<vtkDoubleArray> isoValues, scoreValues, lengthValues;
-  vtkNew<vtkUnsignedCharArray> closedValues;
-  isoValues->SetName("IsoValue");
-  scoreValues->SetName("Score");
-  lengthValues->SetName("Length");
-  closedValues->SetName("Closed");
-  for (const kerf::Isoline& line : isolines)
-  {
-    const vtkIdType first = points->GetNumberOfPoints();
-    const vtkIdType count = static_cast<vtkIdType>(line.points.size());
-    for (const kerf::Vector3& p : line.points)
-    {
-      points->InsertNextPoint(p.data());
-    }
-    polylines->InsertNextCell(count + (line.closed ? 1 : 0));
-    for (vtkIdType k = 0; k < count; ++k)
-    {
-      polylines->InsertCellPoint(first + k);
-    }
-    if (line.closed)
-    {
-      polylines->InsertCellPoint(first);
-    }
-    isoValues->InsertNextValue(value);
-    scoreValues->InsertNextValue(kerf::isolineScore({ line }, magnitudes));
-    lengthValues->InsertNextValue(line.length);
-    closedValues->InsertNextValue(line.closed ? 1 : 0);
-  }
-  lines->SetPoints(points);
-  lines->SetLines(polylines);
-  lines->GetCellData()->AddArray(isoValues);
-  lines->GetCellData()->AddArray(scoreValues);
-  lines->GetCellData()->AddArray(lengthValues);
-  lines->GetCellData()->AddArray(closedValues);
-
-  // Output 1: the labelled surface.
-  state.surface.MakeOutput(input, labelled);
-  vtkNew<vtkIntArray> segments;
-  segments->SetName(this->SegmentArrayName);
-  segments->SetNumberOfValues(static_cast<vtkIdType>(labels.size()));
-  for (std::size_t f = 0; f < labels.size(); ++f)
-  {
-    segments->SetValue(static_cast<vtkIdType>(f), labels[f]);
-  }
-  labelled->GetCellData()->AddArray(segments);
-  this->UpdateProgress(1.0);
-  return 1;
+    kerf::WriteCutLines(cut, vtkPolyData::GetData(outputVector, 0));
+    vtkPolyData* labelled = vtkPolyData::GetData(outputVector, 1);
+    this->State->surface.MakeOutput(input, labelled);
+    labelled->GetCellData()->AddArray(kerf::MakeIntArray(this->SegmentArrayName, cut.labels));
+    writeCandidates(cut, vtkTable::GetData(outputVector, 2));
+  });
 }
 
 void vtkIsolineScoring::PrintSelf(ostream& os, vtkIndent indent)

@@ -6,13 +6,13 @@
  *
  * The field is a point array of the input surface, selected with SetInputArrayToProcess(0, 0, 0,
  * vtkDataObject::FIELD_ASSOCIATION_POINTS, name) (default "HarmonicField"). Modes:
- * - VALUE: the isoline f = IsoValue. Changing IsoValue slides the cut (seamcut.txt section 3):
+ * - VALUE: the isoline f = IsoValue. Changing IsoValue slides the cut (SeamCut, section 3):
  *   only this filter re-executes, and it keeps its converted surface between executions.
  * - BEST_SCORE: NumberOfCandidates values sampled uniformly inside the field's range (default
- *   50), each scored by S_i = sum_T |I_i cap T| / |I_i| |grad f_T| (roi-scissor.txt 4.2); the
+ *   50), each scored by S_i = sum_T |I_i cap T| / |I_i| |grad f_T| (ROI Scissor, section 4.2); the
  *   best one is chosen.
  * - NEAR_STROKE: the isoline f = IsoValue, keeping only its connected component nearest to the
- *   stroke on the second input (seamcut.txt 2.1.3).
+ *   stroke on the second input (SeamCut, section 2.1.3).
  *
  * Outputs:
  * 0. the chosen isoline as polylines (closed loops closed, one orientation throughout), with

@@ -2,6 +2,8 @@
 #include "vtkSegmentationMetrics.h"
 
 #include "Evaluation/SegmentationMetrics.h"
+#include "Error.h"
+#include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkAlgorithmOutput.h>
@@ -22,41 +24,32 @@
 
 vtkStandardNewMacro(vtkSegmentationMetrics);
 
+struct vtkSegmentationMetrics::Internals
+{
+  kerf::SurfaceInput surface;
+};
+
 namespace
 {
-// Per-triangle labels from a per-cell array, or an error sentence.
-std::string triangleLabels(vtkDataArray* array, const kerf::SurfaceInput& surface, vtkIdType cells,
-  const char* role, std::vector<int>& labels)
+// Per-triangle labels from the input array `index` (a per-cell array of labels).
+std::vector<int> triangleLabels(vtkAlgorithm* algorithm, int index, vtkDataArray* array,
+  const kerf::SurfaceInput& surface, vtkIdType cells, const char* role)
 {
-  if (!array)
+  const std::vector<double> perCell =
+    kerf::ReadInputArray(algorithm, index, array, cells, std::string("the ") + role + " segmentation");
+  std::vector<int> labels(perCell.size());
+  for (std::size_t c = 0; c < perCell.size(); ++c)
   {
-    return std::string("no ") + role + " segmentation: select a cell array with SetInputArrayToProcess";
-  }
-  const std::string name = array->GetName() ? array->GetName() : "(unnamed)";
-  if (array->GetNumberOfComponents() != 1)
-  {
-    return "the " + std::string(role) + " array '" + name + "' has " +
-      std::to_string(array->GetNumberOfComponents()) + " components; labels have one";
-  }
-  if (array->GetNumberOfTuples() != cells)
-  {
-    return "the " + std::string(role) + " array '" + name + "' has " +
-      std::to_string(array->GetNumberOfTuples()) + " values but the mesh has " +
-      std::to_string(cells) + " cells";
-  }
-  labels.resize(surface.SourceCells().size());
-  for (std::size_t t = 0; t < labels.size(); ++t)
-  {
-    const double value = array->GetComponent(surface.SourceCells()[t], 0);
+    const double value = perCell[c];
     if (!std::isfinite(value) || value != std::floor(value) || value < -1.0 ||
       value > std::numeric_limits<int>::max())
     {
-      return "cell " + std::to_string(surface.SourceCells()[t]) + " of the " + role + " array '" +
-        name + "' holds " + std::to_string(value) + ", which is not a label (an integer >= -1)";
+      throw kerf::Error("cell " + std::to_string(c) + " of the " + role + " segmentation holds " +
+        std::to_string(value) + ", which is not a label (an integer >= -1)");
     }
-    labels[t] = static_cast<int>(value);
+    labels[c] = static_cast<int>(value);
   }
-  return "";
+  return surface.CellValuesToTriangles(labels);
 }
 
 bool sameMesh(vtkPolyData* a, vtkPolyData* b)
@@ -90,11 +83,14 @@ void addColumn(vtkTable* table, const char* name, double value)
 } // namespace
 
 vtkSegmentationMetrics::vtkSegmentationMetrics()
+  : State(new Internals)
 {
   this->SetNumberOfInputPorts(2);
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Segment");
   this->SetInputArrayToProcess(1, 1, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Segment");
 }
+
+vtkSegmentationMetrics::~vtkSegmentationMetrics() = default;
 
 int vtkSegmentationMetrics::FillInputPortInformation(int port, vtkInformation* info)
 {
@@ -109,81 +105,56 @@ int vtkSegmentationMetrics::FillInputPortInformation(int port, vtkInformation* i
 int vtkSegmentationMetrics::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* mesh = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* reference = vtkPolyData::GetData(inputVector[1], 0);
-  vtkTable* output = vtkTable::GetData(outputVector, 0);
+  return kerf::RunGuarded(this, "Cannot compare segmentations", [&]() {
+    vtkPolyData* mesh = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* reference = vtkPolyData::GetData(inputVector[1], 0);
+    vtkTable* output = vtkTable::GetData(outputVector, 0);
 
-  vtkInformation* referenceArrayInfo = this->GetInputArrayInformation(1);
-  const int referencePort = referenceArrayInfo->Has(INPUT_PORT()) ? referenceArrayInfo->Get(INPUT_PORT()) : 1;
-  if (referencePort == 1 && !reference)
-  {
-    vtkErrorMacro("The reference segmentation is read from input 1, which is not connected: "
-                  "connect a second mesh or select the reference array on input 0.");
-    return 0;
-  }
-  if (reference && !sameMesh(mesh, reference))
-  {
-    vtkErrorMacro("The two inputs are different meshes (" << mesh->GetNumberOfPoints() << " points, "
-                  << mesh->GetNumberOfCells() << " cells against " << reference->GetNumberOfPoints()
-                  << " points, " << reference->GetNumberOfCells()
-                  << " cells, or points that differ).");
-    return 0;
-  }
+    vtkInformation* referenceArrayInfo = this->GetInputArrayInformation(1);
+    const int referencePort = referenceArrayInfo->Has(INPUT_PORT()) ? referenceArrayInfo->Get(INPUT_PORT()) : 1;
+    if (referencePort == 1 && !reference)
+    {
+      throw kerf::Error("the reference segmentation is read from input 1, which is not connected: "
+                        "connect a second mesh or select the reference array on input 0");
+    }
+    if (reference && !sameMesh(mesh, reference))
+    {
+      throw kerf::Error("the two inputs are different meshes (" + std::to_string(mesh->GetNumberOfPoints()) +
+        " points, " + std::to_string(mesh->GetNumberOfCells()) + " cells against " +
+        std::to_string(reference->GetNumberOfPoints()) + " points, " +
+        std::to_string(reference->GetNumberOfCells()) + " cells, or points that differ)");
+    }
 
-  kerf::MeshRequirements requirements;
-  requirements.manifold = false;
-  requirements.consistentOrientation = false;
-  requirements.allowDuplicateFaces = true;
-  kerf::SurfaceInput surface;
-  std::string error;
-  if (!surface.Load(mesh, requirements, error))
-  {
-    vtkErrorMacro("Cannot compare segmentations: " << error);
-    return 0;
-  }
+    // The metrics need no manifold: benchmark meshes may have any defect but NaN coordinates.
+    kerf::MeshRequirements requirements;
+    requirements.manifold = false;
+    requirements.consistentOrientation = false;
+    requirements.allowDuplicateFaces = true;
+    kerf::SurfaceInput& surface = this->State->surface;
+    kerf::LoadSurface(surface, mesh, requirements);
+    const std::vector<int> evaluated =
+      triangleLabels(this, 0, this->GetInputArrayToProcess(0, inputVector), surface, mesh->GetNumberOfCells(), "evaluated");
+    const std::vector<int> referenceLabels =
+      triangleLabels(this, 1, this->GetInputArrayToProcess(1, inputVector), surface, mesh->GetNumberOfCells(), "reference");
+    this->UpdateProgress(0.3);
 
-  std::vector<int> evaluated, referenceLabels;
-  error = triangleLabels(this->GetInputArrayToProcess(0, inputVector), surface, mesh->GetNumberOfCells(),
-    "evaluated", evaluated);
-  if (error.empty())
-  {
-    error = triangleLabels(this->GetInputArrayToProcess(1, inputVector), surface,
-      mesh->GetNumberOfCells(), "reference", referenceLabels);
-  }
-  if (!error.empty())
-  {
-    vtkErrorMacro("Cannot compare segmentations: " << error << ".");
-    return 0;
-  }
-  this->UpdateProgress(0.3);
-
-  kerf::SegmentationScores scores;
-  try
-  {
     const kerf::SegmentationEvaluator evaluator(surface.Mesh());
-    scores = evaluator.compare(evaluator.prepare(evaluated), evaluator.prepare(referenceLabels));
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot compare segmentations: " << e.what());
-    return 0;
-  }
-
-  addColumn(output, "CutDiscrepancy", scores.cutDiscrepancy);
-  addColumn(output, "CutDiscrepancyEvaluatedToReference", scores.directionalCutDiscrepancy12);
-  addColumn(output, "CutDiscrepancyReferenceToEvaluated", scores.directionalCutDiscrepancy21);
-  addColumn(output, "HammingDistance", scores.hammingDistance);
-  addColumn(output, "MissingRate", scores.missingRate);
-  addColumn(output, "FalseAlarmRate", scores.falseAlarmRate);
-  addColumn(output, "RandIndexError", scores.randIndexError);
-  addColumn(output, "GlobalConsistencyError", scores.globalConsistencyError);
-  addColumn(output, "LocalConsistencyError", scores.localConsistencyError);
-  addColumn(output, "EvaluatedSegments", scores.segments1);
-  addColumn(output, "ReferenceSegments", scores.segments2);
-  addColumn(output, "ComparedFaces", scores.comparedFaces);
-  addColumn(output, "CutsCompared", scores.cutsCompared ? 1.0 : 0.0);
-  this->UpdateProgress(1.0);
-  return 1;
+    const kerf::SegmentationScores scores =
+      evaluator.compare(evaluator.prepare(evaluated), evaluator.prepare(referenceLabels));
+    addColumn(output, "CutDiscrepancy", scores.cutDiscrepancy);
+    addColumn(output, "CutDiscrepancyEvaluatedToReference", scores.directionalCutDiscrepancy12);
+    addColumn(output, "CutDiscrepancyReferenceToEvaluated", scores.directionalCutDiscrepancy21);
+    addColumn(output, "HammingDistance", scores.hammingDistance);
+    addColumn(output, "MissingRate", scores.missingRate);
+    addColumn(output, "FalseAlarmRate", scores.falseAlarmRate);
+    addColumn(output, "RandIndexError", scores.randIndexError);
+    addColumn(output, "GlobalConsistencyError", scores.globalConsistencyError);
+    addColumn(output, "LocalConsistencyError", scores.localConsistencyError);
+    addColumn(output, "EvaluatedSegments", scores.segments1);
+    addColumn(output, "ReferenceSegments", scores.segments2);
+    addColumn(output, "ComparedFaces", scores.comparedFaces);
+    addColumn(output, "CutsCompared", scores.cutsCompared ? 1.0 : 0.0);
+  });
 }
 
 void vtkSegmentationMetrics::PrintSelf(ostream& os, vtkIndent indent)

@@ -10,7 +10,7 @@
  * With two inputs, both must be the same mesh (same points and triangles).
  *
  * The output is a one-row vtkTable (Chen, Golovinskiy, Funkhouser, "A Benchmark for 3D Mesh
- * Segmentation", 2009; mesh-partitioning-survey.txt section 4), every value lower-is-better:
+ * Segmentation", 2009; Kouhestani 2013, section 4), every value lower-is-better:
  * - CutDiscrepancy = (DCD(E => R) + DCD(R => E)) / average radius, with the directional parts
  *   CutDiscrepancyEvaluatedToReference and CutDiscrepancyReferenceToEvaluated. DCD(A => B) is the
  *   mean distance from A's cut vertices to B's cut, measured along mesh edges (the edge-graph
@@ -35,6 +35,8 @@
 #include "KerfFiltersModule.h"
 #include "vtkTableAlgorithm.h"
 
+#include <memory>
+
 class KERFFILTERS_EXPORT vtkSegmentationMetrics : public vtkTableAlgorithm
 {
 public:
@@ -47,7 +49,7 @@ public:
 
 protected:
   vtkSegmentationMetrics();
-  ~vtkSegmentationMetrics() override = default;
+  ~vtkSegmentationMetrics() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
@@ -56,6 +58,9 @@ protected:
 private:
   vtkSegmentationMetrics(const vtkSegmentationMetrics&) = delete;
   void operator=(const vtkSegmentationMetrics&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> State;
 };
 
 #endif

@@ -1,9 +1,9 @@
-// vtkStrokeConstraints: reads strokes, keeps the surface and its locator, calls kerf::strokeConstraints.
+// vtkStrokeConstraints: reads the strokes, places their constraints with the surface's session, writes the points.
 #include "vtkStrokeConstraints.h"
 
-#include "Geometry/ClosestPoint.h"
-#include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/StrokeConstraints.h"
+#include "Error.h"
+#include "Harmonic/HarmonicCutSession.h"
+#include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellArray.h>
@@ -21,15 +21,15 @@
 #include <vtkSmartPointer.h>
 
 #include <cmath>
+#include <string>
 
 vtkStandardNewMacro(vtkStrokeConstraints);
 
 struct vtkStrokeConstraints::Internals
 {
   kerf::SurfaceInput surface;
-  std::unique_ptr<kerf::ClosestPointLocator> locator;
-  std::vector<kerf::Vector3> normals;
-  std::vector<kerf::Vector3> strokePoints;
+  std::unique_ptr<kerf::HarmonicCutSession> session;
+  kerf::StrokePointList strokePoints;
 };
 
 vtkStrokeConstraints::vtkStrokeConstraints()
@@ -42,34 +42,27 @@ vtkStrokeConstraints::~vtkStrokeConstraints() = default;
 
 void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
 {
-  if (count >= 0 && static_cast<std::size_t>(count) != this->State->strokePoints.size())
-  {
-    this->State->strokePoints.resize(static_cast<std::size_t>(count), kerf::Vector3::Zero());
-    this->Modified();
-  }
+  kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
+    if (this->State->strokePoints.SetCount(count))
+    {
+      this->Modified();
+    }
+  });
 }
 
 int vtkStrokeConstraints::GetNumberOfStrokePoints() const
 {
-  return static_cast<int>(this->State->strokePoints.size());
+  return this->State->strokePoints.Count();
 }
 
 void vtkStrokeConstraints::SetStrokePoint(int index, double x, double y, double z)
 {
-  if (index < 0)
-  {
-    return;
-  }
-  if (static_cast<std::size_t>(index) >= this->State->strokePoints.size())
-  {
-    this->State->strokePoints.resize(static_cast<std::size_t>(index) + 1, kerf::Vector3::Zero());
-  }
-  const kerf::Vector3 p(x, y, z);
-  if (this->State->strokePoints[static_cast<std::size_t>(index)] != p)
-  {
-    this->State->strokePoints[static_cast<std::size_t>(index)] = p;
-    this->Modified();
-  }
+  kerf::GuardSetter(this, "Cannot set a stroke point", [&]() {
+    if (this->State->strokePoints.Set(index, kerf::Vector3(x, y, z)))
+    {
+      this->Modified();
+    }
+  });
 }
 
 int vtkStrokeConstraints::FillInputPortInformation(int port, vtkInformation* info)
@@ -85,119 +78,45 @@ int vtkStrokeConstraints::FillInputPortInformation(int port, vtkInformation* inf
 int vtkStrokeConstraints::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  Internals& state = *this->State;
+  return kerf::RunGuarded(this, "Cannot place stroke constraints", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    kerf::StrokeIsoValue(this->IsoValue);
+    kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
+    kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
+    const double diagonal = session.mesh().boundingBoxDiagonal();
 
-  if (!std::isfinite(this->IsoValue) || !(this->IsoValue + 1.0 > this->IsoValue) ||
-    !(this->IsoValue - 1.0 < this->IsoValue))
-  {
-    vtkErrorMacro("IsoValue " << this->IsoValue
-                              << " must be finite, and small enough that IsoValue +- 1 differ from it.");
-    return 0;
-  }
-  if (!std::isfinite(this->MaximumProjectionDistance))
-  {
-    vtkErrorMacro("MaximumProjectionDistance must be a number (0 for no limit).");
-    return 0;
-  }
+    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, this->State->strokePoints, session.surface());
 
-  kerf::MeshRequirements requirements;
-  bool reused = false;
-  std::string error;
-  if (!state.surface.LoadIfChanged(input, requirements, error, reused))
-  {
-    vtkErrorMacro("Cannot place stroke constraints: " << error);
-    return 0;
-  }
-  const kerf::TriangleMesh& mesh = state.surface.Mesh();
-  if (!reused)
-  {
-    state.locator.reset(new kerf::ClosestPointLocator(mesh));
-    state.normals = kerf::computeVertexNormals(mesh);
-  }
-
-  std::vector<std::vector<kerf::Vector3>> strokes;
-  if (strokeInput)
-  {
-    auto lines = vtk::TakeSmartPointer(strokeInput->GetLines()->NewIterator());
-    const vtkIdType pointCount = strokeInput->GetNumberOfPoints();
-    for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell())
-    {
-      vtkIdType size;
-      const vtkIdType* ids;
-      lines->GetCurrentCell(size, ids);
-      std::vector<kerf::Vector3> stroke(static_cast<std::size_t>(size));
-      for (vtkIdType k = 0; k < size; ++k)
-      {
-        if (ids[k] < 0 || ids[k] >= pointCount)
-        {
-          vtkErrorMacro("Stroke line " << lines->GetCurrentCellId() << " uses point " << ids[k]
-                                       << ", but the stroke input has " << pointCount << " points.");
-          return 0;
-        }
-        strokeInput->GetPoint(ids[k], stroke[static_cast<std::size_t>(k)].data());
-      }
-      strokes.push_back(std::move(stroke));
-    }
-    if (strokes.empty())
-    {
-      vtkErrorMacro("The stroke input holds no lines.");
-      return 0;
-    }
-  }
-  else if (!state.strokePoints.empty())
-  {
-    strokes.push_back(state.strokePoints);
-  }
-  else
-  {
-    vtkErrorMacro("No stroke: connect polylines to input 1 or set the stroke points.");
-    return 0;
-  }
-
-  kerf::StrokeConstraintSet set;
-  try
-  {
     kerf::StrokeOptions options;
-    const double diagonal = mesh.boundingBoxDiagonal();
     options.samplesPerSegment = this->SamplesPerSegment;
-    options.offset = this->Offset * diagonal;
+    options.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
     options.isoValue = this->IsoValue;
-    options.maximumDistance = this->MaximumProjectionDistance * diagonal;
-    set = kerf::strokeConstraints(mesh, *state.locator, state.normals, strokes, options);
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot place stroke constraints: " << e.what());
-    return 0;
-  }
+    options.maximumDistance =
+      kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
+    const kerf::StrokeConstraintSet set = session.strokeConstraints(strokes, options);
 
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> vertices;
-  vtkNew<vtkDoubleArray> values;
-  values->SetName("ConstraintValue");
-  vtkNew<vtkSignedCharArray> sides;
-  sides->SetName("Side");
-  for (std::size_t i = 0; i < set.constraints.size(); ++i)
-  {
-    const vtkIdType id = points->InsertNextPoint(set.positions[i].data());
-    vertices->InsertNextCell(1, &id);
-    values->InsertNextValue(set.constraints[i].value);
-    sides->InsertNextValue(set.constraints[i].value > this->IsoValue ? 1 : -1);
-  }
-  output->SetPoints(points);
-  output->SetVerts(vertices);
-  output->GetPointData()->AddArray(values);
-  output->GetPointData()->SetActiveScalars("ConstraintValue");
-  output->GetPointData()->AddArray(sides);
-  vtkNew<vtkDoubleArray> isoValue;
-  isoValue->SetName("IsoValue");
-  isoValue->InsertNextValue(this->IsoValue);
-  output->GetFieldData()->AddArray(isoValue);
-  return 1;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> vertices;
+    std::vector<double> values;
+    vtkNew<vtkSignedCharArray> sides;
+    sides->SetName("Side");
+    for (std::size_t i = 0; i < set.constraints.size(); ++i)
+    {
+      const vtkIdType id = points->InsertNextPoint(set.positions[i].data());
+      vertices->InsertNextCell(1, &id);
+      values.push_back(set.constraints[i].value);
+      sides->InsertNextValue(set.constraints[i].value > this->IsoValue ? 1 : -1);
+    }
+    output->SetPoints(points);
+    output->SetVerts(vertices);
+    output->GetPointData()->AddArray(kerf::MakeArray("ConstraintValue", values));
+    output->GetPointData()->SetActiveScalars("ConstraintValue");
+    output->GetPointData()->AddArray(sides);
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("IsoValue", this->IsoValue));
+  });
 }
 
 void vtkStrokeConstraints::PrintSelf(ostream& os, vtkIndent indent)
@@ -207,5 +126,5 @@ void vtkStrokeConstraints::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Offset: " << this->Offset << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "StrokePoints: " << this->State->strokePoints.size() << "\n";
+  os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";
 }

@@ -1,7 +1,7 @@
 /**
  * @class vtkStrokeConstraints
  * @brief Turns strokes drawn on a surface into the paired constraints of a harmonic cut
- * (SeamCut, seamcut.txt 2.1.1).
+ * (SeamCut, section 2.1.1).
  *
  * Each stroke is a polyline near the surface: the lines of the second input (any number of
  * strokes), or, when no second input is connected, the points set with SetStrokePoint (one
@@ -11,7 +11,7 @@
  * 0.01 as in the paper) along the direction tangent to the surface and orthogonal to the
  * stroke; both points are projected again and get the values IsoValue + 1 (left of the stroke,
  * seen from outside) and IsoValue - 1. IsoValue is 0 for a new cut; to refine a cut at iso-value
- * I, set it to I (seamcut.txt section 3).
+ * I, set it to I (SeamCut, section 3).
  *
  * Output: a vtkPolyData of vertices at the constraint points with the point arrays
  * "ConstraintValue" (the value) and "Side" (+1 or -1), ready for vtkHarmonicField's second

@@ -1,7 +1,8 @@
-// vtkSurfaceDescriptors: converts, validates, calls kerf::computeSurfaceDescriptors, writes arrays.
+// vtkSurfaceDescriptors: converts and validates the surface, takes its descriptors from Core, writes arrays.
 #include "vtkSurfaceDescriptors.h"
 
 #include "Geometry/SurfaceDescriptors.h"
+#include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>
@@ -12,11 +13,16 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
-#include <new>
 
 vtkStandardNewMacro(vtkSurfaceDescriptors);
 
+struct vtkSurfaceDescriptors::Internals
+{
+  kerf::SurfaceInput surface;
+};
+
 vtkSurfaceDescriptors::vtkSurfaceDescriptors()
+  : State(new Internals)
 {
   this->SetNormalsArrayName("Normals");
   this->SetMaximumCurvatureArrayName("MaximumCurvature");
@@ -42,76 +48,50 @@ vtkSurfaceDescriptors::~vtkSurfaceDescriptors()
   this->SetNormalConeAngleArrayName(nullptr);
 }
 
+// The model of a Kerf filter (see Documentation/new-filter.md): RunGuarded is the border where
+// every failure becomes a vtkErrorMacro and a 0 return; LoadSurface converts and validates the
+// input against this algorithm's requirements (or reuses the conversion of the same geometry);
+// the algorithm runs in Core; the output keeps the input's arrays and adds named ones.
 int vtkSurfaceDescriptors::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  return kerf::RunGuarded(this, "Cannot compute surface descriptors", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    kerf::CheckOutputNames({ this->NormalsArrayName, this->MaximumCurvatureArrayName,
+      this->MinimumCurvatureArrayName, this->MaximumDirectionArrayName, this->MinimumDirectionArrayName,
+      this->MeanCurvatureArrayName, this->GaussianCurvatureArrayName, this->ConcaveArrayName,
+      this->NormalConeAngleArrayName });
 
-  const char* names[] = { this->NormalsArrayName, this->MaximumCurvatureArrayName,
-    this->MinimumCurvatureArrayName, this->MaximumDirectionArrayName,
-    this->MinimumDirectionArrayName, this->MeanCurvatureArrayName,
-    this->GaussianCurvatureArrayName, this->ConcaveArrayName, this->NormalConeAngleArrayName };
-  for (const char* name : names)
-  {
-    if (!name || !*name)
-    {
-      vtkErrorMacro("Every output array needs a non-empty name.");
-      return 0;
-    }
-  }
+    // What the algorithm accepts: the curvature tensor needs an oriented 2-manifold; boundaries,
+    // several components and zero-area triangles are handled.
+    kerf::MeshRequirements requirements;
+    requirements.manifold = true;
+    requirements.consistentOrientation = true;
+    requirements.allowZeroAreaFaces = true;
+    requirements.allowBoundary = true;
+    requirements.allowSeveralComponents = true;
+    kerf::SurfaceInput& surface = this->State->surface;
+    kerf::LoadSurface(surface, input, requirements);
+    this->UpdateProgress(0.2);
 
-  kerf::MeshRequirements requirements;
-  requirements.manifold = true;
-  requirements.consistentOrientation = true;
-  requirements.allowZeroAreaFaces = true;
-  requirements.allowBoundary = true;
-  requirements.allowSeveralComponents = true;
+    // The Core algorithm, cached with the surface: a Harmonic Field downstream with concavity-aware
+    // weights reuses these descriptors.
+    const kerf::SurfaceDescriptors& d = surface.GetSurface().descriptors();
+    this->UpdateProgress(0.9);
 
-  kerf::SurfaceInput surface;
-  std::string error;
-  if (!surface.Load(input, requirements, error))
-  {
-    vtkErrorMacro("Cannot compute surface descriptors: " << error);
-    return 0;
-  }
-  this->UpdateProgress(0.2);
-
-  kerf::SurfaceDescriptors descriptors;
-  try
-  {
-    descriptors = kerf::computeSurfaceDescriptors(surface.Mesh());
-  }
-  catch (const std::exception& e)
-  {
-    vtkErrorMacro("Cannot compute surface descriptors: " << e.what());
-    return 0;
-  }
-  this->UpdateProgress(0.9);
-  surface.ExpandToInputPoints(descriptors.normals);
-  surface.ExpandToInputPoints(descriptors.maximumCurvature);
-  surface.ExpandToInputPoints(descriptors.minimumCurvature);
-  surface.ExpandToInputPoints(descriptors.maximumDirections);
-  surface.ExpandToInputPoints(descriptors.minimumDirections);
-  surface.ExpandToInputPoints(descriptors.meanCurvature);
-  surface.ExpandToInputPoints(descriptors.gaussianCurvature);
-  surface.ExpandToInputPoints(descriptors.concave);
-  surface.ExpandToInputPoints(descriptors.normalConeAngle);
-
-  surface.MakeOutput(input, output);
-  vtkPointData* pointData = output->GetPointData();
-  auto normals = kerf::MakeArray(this->NormalsArrayName, descriptors.normals);
-  pointData->SetNormals(normals);
-  pointData->AddArray(kerf::MakeArray(this->MaximumCurvatureArrayName, descriptors.maximumCurvature));
-  pointData->AddArray(kerf::MakeArray(this->MinimumCurvatureArrayName, descriptors.minimumCurvature));
-  pointData->AddArray(kerf::MakeArray(this->MaximumDirectionArrayName, descriptors.maximumDirections));
-  pointData->AddArray(kerf::MakeArray(this->MinimumDirectionArrayName, descriptors.minimumDirections));
-  pointData->AddArray(kerf::MakeArray(this->MeanCurvatureArrayName, descriptors.meanCurvature));
-  pointData->AddArray(kerf::MakeArray(this->GaussianCurvatureArrayName, descriptors.gaussianCurvature));
-  pointData->AddArray(kerf::MakeArray(this->ConcaveArrayName, descriptors.concave));
-  pointData->AddArray(kerf::MakeArray(this->NormalConeAngleArrayName, descriptors.normalConeAngle));
-  this->UpdateProgress(1.0);
-  return 1;
+    surface.MakeOutput(input, output);
+    vtkPointData* pointData = output->GetPointData();
+    pointData->SetNormals(kerf::MakeArray(this->NormalsArrayName, surface.ToInputPoints(d.normals)));
+    pointData->AddArray(kerf::MakeArray(this->MaximumCurvatureArrayName, surface.ToInputPoints(d.maximumCurvature)));
+    pointData->AddArray(kerf::MakeArray(this->MinimumCurvatureArrayName, surface.ToInputPoints(d.minimumCurvature)));
+    pointData->AddArray(kerf::MakeArray(this->MaximumDirectionArrayName, surface.ToInputPoints(d.maximumDirections)));
+    pointData->AddArray(kerf::MakeArray(this->MinimumDirectionArrayName, surface.ToInputPoints(d.minimumDirections)));
+    pointData->AddArray(kerf::MakeArray(this->MeanCurvatureArrayName, surface.ToInputPoints(d.meanCurvature)));
+    pointData->AddArray(kerf::MakeArray(this->GaussianCurvatureArrayName, surface.ToInputPoints(d.gaussianCurvature)));
+    pointData->AddArray(kerf::MakeArray(this->ConcaveArrayName, surface.ToInputPoints(d.concave)));
+    pointData->AddArray(kerf::MakeArray(this->NormalConeAngleArrayName, surface.ToInputPoints(d.normalConeAngle)));
+  });
 }
 
 void vtkSurfaceDescriptors::PrintSelf(ostream& os, vtkIndent indent)

@@ -17,9 +17,9 @@
  * - MaximumCurvatureDirection and MinimumCurvatureDirection: unit tangent vectors
  * - MeanCurvature (k1 + k2) / 2 and GaussianCurvature k1 k2
  * - Concave: 1 where (p_hat - p) . n > 0, p_hat the centroid of the one-ring
- *   (Au et al. 2011; roi-scissor.txt Eq. 3), else 0 (unsigned char)
+ *   (Au et al. 2011; ROI Scissor, Eq. 3), else 0 (unsigned char)
  * - NormalConeAngle: the largest angle, in radians, between the normals of two triangles around
- *   the vertex (geometry-seam-carving.txt Eq. 4)
+ *   the vertex (Dekkers and Kobbelt 2014, Eq. 4)
  *
  * Accepted input: a vtkPolyData surface whose polygons and strips are triangulated on the fly.
  * Points with identical coordinates (OBJ texture seams, STL facets) are welded and share their
@@ -37,6 +37,7 @@
 #include "KerfFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory>
 #include <string>
 
 class KERFFILTERS_EXPORT vtkSurfaceDescriptors : public vtkPolyDataAlgorithm
@@ -90,6 +91,10 @@ protected:
 private:
   vtkSurfaceDescriptors(const vtkSurfaceDescriptors&) = delete;
   void operator=(const vtkSurfaceDescriptors&) = delete;
+
+  /// The converted surface, kept between executions (see kerf::SurfaceInput).
+  struct Internals;
+  std::unique_ptr<Internals> State;
 };
 
 #endif

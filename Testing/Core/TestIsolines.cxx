@@ -1,7 +1,10 @@
 // Isolines of piecewise-linear fields: extraction on analytic fields, ROI Scissor scores and cut sides.
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
+#include "Evaluation/SegmentationMetrics.h"
+#include "Evaluation/SimulatedStrokes.h"
 #include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
@@ -13,6 +16,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <set>
 #include <string>
 
@@ -356,7 +360,7 @@ TEST(Isolines, RefusesFieldOfWrongSize)
 }
 
 // ---------------------------------------------------------------------------------------------
-// Scores (roi-scissor.txt 4.2).
+// Scores (ROI Scissor, section 4.2).
 
 TEST(Isolines, ScoreOfLinearFieldIsItsSlope)
 {
@@ -563,3 +567,97 @@ TEST(Isolines, SphereCutAlongOneOrBothLoops)
   EXPECT_NE(regionLabelBoth[0], regionLabelBoth[2]);
   EXPECT_NE(regionLabelBoth[1], regionLabelBoth[2]);
 }
+
+// Cuts from several strokes (labelStrokeCuts): the segments the strokes intend, with
+// T-junctions. A sphere in three sectors (orange slices): three boundaries from pole to pole,
+// meeting three at a time at both poles. One stroke along each boundary.
+namespace kerf
+{
+namespace
+{
+struct StrokedSectors
+{
+  TriangleMesh mesh;
+  std::vector<int> truth;
+  std::vector<std::vector<double>> fields;
+  std::vector<std::vector<Isoline>> isolines;
+  std::vector<CutWithStroke> cuts;
+};
+
+StrokedSectors strokedSectors(int sectors)
+{
+  StrokedSectors s;
+  s.mesh = makeIcosphere(1.0, 4);
+  const double pi = 3.14159265358979323846;
+  for (int f = 0; f < s.mesh.faceCount(); ++f)
+  {
+    const Triangle& t = s.mesh.triangle(f);
+    const Vector3 centre = (s.mesh.point(t[0]) + s.mesh.point(t[1]) + s.mesh.point(t[2])) / 3.0;
+    const double angle = std::atan2(centre.y(), centre.x()) + pi;
+    s.truth.push_back(std::min(sectors - 1, static_cast<int>(angle / (2.0 * pi / sectors))));
+  }
+  auto surface = std::make_shared<const Surface>(s.mesh);
+  HarmonicCutSession session(surface);
+  StrokeOptions strokeOptions;
+  strokeOptions.offset = 0.01 * s.mesh.boundingBoxDiagonal();
+  const std::vector<BoundaryStroke> strokes = boundaryStrokes(s.mesh, s.truth, 0.03 * s.mesh.boundingBoxDiagonal());
+  s.fields.reserve(strokes.size());
+  s.isolines.reserve(strokes.size());
+  for (const BoundaryStroke& stroke : strokes)
+  {
+    HarmonicCutSession::StrokeCut cut = session.cutFromStroke({ stroke.points }, strokeOptions, HarmonicFieldOptions());
+    EXPECT_GE(cut.chosen, 0);
+    s.fields.push_back(std::move(cut.field));
+    s.isolines.push_back(std::move(cut.isolines));
+    CutWithStroke withStroke;
+    withStroke.cut = { &s.fields.back(), 0.0, { &s.isolines.back()[static_cast<std::size_t>(cut.chosen)] } };
+    withStroke.stroke = stroke.points;
+    withStroke.sideFaces = cut.sideFaces;
+    s.cuts.push_back(std::move(withStroke));
+  }
+  return s;
+}
+
+int segmentCount(const std::vector<int>& labels)
+{
+  return *std::max_element(labels.begin(), labels.end()) + 1;
+}
+
+TEST(StrokeCuts, TJunctionsGiveTheIntendedSegments)
+{
+  for (int sectors : { 3, 4 })
+  {
+    const StrokedSectors s = strokedSectors(sectors);
+    ASSERT_EQ(static_cast<int>(s.cuts.size()), sectors); // one stroke per boundary
+    std::vector<FieldCut> whole;
+    for (const CutWithStroke& cut : s.cuts)
+    {
+      whole.push_back(cut.cut);
+    }
+    // Every isoline is a closed loop round the sphere: cutting along all of them splits each
+    // sector into pieces no stroke separates.
+    EXPECT_GT(segmentCount(labelCuts(s.mesh, whole)), sectors);
+    const std::vector<int> labels = labelStrokeCuts(s.mesh, s.cuts, 0.03 * s.mesh.boundingBoxDiagonal());
+    EXPECT_EQ(segmentCount(labels), sectors);
+    const SegmentationScores scores = compareSegmentations(s.mesh, labels, s.truth);
+    EXPECT_LT(scores.randIndexError, 0.01) << sectors << " sectors";
+  }
+}
+
+TEST(StrokeCuts, TheTwoSidesOfAStrokeStayApart)
+{
+  // Two sectors: one boundary loop in two strokes (each pole is an end of both).
+  const StrokedSectors s = strokedSectors(2);
+  const std::vector<int> labels = labelStrokeCuts(s.mesh, s.cuts, 0.03 * s.mesh.boundingBoxDiagonal());
+  for (const CutWithStroke& cut : s.cuts)
+  {
+    for (std::size_t i = 0; i + 1 < cut.sideFaces.size(); i += 2)
+    {
+      EXPECT_NE(labels[cut.sideFaces[i]], labels[cut.sideFaces[i + 1]]);
+    }
+  }
+  EXPECT_EQ(segmentCount(labels), 2);
+}
+
+} // namespace
+} // namespace kerf

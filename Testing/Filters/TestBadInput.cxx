@@ -1,12 +1,9 @@
 // Bad input never crashes, never corrupts, and is reported: hand-made defects and the xatlas
 // edge cases fed to every Kerf filter, and malformed files fed to the readers.
+#include "KerfFilterList.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
-#include "vtkHarmonicField.h"
-#include "vtkIsolineScoring.h"
 #include "vtkMeshFileReader.h"
-#include "vtkStrokeConstraints.h"
-#include "vtkSurfaceDescriptors.h"
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -95,27 +92,11 @@ std::vector<BadMesh> handMadeDefects()
   return cases;
 }
 
-// Every Kerf filter that takes a surface, as a factory. `alone` is true for filters that run
-// on a valid surface without further input (the others also need constraints or a field).
-struct Filter
-{
-  std::string name;
-  std::function<vtkSmartPointer<vtkPolyDataAlgorithm>()> make;
-  bool alone;
-};
-
-template <typename T>
-Filter filter(const char* name, bool alone)
-{
-  return { name, [] { return vtkSmartPointer<vtkPolyDataAlgorithm>(vtkSmartPointer<T>::New()); }, alone };
-}
+using Filter = kerf::test::SurfaceFilter;
 
 std::vector<Filter> filters()
 {
-  return { filter<vtkSurfaceDescriptors>("vtkSurfaceDescriptors", true),
-    filter<vtkHarmonicField>("vtkHarmonicField", false),
-    filter<vtkStrokeConstraints>("vtkStrokeConstraints", false),
-    filter<vtkIsolineScoring>("vtkIsolineScoring", false) };
+  return kerf::test::SurfaceFilters();
 }
 } // namespace
 

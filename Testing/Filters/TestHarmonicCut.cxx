@@ -140,7 +140,8 @@ int TestHarmonicCut(int, char*[])
   dumbbell->GetPointData()->AddArray(tips);
   vtkNew<vtkHarmonicField> neckField;
   neckField->SetInputData(dumbbell);
-  neckField->SetHardValueArrayName("Tips");
+  neckField->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Tips");
+  neckField->UseHardValuesOn();
   neckField->SetWeightingToConcavityAware();
   vtkNew<vtkIsolineScoring> best;
   best->SetInputConnection(neckField->GetOutputPort());
@@ -205,7 +206,7 @@ int TestHarmonicCut(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(farStroke).find("away from the surface") != std::string::npos);
   vtkNew<vtkStrokeConstraints> noStrokeAtAll;
   noStrokeAtAll->SetInputData(0, cylinder);
-  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(noStrokeAtAll).find("No stroke") != std::string::npos);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(noStrokeAtAll).find("there is no stroke") != std::string::npos);
   vtkNew<vtkStrokeConstraints> onePoint;
   onePoint->SetInputData(0, cylinder);
   onePoint->SetNumberOfStrokePoints(2);

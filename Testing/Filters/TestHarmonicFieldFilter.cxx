@@ -87,7 +87,8 @@ int TestHarmonicFieldFilter(int, char*[])
   plane->GetPointData()->AddArray(hard);
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(plane);
-  field->SetHardValueArrayName("Hard");
+  field->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Hard");
+  field->UseHardValuesOn();
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(field).empty());
   vtkDataArray* f = field->GetOutput()->GetPointData()->GetArray("HarmonicField");
   double worst = 0.0;

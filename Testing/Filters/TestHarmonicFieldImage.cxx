@@ -32,7 +32,8 @@ int TestHarmonicFieldImage(int argc, char* argv[])
   shape->GetPointData()->AddArray(tips);
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(shape);
-  field->SetHardValueArrayName("Tips");
+  field->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Tips");
+  field->UseHardValuesOn();
   field->SetWeightingToSmoothConcavity();
   field->Update();
 

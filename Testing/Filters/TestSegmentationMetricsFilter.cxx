@@ -126,13 +126,13 @@ int TestSegmentationMetricsFilter(int, char*[])
         m->SetInputData(strip);
         m->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Nope");
       },
-      "no reference segmentation" },
+      "the reference segmentation has no one-component cell array named 'Nope'" },
     { "wrong length",
       [&](vtkSegmentationMetrics* m) {
         m->SetInputData(shortArray);
         m->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Human");
       },
-      "has 1 values but the mesh has 8 cells" },
+      "has 1 values for 8 cells" },
     { "fractional label",
       [&](vtkSegmentationMetrics* m) {
         m->SetInputData(fractional);

@@ -126,7 +126,8 @@ class BadConstraintsTest(unittest.TestCase):
         surface.GetPointData().AddArray(point_set([], "Hard", values).GetPointData().GetArray("Hard"))
         field = kerf.vtkHarmonicField()
         field.SetInputData(surface)
-        field.SetHardValueArrayName("Hard")
+        field.SetInputArrayToProcess(0, 0, 0, 0, "Hard")
+        field.UseHardValuesOn()
         return field
 
     def test_hard_values_of_the_wrong_length(self):
@@ -184,6 +185,53 @@ class BadConstraintsTest(unittest.TestCase):
         stroke.SetIsoValue(math.nan)
         self.assert_refused(stroke, "must be finite")
 
+    def test_stroke_point_far_beyond_the_mesh(self):
+        stroke = kerf.vtkStrokeConstraints()
+        stroke.SetInputData(octahedron())
+        stroke.SetInputData(1, polyline([(0, 1e308, 0), (0.7, 0.7, 0)], (0, 1)))
+        self.assert_refused(stroke, "stroke 0 has a point with NaN, infinite or huge coordinates")
+
+    def test_absurd_stroke_point_counts_are_refused_without_allocating(self):
+        stroke = kerf.vtkStrokeConstraints()
+        for call in (lambda: stroke.SetStrokePoint(2 ** 31 - 1, 0, 0, 0),
+                     lambda: stroke.SetNumberOfStrokePoints(2 ** 31 - 1)):
+            errors = []
+
+            @calldata_type(VTK_STRING)
+            def collect(caller, event, message):
+                errors.append(message)
+            tag = stroke.AddObserver(vtkCommand.ErrorEvent, collect)
+            call()
+            stroke.RemoveObserver(tag)
+            self.assertEqual(stroke.GetNumberOfStrokePoints(), 0)
+            self.assertTrue(errors and "at most 10000000 points" in errors[0], errors)
+
+    def test_nan_parameters_are_refused(self):
+        for setter in ("SetConcaveBeta", "SetConcavityQuantile", "SetSoftConstraintWeight"):
+            with self.subTest(setter=setter):
+                field = kerf.vtkHarmonicField()
+                field.SetInputData(octahedron())
+                field.SetInputData(1, point_set([(1, 0, 0), (-1, 0, 0)], "ConstraintValue", [1.0, -1.0]))
+                field.SetWeightingToConcavityAware()
+                getattr(field, setter)(math.nan)
+                self.assert_refused(field, "must be a number, not NaN")
+
+    def test_needle_triangles_have_finite_curvature(self):
+        # A quad with one vertex 1e8 away: a needle and a sliver. Never NaN output.
+        mesh = vtkPolyData()
+        mesh.SetPoints(vtkPoints())
+        for point in ((0, 0, 0), (1, 0, 0), (1, 1e8, 0), (0, 1, 0)):
+            mesh.GetPoints().InsertNextPoint(point)
+        mesh.SetPolys(vtkCellArray())
+        mesh.GetPolys().InsertNextCell(3, (0, 1, 2))
+        mesh.GetPolys().InsertNextCell(3, (0, 2, 3))
+        descriptors = kerf.vtkSurfaceDescriptors()
+        descriptors.SetInputData(mesh)
+        self.assertEqual(update_and_capture_errors(descriptors), (1, []))
+        for name in ("MaximumCurvature", "MinimumCurvature", "MeanCurvature", "GaussianCurvature"):
+            array = descriptors.GetOutput().GetPointData().GetArray(name)
+            self.assertEqual([array.GetValue(i) for i in range(4)], [0.0] * 4, name)
+
     def test_cut_near_a_nan_stroke(self):
         surface = octahedron()
         surface.GetPointData().AddArray(point_set([], "HarmonicField", [1, -1, 0.5, -0.5, 0.2, -0.2])
@@ -192,7 +240,7 @@ class BadConstraintsTest(unittest.TestCase):
         cut.SetInputData(surface)
         cut.SetInputData(1, point_set([(math.nan, 0, 0)]))
         cut.SetModeToNearStroke()
-        self.assert_refused(cut, "Stroke point 0 has a NaN")
+        self.assert_refused(cut, "stroke point 0 has a NaN")
 
     def test_huge_and_tiny_meshes(self):
         for scale, phrase in ((1e300, "beyond +-1e50"), (1e-300, "below 1e-50")):

@@ -258,7 +258,8 @@ class HarmonicCutTest(unittest.TestCase):
 
         field = kerf.vtkHarmonicField()
         field.SetInputData(camel)
-        field.SetHardValueArrayName("Tips")
+        field.SetInputArrayToProcess(0, 0, 0, 0, "Tips")
+        field.UseHardValuesOn()
         field.SetWeightingToConcavityAware()
         best = kerf.vtkIsolineScoring()
         best.SetInputConnection(field.GetOutputPort())

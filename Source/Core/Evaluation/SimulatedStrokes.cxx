@@ -12,12 +12,21 @@ namespace kerf
 
 namespace
 {
-// Walks the chain of `edges` (indices into mesh edges) containing edge `start` from an end,
-// marking the edges it takes; returns the vertex sequence.
+// Walks a chain of the unused `edges` (indices into mesh edges) through edge `startEdge`, from
+// an end, marking the edges it takes; returns the vertex sequence. Where the chain branches the
+// walk takes one way; the edges it leaves make chains of their own in later walks.
 std::vector<int> walkChain(const TriangleMesh& mesh, const std::vector<int>& edges,
   const std::map<int, std::vector<int>>& incident, std::vector<char>& used, int startEdge)
 {
-  // Find an end: a vertex of the chain with one incident chain edge, reached from startEdge.
+  auto unusedAt = [&](int v) {
+    int count = 0;
+    for (int e : incident.at(v))
+    {
+      count += used[e] ? 0 : 1;
+    }
+    return count;
+  };
+  // An end: a vertex with one unused chain edge, in the unused part connected to startEdge.
   std::vector<int> component{ startEdge };
   std::vector<char> seen(edges.size(), 0);
   seen[startEdge] = 1;
@@ -27,7 +36,7 @@ std::vector<int> walkChain(const TriangleMesh& mesh, const std::vector<int>& edg
     {
       for (int other : incident.at(v))
       {
-        if (!seen[other])
+        if (!seen[other] && !used[other])
         {
           seen[other] = 1;
           component.push_back(other);
@@ -35,16 +44,20 @@ std::vector<int> walkChain(const TriangleMesh& mesh, const std::vector<int>& edg
       }
     }
   }
-  int startVertex = mesh.edgeVertices(edges[startEdge])[0];
+  int startVertex = -1;
   for (int e : component)
   {
     for (int v : mesh.edgeVertices(edges[e]))
     {
-      if (incident.at(v).size() == 1)
+      if (unusedAt(v) == 1 && (startVertex < 0 || v < startVertex))
       {
-        startVertex = std::min(startVertex, v);
+        startVertex = v;
       }
     }
+  }
+  if (startVertex < 0)
+  {
+    startVertex = mesh.edgeVertices(edges[startEdge])[0]; // a loop: any vertex
   }
   std::vector<int> path{ startVertex };
   int current = startVertex;
@@ -67,10 +80,6 @@ std::vector<int> walkChain(const TriangleMesh& mesh, const std::vector<int>& edg
     }
     path.push_back(next);
     current = next;
-  }
-  for (int e : component)
-  {
-    used[e] = 1;
   }
   return path;
 }
@@ -151,7 +160,7 @@ std::vector<BoundaryStroke> boundaryStrokes(const TriangleMesh& mesh, const std:
       {
         length += (mesh.point(path[k]) - mesh.point(path[k - 1])).norm();
       }
-      if (length >= spacing)
+      if (length >= 0.25 * spacing)
       {
         strokes.push_back({ entry.first.first, entry.first.second, resample(mesh, path, spacing) });
       }

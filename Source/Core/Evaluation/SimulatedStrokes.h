@@ -17,10 +17,12 @@ struct BoundaryStroke
 };
 
 /// One stroke along each boundary between two segments of a per-face segmentation: for every
-/// pair of labels whose faces share edges, each connected chain of those edges (a handle
-/// attached at two places has two) at least `spacing` long, walked from an end (or around, if it
-/// is a loop) and resampled by arc length to points about `spacing` apart (at least 4, at most
-/// 64). Unlabelled faces (-1) have no boundary. Strokes are ordered by label pair and then by
+/// pair of labels whose faces share edges, each chain of those edges (a handle attached at two
+/// places has two) at least a quarter of `spacing` long (a user strokes a thin leg too), walked
+/// from an end (or around, if it is a loop) and resampled by arc length to points about
+/// `spacing` apart (at least 4, at most 64). Where a jagged boundary branches (a vertex with more than two of the pair's edges) the walk goes on
+/// one way and the edges it leaves become strokes of their own, so every boundary edge is
+/// stroked. Unlabelled faces (-1) have no boundary. Strokes are ordered by label pair and then by
 /// their first edge, so the result is deterministic.
 std::vector<BoundaryStroke> boundaryStrokes(
   const TriangleMesh& mesh, const std::vector<int>& labels, double spacing);

@@ -174,4 +174,11 @@ ClosestPointLocator::Hit ClosestPointLocator::closest(const Vector3& query) cons
   return best;
 }
 
+int snapToVertex(const TriangleMesh& mesh, const ClosestPointLocator::Hit& hit)
+{
+  int corner;
+  hit.barycentric.maxCoeff(&corner);
+  return mesh.triangle(hit.face)[corner];
+}
+
 } // namespace kerf

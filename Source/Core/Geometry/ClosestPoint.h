@@ -43,6 +43,10 @@ private:
   std::vector<Node> Nodes;
 };
 
+/// The vertex a surface point snaps to: the corner of its triangle with the largest barycentric
+/// coordinate (the first such corner on ties).
+int snapToVertex(const TriangleMesh& mesh, const ClosestPointLocator::Hit& hit);
+
 /// The point of triangle (a, b, c) nearest to p, with its barycentric coordinates.
 Vector3 closestPointOnTriangle(const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c,
   Vector3& barycentric);

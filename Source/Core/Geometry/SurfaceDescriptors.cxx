@@ -1,12 +1,14 @@
 // Rusinkiewicz 2004 curvature tensors, Max 1999 normals, concavity flags and normal-cone angles.
 #include "Geometry/SurfaceDescriptors.h"
 
+#include "Error.h"
 #include "Mesh/MeshValidation.h"
 
 #include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace kerf
 {
@@ -107,13 +109,16 @@ std::vector<std::array<double, 3>> computeCornerAreas(const TriangleMesh& mesh)
       c = { 0.0, 0.0, 0.0 };
       continue;
     }
-    // Barycentric weights of the circumcentre; a non-positive one marks an obtuse corner.
-    const double ew[3] = { l2[0] * (l2[1] + l2[2] - l2[0]), l2[1] * (l2[2] + l2[0] - l2[1]),
-      l2[2] * (l2[0] + l2[1] - l2[2]) };
+    // Barycentric weights of the circumcentre, l_j^2 (l_j1^2 + l_j2^2 - l_j^2), written with the
+    // dot product of the corner's edges (l_j1^2 + l_j2^2 - l_j^2 = -2 e_j1 . e_j2): the sum of
+    // squared lengths cancels catastrophically on needle triangles. A negative one marks an
+    // obtuse corner; a right angle (0) belongs to the circumcentre case.
+    const double ew[3] = { -2.0 * l2[0] * e[1].dot(e[2]), -2.0 * l2[1] * e[2].dot(e[0]),
+      -2.0 * l2[2] * e[0].dot(e[1]) };
     bool obtuse = false;
     for (int j = 0; j < 3 && !obtuse; ++j)
     {
-      if (ew[j] <= 0.0)
+      if (ew[j] < 0.0)
       {
         const int j1 = (j + 1) % 3;
         const int j2 = (j + 2) % 3;
@@ -272,7 +277,7 @@ SurfaceDescriptors computeSurfaceDescriptors(const TriangleMesh& mesh)
     out.gaussianCurvature[v] = k1 * k2;
   }
 
-  // Concavity (roi-scissor.txt Eq. 3) from the one-ring centroid.
+  // Concavity (ROI Scissor, Eq. 3) from the one-ring centroid.
   out.concave.assign(n, 0);
   for (int v = 0; v < n; ++v)
   {
@@ -290,7 +295,7 @@ SurfaceDescriptors computeSurfaceDescriptors(const TriangleMesh& mesh)
     out.concave[v] = (centroid - mesh.point(v)).dot(out.normals[v]) > 0.0 ? 1 : 0;
   }
 
-  // Normal-cone angle (geometry-seam-carving.txt Eq. 4): the widest pair of face normals.
+  // Normal-cone angle (Dekkers and Kobbelt 2014, Eq. 4): the widest pair of face normals.
   std::vector<Vector3> faceNormals(mesh.faceCount());
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
@@ -322,6 +327,17 @@ SurfaceDescriptors computeSurfaceDescriptors(const TriangleMesh& mesh)
       }
     }
     out.normalConeAngle[v] = std::acos(std::clamp(smallestDot, -1.0, 1.0));
+  }
+
+  // Never NaN output: a value that could not be computed is refused, naming its vertex.
+  for (int v = 0; v < n; ++v)
+  {
+    if (!std::isfinite(out.maximumCurvature[v]) || !std::isfinite(out.minimumCurvature[v]) ||
+      !out.normals[v].allFinite() || !out.maximumDirections[v].allFinite() || !out.minimumDirections[v].allFinite())
+    {
+      throw Error("the curvature at vertex " + std::to_string(v) +
+        " is not a finite number (its triangles are too degenerate to estimate it)");
+    }
   }
   return out;
 }

@@ -29,10 +29,10 @@ struct SurfaceDescriptors
   std::vector<Vector3> minimumDirections; ///< unit tangent direction of k2 (normal x max dir)
   std::vector<double> meanCurvature;      ///< (k1 + k2) / 2
   std::vector<double> gaussianCurvature;  ///< k1 * k2
-  /// 1 where (p_hat - p) . n > 0 with p_hat the centroid of the one-ring (roi-scissor.txt Eq. 3).
+  /// 1 where (p_hat - p) . n > 0 with p_hat the centroid of the one-ring (ROI Scissor, Eq. 3).
   std::vector<unsigned char> concave;
   /// Largest angle in radians between the normals of two triangles around the vertex
-  /// (geometry-seam-carving.txt Eq. 4).
+  /// (Dekkers and Kobbelt 2014, Eq. 4).
   std::vector<double> normalConeAngle;
 };
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 
 namespace kerf
 {
@@ -332,6 +333,268 @@ std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>
       }
     }
     ++next;
+  }
+  return labels;
+}
+
+namespace
+{
+// Union-find over region ids.
+int findRoot(std::vector<int>& parent, int r)
+{
+  while (parent[r] != r)
+  {
+    parent[r] = parent[parent[r]];
+    r = parent[r];
+  }
+  return r;
+}
+
+double distanceToPolyline(const Vector3& p, const std::vector<Vector3>& polyline)
+{
+  double nearest = std::numeric_limits<double>::infinity();
+  if (polyline.size() == 1)
+  {
+    return (p - polyline[0]).norm();
+  }
+  for (std::size_t i = 0; i + 1 < polyline.size(); ++i)
+  {
+    nearest = std::min(nearest, pointSegmentDistance(p, polyline[i], polyline[i + 1]));
+  }
+  return nearest;
+}
+} // namespace
+
+std::vector<int> labelStrokeCuts(
+  const TriangleMesh& mesh, const std::vector<CutWithStroke>& cuts, double supportDistance)
+{
+  std::vector<FieldCut> fieldCuts;
+  for (const CutWithStroke& cut : cuts)
+  {
+    fieldCuts.push_back(cut.cut);
+  }
+  const std::vector<int> regions = labelCuts(mesh, fieldCuts);
+  const int faces = mesh.faceCount();
+  const int regionCount = faces == 0 ? 0 : *std::max_element(regions.begin(), regions.end()) + 1;
+
+  // Per cut: the side of each face, and where its isoline runs near its stroke.
+  std::vector<std::vector<char>> upper(cuts.size(), std::vector<char>(faces));
+  std::vector<std::vector<signed char>> near(cuts.size(), std::vector<signed char>(faces, -1)); // -1: off the cut
+  for (std::size_t c = 0; c < cuts.size(); ++c)
+  {
+    const FieldCut& cut = cuts[c].cut;
+    const std::vector<double>& field = *cut.field;
+    for (int f = 0; f < faces; ++f)
+    {
+      const Triangle& t = mesh.triangle(f);
+      upper[c][f] = (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= cut.value ? 1 : 0;
+    }
+    for (const Isoline* line : cut.components)
+    {
+      const std::size_t n = line->points.size();
+      for (std::size_t i = 0; i < line->faces.size(); ++i)
+      {
+        const Vector3 middle = 0.5 * (line->points[i] + line->points[(i + 1) % n]);
+        near[c][line->faces[i]] = distanceToPolyline(middle, cuts[c].stroke) <= supportDistance ? 1 : 0;
+      }
+    }
+  }
+
+  // The boundaries between regions: their length and the length a stroke supports.
+  std::map<std::pair<int, int>, std::pair<double, double>> boundaries;
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    if (mesh.edgeFaceCount(e) != 2)
+    {
+      continue;
+    }
+    const int f = mesh.edgeFaces(e)[0];
+    const int g = mesh.edgeFaces(e)[1];
+    if (regions[f] == regions[g])
+    {
+      continue;
+    }
+    const double length =
+      (mesh.point(mesh.edgeVertices(e)[0]) - mesh.point(mesh.edgeVertices(e)[1])).norm();
+    bool supported = false;
+    for (std::size_t c = 0; c < cuts.size() && !supported; ++c)
+    {
+      supported = upper[c][f] != upper[c][g] && (near[c][f] == 1 || near[c][g] == 1);
+    }
+    auto& entry = boundaries[{ std::min(regions[f], regions[g]), std::max(regions[f], regions[g]) }];
+    entry.first += length;
+    entry.second += supported ? length : 0.0;
+  }
+
+  // A stroke speaks only where its cut follows it: when most of the stroke lies within
+  // supportDistance of its isoline.
+  std::vector<char> followed(cuts.size(), 0);
+  for (std::size_t c = 0; c < cuts.size(); ++c)
+  {
+    int close = 0;
+    for (const Vector3& p : cuts[c].stroke)
+    {
+      double nearest = std::numeric_limits<double>::infinity();
+      for (const Isoline* line : cuts[c].cut.components)
+      {
+        const std::size_t n = line->points.size();
+        for (std::size_t i = 0; i + 1 < n + (line->closed ? 1 : 0); ++i)
+        {
+          nearest = std::min(nearest, pointSegmentDistance(p, line->points[i], line->points[(i + 1) % n]));
+        }
+      }
+      close += nearest <= supportDistance ? 1 : 0;
+    }
+    followed[c] = 2 * close > static_cast<int>(cuts[c].stroke.size()) ? 1 : 0;
+  }
+
+  // The two sides of every stroke must stay apart.
+  std::vector<std::vector<int>> apart(static_cast<std::size_t>(regionCount));
+  for (std::size_t c = 0; c < cuts.size(); ++c)
+  {
+    if (!followed[c])
+    {
+      continue;
+    }
+    const CutWithStroke& cut = cuts[c];
+    for (std::size_t i = 0; i + 1 < cut.sideFaces.size(); i += 2)
+    {
+      // A pair counts where the cut puts its two points on different sides.
+      const int a = cut.sideFaces[i], b = cut.sideFaces[i + 1];
+      if (a >= 0 && b >= 0 && a < faces && b < faces && regions[a] != regions[b] && upper[c][a] != upper[c][b])
+      {
+        apart[regions[a]].push_back(regions[b]);
+        apart[regions[b]].push_back(regions[a]);
+      }
+    }
+  }
+
+  struct Candidate
+  {
+    double support;
+    double length;
+    int a, b;
+  };
+  std::vector<Candidate> order;
+  for (const auto& entry : boundaries)
+  {
+    order.push_back({ entry.second.second / entry.second.first, entry.second.first, entry.first.first,
+      entry.first.second });
+  }
+  std::sort(order.begin(), order.end(), [](const Candidate& x, const Candidate& y) {
+    return x.support != y.support ? x.support < y.support
+                                  : x.length != y.length ? x.length < y.length : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+  });
+  std::vector<int> parent(static_cast<std::size_t>(regionCount));
+  for (int r = 0; r < regionCount; ++r)
+  {
+    parent[r] = r;
+  }
+  for (const Candidate& candidate : order)
+  {
+    const int a = findRoot(parent, candidate.a);
+    const int b = findRoot(parent, candidate.b);
+    if (a == b)
+    {
+      continue;
+    }
+    bool forbidden = false;
+    for (int other : apart[a])
+    {
+      forbidden = forbidden || findRoot(parent, other) == b;
+    }
+    if (forbidden)
+    {
+      continue;
+    }
+    const int root = std::min(a, b), child = std::max(a, b);
+    parent[child] = root;
+    apart[root].insert(apart[root].end(), apart[child].begin(), apart[child].end());
+    apart[child].clear();
+  }
+
+  // Each side of each stroke has a home: the merged region holding most of its constraint points.
+  // Small pieces between cuts that cross near a junction can hold a few points of two strokes and
+  // so stay apart from both neighbours; a region that is no side's home joins the neighbour it
+  // shares the longest boundary with (smallest first).
+  std::vector<char> home(static_cast<std::size_t>(regionCount), 0);
+  for (std::size_t c = 0; c < cuts.size(); ++c)
+  {
+    const CutWithStroke& cut = cuts[c];
+    for (std::size_t side = 0; side < 2 && followed[c]; ++side)
+    {
+      std::map<int, int> count;
+      for (std::size_t i = side; i < cut.sideFaces.size(); i += 2)
+      {
+        const int f = cut.sideFaces[i];
+        if (f >= 0 && f < faces)
+        {
+          ++count[findRoot(parent, regions[f])];
+        }
+      }
+      int best = -1;
+      for (const auto& entry : count)
+      {
+        best = best < 0 || entry.second > count[best] ? entry.first : best;
+      }
+      if (best >= 0)
+      {
+        home[best] = 1;
+      }
+    }
+  }
+  std::vector<double> area(static_cast<std::size_t>(regionCount), 0.0);
+  for (int f = 0; f < faces; ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    area[findRoot(parent, regions[f])] +=
+      (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
+  }
+  std::vector<int> homeless;
+  for (int r = 0; r < regionCount; ++r)
+  {
+    if (findRoot(parent, r) == r && !home[r])
+    {
+      homeless.push_back(r);
+    }
+  }
+  std::stable_sort(homeless.begin(), homeless.end(), [&area](int x, int y) { return area[x] < area[y]; });
+  for (int r : homeless)
+  {
+    std::map<int, double> neighbours;
+    const int root = findRoot(parent, r);
+    for (const auto& entry : boundaries)
+    {
+      const int a = findRoot(parent, entry.first.first);
+      const int b = findRoot(parent, entry.first.second);
+      if (a != b && (a == root || b == root))
+      {
+        neighbours[a == root ? b : a] += entry.second.first;
+      }
+    }
+    int best = -1;
+    for (const auto& neighbour : neighbours)
+    {
+      best = best < 0 || neighbour.second > neighbours[best] ? neighbour.first : best;
+    }
+    if (best >= 0)
+    {
+      parent[root] = best;
+    }
+  }
+
+  // Merged regions, numbered in order of their first face.
+  std::vector<int> number(static_cast<std::size_t>(regionCount), -1);
+  std::vector<int> labels(static_cast<std::size_t>(faces));
+  int next = 0;
+  for (int f = 0; f < faces; ++f)
+  {
+    const int root = findRoot(parent, regions[f]);
+    if (number[root] < 0)
+    {
+      number[root] = next++;
+    }
+    labels[f] = number[root];
   }
   return labels;
 }

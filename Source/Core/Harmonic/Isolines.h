@@ -29,7 +29,7 @@ struct Isoline
 /// edge's length from a vertex is placed on the vertex, so near-ties give no vanishing segments.
 std::vector<Isoline> extractIsolines(const TriangleMesh& mesh, const std::vector<double>& field, double value);
 
-/// ROI Scissor's score of a set of polylines (roi-scissor.txt 4.2):
+/// ROI Scissor's score of a set of polylines (ROI Scissor, section 4.2):
 /// S = sum_T |I cap T| / |I| * |grad f_T|, the length-weighted mean gradient magnitude.
 double isolineScore(const std::vector<Isoline>& isolines, const std::vector<double>& gradientMagnitudes);
 
@@ -65,6 +65,36 @@ struct FieldCut
 /// components. Faces are grouped into connected components that are not separated, numbered in
 /// order of their first face. Elsewhere both sides of an isoline stay connected.
 std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>& cuts);
+
+/// A cut made from a stroke, with what the stroke says about it.
+struct CutWithStroke
+{
+  FieldCut cut;
+  std::vector<Vector3> stroke; ///< the stroke's points, on or near the surface
+  /// The faces of the stroke's constraint points in pairs, one on each side of the stroke
+  /// (StrokeConstraintSet's order: the + point, then the - point).
+  std::vector<int> sideFaces;
+};
+
+/// The segments several strokes intend, each stroke with its own cut (SeamCut's cuts from
+/// several strokes). Cutting along every cut's whole isoline over-segments: an isoline goes on
+/// past the ends of an open stroke (at a T-junction, where the stroke's boundary meets another)
+/// and splits segments no stroke separates. So the regions of labelCuts are merged again, under
+/// one rule: the two sides of every stroke stay apart (each pair of constraint points is a
+/// must-separate pair). Neighbouring regions are merged in order of how weakly a stroke supports
+/// the boundary between them (the fraction of its length where the separating cut runs within
+/// `supportDistance` of its own stroke; ties by shorter boundary first), skipping merges that
+/// would join the two sides of a stroke. Extensions of an isoline beyond its stroke are
+/// unsupported, so the pieces they cut off join the segment they came from before anything
+/// else can happen to them. Only strokes their cut follows count (most of the stroke within
+/// supportDistance of the isoline), and of those only the pairs of constraint points their cut
+/// puts on two sides (round a region smaller than the constraints' offset, both points of a
+/// pair fall outside it). Last, each side of each stroke has a home, the segment holding most of its
+/// constraint points; a segment that is no side's home (a small piece between cuts crossing
+/// near a junction, holding a few points of two strokes) joins the neighbour it shares the
+/// longest boundary with. Segments are numbered in order of their first face.
+std::vector<int> labelStrokeCuts(
+  const TriangleMesh& mesh, const std::vector<CutWithStroke>& cuts, double supportDistance);
 
 /// labelCuts for a single cut.
 std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,

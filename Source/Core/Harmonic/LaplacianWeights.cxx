@@ -1,8 +1,9 @@
-// Laplacian edge weights (uniform, cotangent, Au et al. 2011, ROI Scissor) and assembly.
+// Laplacian edge weights (uniform, cotangent, intrinsic Delaunay, Au et al. 2011, ROI Scissor) and assembly.
 #include "Harmonic/LaplacianWeights.h"
 
 #include "CacheKey.h"
 #include "Error.h"
+#include "Geodesic/IntrinsicTriangulation.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>
@@ -52,6 +53,35 @@ std::vector<double> cotangentWeights(const TriangleMesh& mesh)
       const Vector3& apex = mesh.point(t[(k + 2) % 3]);
       weights[e] += 0.5 * cotangent(mesh.point(t[k]) - apex, mesh.point(t[(k + 1) % 3]) - apex);
     }
+  }
+  return weights;
+}
+
+// The intrinsic Delaunay weights on the mesh's own edges; throws if a flip made a new vertex pair.
+std::vector<double> intrinsicDelaunayWeights(const TriangleMesh& mesh)
+{
+  IntrinsicTriangulation triangulation(mesh);
+  triangulation.flipToDelaunay();
+  std::vector<double> weights(mesh.edgeCount(), 0.0);
+  int missing = 0;
+  for (const IntrinsicTriangulation::PairWeight& pair : triangulation.cotangentWeights())
+  {
+    const IndexRange neighbors = mesh.vertexNeighbors(pair.i);
+    const auto found = std::find(neighbors.begin(), neighbors.end(), pair.j);
+    if (found != neighbors.end())
+    {
+      weights[mesh.vertexEdges(pair.i)[static_cast<std::size_t>(found - neighbors.begin())]] = pair.weight;
+    }
+    else if (pair.weight > 0.0)
+    {
+      ++missing;
+    }
+  }
+  if (missing > 0)
+  {
+    throw Error("the intrinsic Delaunay triangulation of this mesh joins " + std::to_string(missing) +
+      " vertex pairs that no mesh edge joins, so its Laplacian has no weights on the mesh's edges; "
+      "solve on the mesh of intrinsicDelaunayLaplacian() instead");
   }
   return weights;
 }
@@ -144,6 +174,9 @@ std::vector<double> computeLaplacianWeights(
     case LaplacianWeighting::Cotangent:
       weights = cotangentWeights(mesh);
       break;
+    case LaplacianWeighting::IntrinsicDelaunay:
+      weights = intrinsicDelaunayWeights(mesh);
+      break;
     case LaplacianWeighting::ConcavityAware:
     case LaplacianWeighting::SmoothConcavity:
     {
@@ -210,6 +243,7 @@ const std::pair<LaplacianWeighting, const char*> WeightingNames[] = {
   { LaplacianWeighting::Cotangent, "cotangent" },
   { LaplacianWeighting::ConcavityAware, "concavity" },
   { LaplacianWeighting::SmoothConcavity, "smooth-concavity" },
+  { LaplacianWeighting::IntrinsicDelaunay, "intrinsic-delaunay" },
 };
 } // namespace
 
@@ -234,7 +268,7 @@ LaplacianWeighting parseLaplacianWeighting(const std::string& name)
       return entry.first;
     }
   }
-  throw Error("the weighting must be uniform, cotangent, concavity or smooth-concavity, got '" + name + "'");
+  throw Error("weighting must be uniform, cotangent, concavity, smooth-concavity or intrinsic-delaunay, got '" + name + "'");
 }
 
 std::string cacheKey(const LaplacianWeightOptions& options)

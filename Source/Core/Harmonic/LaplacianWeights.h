@@ -1,4 +1,4 @@
-// Edge weights of the discrete Laplacian: uniform, cotangent, and the two concavity-aware schemes.
+// Edge weights of the discrete Laplacian: uniform, cotangent, intrinsic Delaunay, and the two concavity-aware schemes.
 #pragma once
 
 #include "Geometry/SurfaceDescriptors.h"
@@ -19,12 +19,19 @@ enum class LaplacianWeighting
   Uniform,
   /// w_ij = (cot alpha + cot beta) / 2 over the angles opposite the edge.
   Cotangent,
-  /// Au et al. 2011 (roi-scissor.txt Eq. 2-3): w_ij = |e_ij| / G_ij * beta, G_ij = |K_i| + |K_j|
+  /// Au et al. 2011 (ROI Scissor, Eq. 2-3): w_ij = |e_ij| / G_ij * beta, G_ij = |K_i| + |K_j|
   /// and beta = 0.01 if i or j is concave, else 1.
   ConcavityAware,
-  /// ROI Scissor (roi-scissor.txt 3.1): as ConcavityAware with the smooth
+  /// ROI Scissor (section 3.1): as ConcavityAware with the smooth
   /// beta(t) = 1 / (1 + 100 t^2) for t = H_ij / (2 H_max) > 0, else 1.
-  SmoothConcavity
+  SmoothConcavity,
+  /// The cotangent weights of the intrinsic Delaunay triangulation (Bobenko and Springborn 2007):
+  /// nonnegative without clamping, and linearly precise on planar meshes. Its edges are the
+  /// mesh's edges where no flip was needed and new vertex pairs where one was, so
+  /// computeLaplacianWeights can give it only for meshes whose intrinsic Delaunay triangulation
+  /// keeps their edges; intrinsicDelaunayLaplacian() (Geodesic/IntrinsicTriangulation.h) gives
+  /// it for any mesh, with the mesh of its edges.
+  IntrinsicDelaunay
 };
 
 /// Parameters of the weights. The defaults are the papers' values.
@@ -46,7 +53,7 @@ struct LaplacianWeightOptions
 bool needsDescriptors(LaplacianWeighting weighting);
 
 /// The weighting's name as the command line and the benchmark runner spell it: "uniform",
-/// "cotangent", "concavity", "smooth-concavity".
+/// "cotangent", "concavity", "smooth-concavity", "intrinsic-delaunay".
 std::string laplacianWeightingName(LaplacianWeighting weighting);
 /// The weighting a name spells; throws kerf::Error listing the names for any other text.
 LaplacianWeighting parseLaplacianWeighting(const std::string& name);
@@ -69,6 +76,8 @@ constexpr double WeightFloor = 1e-6;
 /// mean positive weight on its edges. The concavity-aware
 /// schemes need the descriptors (Gaussian and mean curvature, concavity); H_ij of
 /// SmoothConcavity is measured positive on concave edges, i.e. minus Kerf's mean curvature.
+/// IntrinsicDelaunay throws kerf::Error when the intrinsic Delaunay triangulation joins vertices
+/// that no mesh edge joins (solve on intrinsicDelaunayLaplacian(mesh).mesh instead).
 std::vector<double> computeLaplacianWeights(const TriangleMesh& mesh,
   const LaplacianWeightOptions& options, const SurfaceDescriptors* descriptors = nullptr);
 

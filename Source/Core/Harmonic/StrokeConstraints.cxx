@@ -2,6 +2,7 @@
 #include "Harmonic/StrokeConstraints.h"
 
 #include "Error.h"
+#include "Mesh/MeshValidation.h"
 
 #include <cmath>
 #include <string>
@@ -40,9 +41,9 @@ StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPoi
     const std::vector<Vector3>& stroke = strokes[s];
     for (const Vector3& p : stroke)
     {
-      if (!p.allFinite())
+      if (!p.allFinite() || p.cwiseAbs().maxCoeff() > CoordinateLimit)
       {
-        throw Error("stroke " + std::to_string(s) + " has a point with NaN or infinite coordinates");
+        throw Error("stroke " + std::to_string(s) + " has a point with NaN, infinite or huge coordinates (beyond +-1e50)");
       }
     }
     bool distinct = false;

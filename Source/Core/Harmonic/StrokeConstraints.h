@@ -1,4 +1,4 @@
-// SeamCut's strokes to constraints (seamcut.txt 2.1.1): paired +/- points on both sides of a stroke.
+// SeamCut's strokes to constraints (SeamCut, section 2.1.1): paired +/- points on both sides of a stroke.
 #pragma once
 
 #include "Geometry/ClosestPoint.h"

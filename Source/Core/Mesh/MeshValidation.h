@@ -55,7 +55,7 @@ std::string describeProblems(const MeshReport& report, const MeshRequirements& r
 /// Coordinates are refused beyond +-CoordinateLimit, and meshes whose bounding-box diagonal is
 /// below 1 / CoordinateLimit: squared lengths, areas and their products stay far from overflow
 /// and underflow (rescale such a mesh first).
-constexpr double CoordinateLimit = 1e50;
+constexpr double CoordinateLimit = 1e50; // messages say "1e50"
 
 /// Relative threshold below which a triangle counts as zero-area: twice its area is at most this
 /// times the square of its longest edge.

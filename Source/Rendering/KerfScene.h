@@ -1,6 +1,8 @@
 // Renders a Kerf result to an image: a surface coloured by an array, optional direction strokes.
 #pragma once
 
+#include "KerfRenderingModule.h"
+
 #include <vtkSmartPointer.h>
 
 #include <array>
@@ -68,21 +70,21 @@ struct SceneOptions
 
 /// Builds and renders the scene. Returns nullptr and sets `error` if the colour or direction
 /// array is missing.
-vtkSmartPointer<vtkRenderWindow> RenderScene(
+KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderScene(
   vtkPolyData* surface, const SceneOptions& options, std::string& error);
 
 /// Two views of one surface side by side with a shared camera, for example a method's
 /// segmentation beside a human's. The window takes the left options' size; each view gets half.
-vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
+KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
   const SceneOptions& right, std::string& error);
 
 /// A harmonic cut in two views: on the left the field "HarmonicField" with isolines, the stroke
 /// (green) and its constraint points (yellow); on the right the cell array "Segment" and the cut
 /// curve (red). 1200 x 600 pixels.
-vtkSmartPointer<vtkRenderWindow> RenderCutScene(vtkPolyData* labelledSurface, vtkPolyData* stroke,
+KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderCutScene(vtkPolyData* labelledSurface, vtkPolyData* stroke,
   vtkPolyData* constraints, vtkPolyData* cut, const std::string& caption, std::string& error);
 
 /// Writes the window's image as PNG; false and `error` on failure.
-bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error);
+KERFRENDERING_EXPORT bool WritePNG(vtkRenderWindow* window, const std::string& fileName, std::string& error);
 
 } // namespace kerf

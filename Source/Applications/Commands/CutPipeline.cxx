@@ -1,0 +1,102 @@
+// The stroke cut pipeline shared by `kerf cut` and `kerf showcase`.
+#include "CutPipeline.h"
+
+#include "Harmonic/LaplacianWeights.h"
+#include "Error.h"
+#include "KerfCommands.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindow.h>
+
+#include <iomanip>
+#include <sstream>
+
+namespace kerf
+{
+
+void CutPipeline::Run(vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& args)
+{
+  auto timed = [this](vtkAlgorithm* algorithm, const std::string& stage) {
+    const auto start = std::chrono::steady_clock::now();
+    RunAlgorithm(algorithm, stage);
+    this->milliseconds[stage] = MillisecondsSince(start);
+  };
+  int weighting = 0;
+  try
+  {
+    weighting = static_cast<int>(parseLaplacianWeighting(args.get("weighting", "cotangent")));
+  }
+  catch (const Error& e)
+  {
+    throw CommandError{ std::string("--") + e.what() };
+  }
+  this->descriptors->SetInputData(mesh);
+  timed(this->descriptors, "surface descriptors");
+  this->constraints->SetInputConnection(this->descriptors->GetOutputPort());
+  this->constraints->SetInputData(1, stroke);
+  this->constraints->SetSamplesPerSegment(args.integer("samples", 4, 1, 1000));
+  this->constraints->SetOffset(args.number("offset", 0.01, 1e-6, 0.5));
+  this->constraints->SetIsoValue(args.number("iso-value", 0.0, -1e15, 1e15));
+  timed(this->constraints, "stroke constraints");
+  this->field->SetInputConnection(this->descriptors->GetOutputPort());
+  this->field->SetInputConnection(1, this->constraints->GetOutputPort());
+  this->field->SetWeighting(weighting);
+  this->field->SetSoftConstraintWeight(args.number("soft-weight", 1.0, 1e-6, 1e6));
+  timed(this->field, "harmonic field");
+  this->cut->SetInputConnection(this->field->GetOutputPort());
+  this->cut->SetInputData(1, stroke);
+  this->cut->SetModeToNearStroke();
+  this->cut->SetIsoValue(args.number("iso-value", 0.0, -1e15, 1e15));
+  timed(this->cut, "cut");
+}
+
+void CutPipeline::Render(vtkPolyData* stroke, const std::string& caption, const std::string& file)
+{
+  RequireDisplay();
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> window = RenderCutScene(
+    this->cut->GetLabelledSurface(), stroke, this->constraints->GetOutput(), this->cut->GetOutput(), caption, error);
+  if (!window || !WritePNG(window, file, error))
+  {
+    throw CommandError{ "cannot draw the cut: " + error };
+  }
+}
+
+std::string SegmentSizes(vtkPolyData* surface)
+{
+  vtkDataArray* labels = surface->GetCellData()->GetArray("Segment");
+  std::map<int, int> sizes;
+  for (vtkIdType c = 0; c < labels->GetNumberOfTuples(); ++c)
+  {
+    ++sizes[static_cast<int>(labels->GetComponent(c, 0))];
+  }
+  std::ostringstream out;
+  out << sizes.size() << " segments (";
+  bool first = true;
+  for (const auto& entry : sizes)
+  {
+    out << (first ? "" : ", ") << entry.second;
+    first = false;
+  }
+  out << " triangles)";
+  return out.str();
+}
+
+std::string CutSummary(vtkPolyData* curve)
+{
+  std::ostringstream out;
+  double length = 0.0;
+  int closed = 0;
+  for (vtkIdType c = 0; c < curve->GetNumberOfCells(); ++c)
+  {
+    length += curve->GetCellData()->GetArray("Length")->GetComponent(c, 0);
+    closed += static_cast<int>(curve->GetCellData()->GetArray("Closed")->GetComponent(c, 0));
+  }
+  out << curve->GetNumberOfCells() << (curve->GetNumberOfCells() == 1 ? " curve" : " curves") << " (" << closed
+      << " closed), length " << std::setprecision(4) << length;
+  return out.str();
+}
+
+} // namespace kerf

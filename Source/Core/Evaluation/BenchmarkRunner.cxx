@@ -1,0 +1,674 @@
+// The benchmark runner: loading models, the methods, scoring, worker processes and the CSV files.
+#include "Evaluation/BenchmarkRunner.h"
+
+#include "Error.h"
+#include "Evaluation/SegmentationMetrics.h"
+#include "Evaluation/SimulatedStrokes.h"
+#include "Harmonic/HarmonicCutSession.h"
+#include "IO/MeshFormats.h"
+#include "Mesh/MeshValidation.h"
+#include "Mesh/SurfaceConversion.h"
+
+#include <poll.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace kerf
+{
+
+BenchmarkCase loadBenchmarkCase(const BenchmarkModel& model)
+{
+  BenchmarkCase loaded;
+  loaded.model = model;
+  ConvertedPolygons converted = convertPolygons(readOFF(model.meshFile));
+  if (!converted.allTriangles)
+  {
+    throw Error("the benchmark's meshes are triangle meshes, but " + model.meshFile + " has other polygons");
+  }
+  // The metrics need no manifold: benchmark meshes may have any defect but NaN coordinates.
+  MeshRequirements requirements;
+  requirements.manifold = false;
+  requirements.consistentOrientation = false;
+  const std::string problems = describeProblems(inspectMesh(converted.mesh), requirements);
+  if (!problems.empty())
+  {
+    throw Error(model.meshFile + " is not accepted: " + problems);
+  }
+  loaded.surface = std::make_shared<const Surface>(std::move(converted.mesh));
+  for (const std::string& file : model.humanSegmentations)
+  {
+    loaded.humans.push_back(readSegmentation(file));
+  }
+  if (loaded.humans.size() < 2)
+  {
+    throw Error("it has " + std::to_string(loaded.humans.size()) +
+      " human segmentations; the protocol needs at least 2");
+  }
+  return loaded;
+}
+
+MethodParameters::MethodParameters(const std::string& text, const std::vector<std::string>& known)
+{
+  std::size_t start = 0;
+  while (start < text.size())
+  {
+    const std::size_t end = std::min(text.find(';', start), text.size());
+    const std::string pair = text.substr(start, end - start);
+    start = end + 1;
+    if (pair.empty())
+    {
+      continue;
+    }
+    const std::size_t equals = pair.find('=');
+    const std::string name = pair.substr(0, equals);
+    if (equals == std::string::npos || std::find(known.begin(), known.end(), name) == known.end())
+    {
+      throw Error("unknown or malformed method parameter '" + pair + "'");
+    }
+    this->Values[name] = pair.substr(equals + 1);
+  }
+}
+
+double MethodParameters::positive(const std::string& name, double fallback) const
+{
+  const auto found = this->Values.find(name);
+  if (found == this->Values.end())
+  {
+    return fallback;
+  }
+  try
+  {
+    std::size_t used = 0;
+    const double value = std::stod(found->second, &used);
+    if (used == found->second.size() && std::isfinite(value) && value > 0.0)
+    {
+      return value;
+    }
+  }
+  catch (const std::exception&)
+  {
+  }
+  throw Error("method parameter " + name + " must be a positive number, got '" + found->second + "'");
+}
+
+std::string MethodParameters::text(const std::string& name, const std::string& fallback) const
+{
+  const auto found = this->Values.find(name);
+  return found == this->Values.end() ? fallback : found->second;
+}
+
+namespace
+{
+// The benchmark's metrics (Chen et al. 2009) in results.csv's order.
+const char* const MetricNames[] = { "CutDiscrepancy", "HammingDistance", "MissingRate", "FalseAlarmRate",
+  "RandIndexError", "GlobalConsistencyError", "LocalConsistencyError" };
+
+// Sums the metrics of comparisons, to be averaged.
+struct MetricSums
+{
+  std::map<std::string, double> sums;
+  int comparisons = 0;
+
+  void add(const SegmentationScores& s, const SegmentationScores* reverse)
+  {
+    const double values[] = { s.cutDiscrepancy, s.hammingDistance,
+      reverse ? 0.5 * (s.missingRate + reverse->missingRate) : s.missingRate,
+      reverse ? 0.5 * (s.falseAlarmRate + reverse->falseAlarmRate) : s.falseAlarmRate, s.randIndexError,
+      s.globalConsistencyError, s.localConsistencyError };
+    for (std::size_t m = 0; m < std::size(MetricNames); ++m)
+    {
+      this->sums[MetricNames[m]] += values[m];
+    }
+    ++this->comparisons;
+  }
+
+  ModelScores scores(double segments, double seconds) const
+  {
+    ModelScores result;
+    for (const char* name : MetricNames)
+    {
+      const auto found = this->sums.find(name);
+      result.values[name] = this->comparisons > 0 && found != this->sums.end() ? found->second / this->comparisons : 0.0;
+    }
+    result.values["Comparisons"] = this->comparisons;
+    result.values["Segments"] = segments;
+    result.values["Seconds"] = seconds;
+    return result;
+  }
+};
+
+// The benchmark's human baseline: every unordered pair of human segmentations.
+ModelScores scoreHumans(const BenchmarkCase& c)
+{
+  const SegmentationEvaluator evaluator(c.surface->mesh());
+  std::vector<PreparedSegmentation> humans;
+  double segments = 0.0;
+  for (const std::vector<int>& labels : c.humans)
+  {
+    humans.push_back(evaluator.prepare(labels));
+    segments += humans.back().segmentCount;
+  }
+  MetricSums sums;
+  for (std::size_t a = 0; a < humans.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < humans.size(); ++b)
+    {
+      const SegmentationScores forward = evaluator.compare(humans[a], humans[b]);
+      const SegmentationScores backward = evaluator.compare(humans[b], humans[a]);
+      sums.add(forward, &backward);
+    }
+  }
+  ModelScores result = sums.scores(segments / static_cast<double>(humans.size()), 0.0);
+  for (const char* column : { "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" })
+  {
+    result.values[column] = std::numeric_limits<double>::quiet_NaN();
+  }
+  result.shownMethod = c.humans[0];
+  result.shownHuman = c.humans[1];
+  return result;
+}
+
+// Automatic methods: the mesh and the number of segments only, scored against every human.
+ModelScores scoreAutomatic(const BenchmarkCase& c, const SegmentationMethod& method, const MethodParameters& parameters)
+{
+  const SegmentationEvaluator evaluator(c.surface->mesh());
+  const auto start = std::chrono::steady_clock::now();
+  const MethodOutput output = method.segment(c, nullptr, parameters);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const PreparedSegmentation prepared = evaluator.prepare(output.labels);
+  MetricSums sums;
+  for (const std::vector<int>& human : c.humans)
+  {
+    sums.add(evaluator.compare(prepared, evaluator.prepare(human)), nullptr);
+  }
+  ModelScores result = sums.scores(prepared.segmentCount, seconds);
+  for (const char* column : { "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" })
+  {
+    result.values[column] = std::numeric_limits<double>::quiet_NaN();
+  }
+  result.shownMethod = output.labels;
+  result.shownHuman = c.humans[0];
+  return result;
+}
+
+// Interactive methods: every human in turn gives the input, the others are the references.
+ModelScores scoreInteractive(const BenchmarkCase& c, const SegmentationMethod& method, const MethodParameters& parameters)
+{
+  const SegmentationEvaluator evaluator(c.surface->mesh());
+  std::vector<PreparedSegmentation> humans;
+  for (const std::vector<int>& labels : c.humans)
+  {
+    humans.push_back(evaluator.prepare(labels));
+  }
+  MetricSums sums;
+  double segments = 0.0, seconds = 0.0, inputs = 0.0, fidelity = 0.0, fidelityHamming = 0.0, matched = 0.0;
+  ModelScores result;
+  for (std::size_t input = 0; input < c.humans.size(); ++input)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    const MethodOutput output = method.segment(c, &c.humans[input], parameters);
+    seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const PreparedSegmentation prepared = evaluator.prepare(output.labels);
+    for (std::size_t h = 0; h < humans.size(); ++h)
+    {
+      if (h != input)
+      {
+        sums.add(evaluator.compare(prepared, humans[h]), nullptr);
+      }
+    }
+    const SegmentationScores self = evaluator.compare(prepared, humans[input]);
+    fidelity += self.randIndexError;
+    fidelityHamming += self.hammingDistance;
+    segments += prepared.segmentCount;
+    inputs += output.inputs;
+    matched += prepared.segmentCount == humans[input].segmentCount ? 1.0 : 0.0;
+    if (input == 0)
+    {
+      result.shownMethod = output.labels;
+      result.shownHuman = c.humans[0];
+    }
+  }
+  const double runs = static_cast<double>(c.humans.size());
+  ModelScores scores = sums.scores(segments / runs, seconds / runs);
+  scores.values["Fidelity"] = fidelity / runs;
+  scores.values["FidelityHamming"] = fidelityHamming / runs;
+  scores.values["Inputs"] = inputs / runs;
+  scores.values["InputSegmentsMatched"] = matched / runs;
+  scores.shownMethod = std::move(result.shownMethod);
+  scores.shownHuman = std::move(result.shownHuman);
+  return scores;
+}
+
+// SeamCut's harmonic cuts with simulated strokes: one stroke along each boundary between two
+// segments of the input human, one field and cut per stroke, and the segments the strokes
+// intend (labelStrokeCuts).
+MethodOutput segmentWithHarmonicCuts(
+  const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters)
+{
+  const TriangleMesh& mesh = c.surface->mesh();
+  HarmonicFieldOptions fieldOptions;
+  fieldOptions.weights.weighting = parseLaplacianWeighting(parameters.text("weighting", "cotangent"));
+  fieldOptions.softWeight = parameters.positive("weight", 1.0);
+  const double diagonal = mesh.boundingBoxDiagonal();
+  StrokeOptions strokeOptions;
+  strokeOptions.samplesPerSegment = static_cast<int>(parameters.positive("samples", 4));
+  strokeOptions.offset = parameters.positive("offset", 0.01) * diagonal;
+  strokeOptions.maximumDistance = 0.05 * diagonal;
+  const double spacing = parameters.positive("spacing", 0.03) * diagonal;
+  const double support = parameters.positive("support", 3.0) * strokeOptions.offset;
+
+  HarmonicCutSession session(c.surface);
+  const std::vector<BoundaryStroke> strokes = boundaryStrokes(mesh, *input, spacing);
+  std::vector<HarmonicCutSession::StrokeCut> strokeCuts;
+  strokeCuts.reserve(strokes.size());
+  std::vector<CutWithStroke> cuts;
+  for (const BoundaryStroke& stroke : strokes)
+  {
+    strokeCuts.push_back(session.cutFromStroke({ stroke.points }, strokeOptions, fieldOptions));
+    const HarmonicCutSession::StrokeCut& cut = strokeCuts.back();
+    if (cut.chosen >= 0)
+    {
+      CutWithStroke withStroke;
+      withStroke.cut = { &cut.field, strokeOptions.isoValue, { &cut.isolines[static_cast<std::size_t>(cut.chosen)] } };
+      withStroke.stroke = stroke.points;
+      withStroke.sideFaces = cut.sideFaces;
+      cuts.push_back(std::move(withStroke));
+    }
+  }
+  MethodOutput output;
+  output.labels = labelStrokeCuts(mesh, cuts, support);
+  output.inputs = static_cast<int>(strokes.size());
+  return output;
+}
+
+std::string quoted(const std::string& text)
+{
+  std::string out = "\"";
+  for (char c : text)
+  {
+    out += c == '"' ? std::string("\"\"") : std::string(1, c);
+  }
+  return out + "\"";
+}
+
+// Splits one CSV line (fields may be quoted, with "" for a quote).
+std::vector<std::string> splitCsv(const std::string& line)
+{
+  std::vector<std::string> fields;
+  std::string field;
+  bool inQuotes = false;
+  for (std::size_t i = 0; i < line.size(); ++i)
+  {
+    const char c = line[i];
+    if (c == '"')
+    {
+      if (inQuotes && i + 1 < line.size() && line[i + 1] == '"')
+      {
+        field += '"';
+        ++i;
+      }
+      else
+      {
+        inQuotes = !inQuotes;
+      }
+    }
+    else if (c == ',' && !inQuotes)
+    {
+      fields.push_back(field);
+      field.clear();
+    }
+    else
+    {
+      field += c;
+    }
+  }
+  fields.push_back(field);
+  return fields;
+}
+} // namespace
+
+const std::vector<SegmentationMethod>& segmentationMethods()
+{
+  static const std::vector<SegmentationMethod> methods = {
+    { "human", "every pair of the model's human segmentations (the benchmark's human baseline)", {},
+      SegmentationMethod::Protocol::HumanBaseline, nullptr },
+    { "harmonic-cuts",
+      "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
+      { "weighting", "samples", "offset", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
+      segmentWithHarmonicCuts },
+  };
+  return methods;
+}
+
+const SegmentationMethod& findSegmentationMethod(const std::string& name)
+{
+  std::string names;
+  for (const SegmentationMethod& method : segmentationMethods())
+  {
+    if (method.name == name)
+    {
+      return method;
+    }
+    names += (names.empty() ? "" : ", ") + method.name;
+  }
+  throw Error("unknown method '" + name + "'; the methods are: " + names);
+}
+
+const std::vector<std::string>& benchmarkMetricColumns()
+{
+  static const std::vector<std::string> columns = { "Comparisons", "CutDiscrepancy", "HammingDistance",
+    "MissingRate", "FalseAlarmRate", "RandIndexError", "GlobalConsistencyError", "LocalConsistencyError",
+    "Segments", "Seconds", "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" };
+  return columns;
+}
+
+const std::vector<std::string>& benchmarkSummaryColumns()
+{
+  static const std::vector<std::string> columns = { "CutDiscrepancy", "HammingDistance", "RandIndexError",
+    "GlobalConsistencyError", "LocalConsistencyError", "Fidelity", "InputSegmentsMatched", "Seconds" };
+  return columns;
+}
+
+BenchmarkRow runBenchmarkModel(const BenchmarkCase& benchmarkCase, const SegmentationMethod& method,
+  const std::string& parameters, ModelScores* scores)
+{
+  const MethodParameters parsed(parameters, method.parameters);
+  ModelScores result;
+  switch (method.protocol)
+  {
+    case SegmentationMethod::Protocol::HumanBaseline:
+      result = scoreHumans(benchmarkCase);
+      break;
+    case SegmentationMethod::Protocol::Interactive:
+      result = scoreInteractive(benchmarkCase, method, parsed);
+      break;
+    case SegmentationMethod::Protocol::Automatic:
+      result = scoreAutomatic(benchmarkCase, method, parsed);
+      break;
+  }
+  BenchmarkRow row;
+  row.model = benchmarkCase.model.id;
+  row.category = benchmarkCase.model.category;
+  row.method = method.name;
+  row.parameters = parameters;
+  row.values = result.values;
+  if (scores)
+  {
+    *scores = std::move(result);
+  }
+  return row;
+}
+
+std::string resultsHeader()
+{
+  std::string header = "Model,Category,Method,Parameters";
+  for (const std::string& column : benchmarkMetricColumns())
+  {
+    header += "," + column;
+  }
+  return header;
+}
+
+std::string formatResultRow(const BenchmarkRow& row)
+{
+  std::ostringstream line;
+  line << std::setprecision(10) << row.model << "," << row.category << "," << row.method << ","
+       << quoted(row.parameters);
+  for (const std::string& column : benchmarkMetricColumns())
+  {
+    const auto found = row.values.find(column);
+    line << "," << (found == row.values.end() ? 0.0 : found->second);
+  }
+  return line.str();
+}
+
+BenchmarkRow parseResultRow(const std::string& line)
+{
+  const std::vector<std::string> fields = splitCsv(line);
+  const std::vector<std::string>& columns = benchmarkMetricColumns();
+  if (fields.size() != 4 + columns.size())
+  {
+    throw Error("a malformed result line: " + line);
+  }
+  BenchmarkRow row;
+  try
+  {
+    row.model = std::stoi(fields[0]);
+    row.category = fields[1];
+    row.method = fields[2];
+    row.parameters = fields[3];
+    for (std::size_t c = 0; c < columns.size(); ++c)
+    {
+      row.values[columns[c]] = std::stod(fields[4 + c]);
+    }
+  }
+  catch (const std::exception&)
+  {
+    throw Error("a malformed result line: " + line);
+  }
+  return row;
+}
+
+void writeResults(const std::vector<BenchmarkRow>& rows, const std::string& fileName)
+{
+  std::ofstream csv(fileName);
+  csv << resultsHeader() << "\n";
+  for (const BenchmarkRow& row : rows)
+  {
+    csv << formatResultRow(row) << "\n";
+  }
+  if (!csv)
+  {
+    throw Error("cannot write " + fileName);
+  }
+}
+
+std::string writeSummary(const std::vector<BenchmarkRow>& rows, const std::string& method, const std::string& fileName)
+{
+  std::vector<std::pair<std::string, std::vector<const BenchmarkRow*>>> groups;
+  for (const BenchmarkRow& row : rows)
+  {
+    auto group = std::find_if(groups.begin(), groups.end(), [&row](const auto& g) { return g.first == row.category; });
+    if (group == groups.end())
+    {
+      groups.emplace_back(row.category, std::vector<const BenchmarkRow*>());
+      group = groups.end() - 1;
+    }
+    group->second.push_back(&row);
+  }
+  std::sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<const BenchmarkRow*> all;
+  for (const BenchmarkRow& row : rows)
+  {
+    all.push_back(&row);
+  }
+  groups.emplace_back("all", all);
+
+  std::ofstream csv(fileName);
+  std::ostringstream table;
+  csv << "Category,Method,Models";
+  for (const std::string& column : benchmarkSummaryColumns())
+  {
+    csv << "," << column;
+  }
+  csv << "\n";
+  // Terminal headings of the summary columns: the fidelity is 1 - RI against the input human.
+  const std::map<std::string, std::string> headings = { { "CutDiscrepancy", "CD" }, { "HammingDistance", "HD" },
+    { "RandIndexError", "1-RI" }, { "GlobalConsistencyError", "GCE" }, { "LocalConsistencyError", "LCE" },
+    { "Fidelity", "fidelity" }, { "InputSegmentsMatched", "k-match" }, { "Seconds", "seconds" } };
+  table << std::left << std::setw(11) << "category" << std::right << std::setw(7) << "models";
+  for (const std::string& column : benchmarkSummaryColumns())
+  {
+    table << std::setw(column == "Seconds" ? 10 : 9) << headings.at(column);
+  }
+  table << "\n";
+  for (const auto& group : groups)
+  {
+    csv << group.first << "," << method << "," << group.second.size();
+    table << std::left << std::setw(11) << group.first << std::right << std::setw(7) << group.second.size();
+    for (const std::string& column : benchmarkSummaryColumns())
+    {
+      double sum = 0.0;
+      for (const BenchmarkRow* row : group.second)
+      {
+        sum += row->values.at(column);
+      }
+      const double mean = group.second.empty() ? 0.0 : sum / static_cast<double>(group.second.size());
+      csv << "," << std::setprecision(10) << mean;
+      table << std::fixed << std::setprecision(3) << std::setw(column == "Seconds" ? 10 : 9) << mean;
+      table.unsetf(std::ios::fixed);
+    }
+    csv << "\n";
+    table << "\n";
+  }
+  if (!csv)
+  {
+    throw Error("cannot write " + fileName);
+  }
+  return table.str();
+}
+
+std::string progressLine(std::size_t done, std::size_t total, const BenchmarkRow& row)
+{
+  std::ostringstream line;
+  line << "[" << std::setw(3) << done << "/" << total << "] model " << std::setw(4) << row.model << " "
+       << std::left << std::setw(10) << row.category << std::right << " 1-RI " << std::fixed
+       << std::setprecision(3) << row.values.at("RandIndexError") << "  CD " << row.values.at("CutDiscrepancy")
+       << "  HD " << row.values.at("HammingDistance") << "  (" << std::setprecision(2)
+       << row.values.at("Seconds") << " s)";
+  return line.str();
+}
+
+std::vector<BenchmarkRow> runInWorkers(const std::vector<int>& models, int jobs,
+  const std::function<BenchmarkRow(int)>& work, const std::function<void(std::size_t, const BenchmarkRow&)>& finished)
+{
+  std::vector<BenchmarkRow> rows;
+  if (jobs <= 1)
+  {
+    for (int model : models)
+    {
+      rows.push_back(work(model));
+      finished(rows.size(), rows.back());
+    }
+    return rows;
+  }
+  struct Worker
+  {
+    pid_t pid;
+    int fd;
+    std::string buffer;
+  };
+  std::vector<Worker> workers;
+  std::fflush(nullptr);
+  for (int w = 0; w < jobs; ++w)
+  {
+    int fds[2];
+    if (pipe(fds) != 0)
+    {
+      throw Error("cannot create a pipe for the workers");
+    }
+    const pid_t pid = fork();
+    if (pid < 0)
+    {
+      throw Error("cannot start a worker process");
+    }
+    if (pid == 0)
+    {
+      close(fds[0]);
+      int status = 0;
+      for (std::size_t i = static_cast<std::size_t>(w); i < models.size(); i += static_cast<std::size_t>(jobs))
+      {
+        std::string line;
+        try
+        {
+          line = formatResultRow(work(models[i])) + "\n";
+        }
+        catch (const std::exception& e)
+        {
+          line = "!" + std::string(e.what()) + "\n";
+          status = 1;
+        }
+        if (write(fds[1], line.data(), line.size()) != static_cast<ssize_t>(line.size()))
+        {
+          status = 1;
+        }
+      }
+      close(fds[1]);
+      std::fflush(nullptr);
+      _exit(status);
+    }
+    close(fds[1]);
+    workers.push_back({ pid, fds[0], "" });
+  }
+  std::vector<std::string> failures;
+  std::size_t open = workers.size();
+  while (open > 0)
+  {
+    std::vector<pollfd> fds;
+    for (const Worker& w : workers)
+    {
+      fds.push_back({ w.fd, POLLIN, 0 });
+    }
+    if (poll(fds.data(), fds.size(), -1) < 0)
+    {
+      continue;
+    }
+    for (std::size_t i = 0; i < workers.size(); ++i)
+    {
+      if (workers[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP)))
+      {
+        continue;
+      }
+      char chunk[4096];
+      const ssize_t n = read(workers[i].fd, chunk, sizeof(chunk));
+      if (n <= 0)
+      {
+        close(workers[i].fd);
+        workers[i].fd = -1;
+        --open;
+        continue;
+      }
+      workers[i].buffer.append(chunk, static_cast<std::size_t>(n));
+      std::size_t end;
+      while ((end = workers[i].buffer.find('\n')) != std::string::npos)
+      {
+        const std::string line = workers[i].buffer.substr(0, end);
+        workers[i].buffer.erase(0, end + 1);
+        if (!line.empty() && line[0] == '!')
+        {
+          failures.push_back(line.substr(1));
+          continue;
+        }
+        rows.push_back(parseResultRow(line));
+        finished(rows.size(), rows.back());
+      }
+    }
+  }
+  for (const Worker& w : workers)
+  {
+    int status = 0;
+    waitpid(w.pid, &status, 0);
+    if (failures.empty() && !(WIFEXITED(status) && WEXITSTATUS(status) == 0))
+    {
+      failures.push_back("a worker process ended abnormally");
+    }
+  }
+  if (!failures.empty())
+  {
+    throw Error(failures.size() == 1 ? failures[0]
+                                     : std::to_string(failures.size()) + " models failed; the first: " + failures[0]);
+  }
+  std::sort(rows.begin(), rows.end(), [](const BenchmarkRow& a, const BenchmarkRow& b) { return a.model < b.model; });
+  return rows;
+}
+
+} // namespace kerf

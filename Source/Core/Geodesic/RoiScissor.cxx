@@ -1,0 +1,406 @@
+// ROI Scissor's candidate discs, boundary constraints, field on the region, feature points and geodesic boundary.
+#include "Geodesic/RoiScissor.h"
+
+#include "Error.h"
+#include "Geometry/ClosestPoint.h"
+#include "Geometry/SurfaceDescriptors.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/HarmonicFieldSolver.h"
+#include "Session/Surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace kerf
+{
+
+SurfacePoint projectClick(const Surface& surface, const Vector3& position, double tolerance)
+{
+  if (!position.allFinite())
+  {
+    throw Error("a click has non-finite coordinates");
+  }
+  const ClosestPointLocator::Hit hit = surface.locator().closest(position);
+  if (hit.face < 0)
+  {
+    throw Error("a click needs a mesh with triangles");
+  }
+  if (hit.distance > tolerance * surface.mesh().boundingBoxDiagonal())
+  {
+    throw Error("a click lies off the surface (" + std::to_string(hit.distance) + " from its nearest point)");
+  }
+  SurfacePoint point;
+  point.face = hit.face;
+  point.barycentric = hit.barycentric;
+  return point;
+}
+
+namespace
+{
+// The segments [a, b] and [c, d] of one plane cross (proper crossing, or touching at b or d).
+bool crosses(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c, const Eigen::Vector2d& d)
+{
+  const auto orientation = [](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    const Eigen::Vector2d u = q - p, v = r - p;
+    return u.x() * v.y() - u.y() * v.x();
+  };
+  const double o1 = orientation(a, b, c), o2 = orientation(a, b, d);
+  const double o3 = orientation(c, d, a), o4 = orientation(c, d, b);
+  // Half-open rules, so that a curve through a shared point is counted once.
+  return ((o1 > 0.0) != (o2 > 0.0)) && ((o3 > 0.0) != (o4 > 0.0));
+}
+} // namespace
+
+std::vector<int> labelCurveSides(const TriangleMesh& mesh, const std::vector<SurfaceCurve>& curves, int seedFace)
+{
+  // Curve segments by face.
+  std::multimap<int, std::pair<Vector3, Vector3>> segments;
+  for (const SurfaceCurve& curve : curves)
+  {
+    const int count = segmentCount(curve);
+    for (int i = 0; i < count; ++i)
+    {
+      segments.emplace(curve.faces[i], std::make_pair(curve.points[i], curve.points[(i + 1) % curve.points.size()]));
+    }
+  }
+  // Crossings of [from, to] (inside `face`) with the curve segments in that face, in its plane.
+  const auto crossings = [&](int face, const Vector3& from, const Vector3& to) {
+    const auto range = segments.equal_range(face);
+    if (range.first == range.second)
+    {
+      return 0;
+    }
+    const Triangle& t = mesh.triangle(face);
+    const Vector3 origin = mesh.point(t[0]);
+    const Vector3 axisX = (mesh.point(t[1]) - origin).normalized();
+    const Vector3 normal = axisX.cross(mesh.point(t[2]) - origin).normalized();
+    const Vector3 axisY = normal.cross(axisX);
+    const auto flat = [&](const Vector3& p) { return Eigen::Vector2d((p - origin).dot(axisX), (p - origin).dot(axisY)); };
+    int count = 0;
+    for (auto it = range.first; it != range.second; ++it)
+    {
+      count += crosses(flat(from), flat(to), flat(it->second.first), flat(it->second.second)) ? 1 : 0;
+    }
+    return count;
+  };
+  const auto centroid = [&](int f) {
+    const Triangle& t = mesh.triangle(f);
+    return Vector3((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0);
+  };
+  std::vector<int> labels(mesh.faceCount(), -1);
+  std::deque<int> queue;
+  labels[seedFace] = 1;
+  queue.push_back(seedFace);
+  while (!queue.empty())
+  {
+    const int f = queue.front();
+    queue.pop_front();
+    const Triangle& t = mesh.triangle(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = mesh.faceNeighbor(f, k);
+      if (g < 0 || labels[g] >= 0)
+      {
+        continue;
+      }
+      const Vector3 midpoint = 0.5 * (mesh.point(t[k]) + mesh.point(t[(k + 1) % 3]));
+      const int parity = (crossings(f, centroid(f), midpoint) + crossings(g, midpoint, centroid(g))) % 2;
+      labels[g] = parity ? 1 - labels[f] : labels[f];
+      queue.push_back(g);
+    }
+  }
+  for (int& label : labels)
+  {
+    label = std::max(label, 0);
+  }
+  return labels;
+}
+
+namespace
+{
+// The submesh of some faces: its vertices renumbered in increasing global order.
+struct Submesh
+{
+  TriangleMesh mesh;
+  std::vector<int> globalVertex; // local -> global
+  std::vector<int> localVertex;  // global -> local or -1
+  std::vector<int> globalFace;   // local -> global
+};
+
+Submesh extractSubmesh(const TriangleMesh& mesh, const std::vector<int>& faces)
+{
+  Submesh sub;
+  sub.localVertex.assign(mesh.vertexCount(), -1);
+  std::vector<char> used(mesh.vertexCount(), 0);
+  for (int f : faces)
+  {
+    for (int v : mesh.triangle(f))
+    {
+      used[v] = 1;
+    }
+  }
+  std::vector<Vector3> points;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (used[v])
+    {
+      sub.localVertex[v] = static_cast<int>(sub.globalVertex.size());
+      sub.globalVertex.push_back(v);
+      points.push_back(mesh.point(v));
+    }
+  }
+  std::vector<Triangle> triangles;
+  for (int f : faces)
+  {
+    const Triangle& t = mesh.triangle(f);
+    triangles.push_back({ sub.localVertex[t[0]], sub.localVertex[t[1]], sub.localVertex[t[2]] });
+    sub.globalFace.push_back(f);
+  }
+  sub.mesh = TriangleMesh(std::move(points), std::move(triangles));
+  return sub;
+}
+
+// The weight of each submesh edge: the whole surface's weight of the same vertex pair.
+std::vector<double> submeshWeights(const TriangleMesh& mesh, const Submesh& sub, const std::vector<double>& weights)
+{
+  std::vector<double> local(sub.mesh.edgeCount(), 0.0);
+  for (int e = 0; e < sub.mesh.edgeCount(); ++e)
+  {
+    const int a = sub.globalVertex[sub.mesh.edgeVertices(e)[0]];
+    const int b = sub.globalVertex[sub.mesh.edgeVertices(e)[1]];
+    const IndexRange neighbors = mesh.vertexNeighbors(a);
+    for (std::size_t i = 0; i < neighbors.size(); ++i)
+    {
+      if (neighbors[i] == b)
+      {
+        local[e] = weights[mesh.vertexEdges(a)[i]];
+      }
+    }
+  }
+  return local;
+}
+
+void checkRadius(double radius)
+{
+  if (!std::isfinite(radius) || radius <= 0.0)
+  {
+    throw Error("a click's radius must be positive and finite, got " + std::to_string(radius));
+  }
+}
+} // namespace
+
+RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  if (added.empty())
+  {
+    throw Error("ROI Scissor needs at least one click that adds a region");
+  }
+  if (!(options.innerFraction > 0.0 && options.innerFraction < 1.0) || options.isolineCount < 1 ||
+    !(options.segmentFraction > 0.0))
+  {
+    throw Error("ROI Scissor's inner fraction must be in (0, 1), and its isoline count and segment fraction positive");
+  }
+  RoiScissorResult result;
+  const int n = mesh.vertexCount();
+
+  // Section 4.1: the candidate region from geodesic discs.
+  std::vector<std::vector<double>> distances;
+  int component = -1;
+  for (const std::vector<RoiClick>* clicks : { &added, &subtracted })
+  {
+    for (const RoiClick& click : *clicks)
+    {
+      checkRadius(click.radius);
+      const SurfacePoint point = projectClick(surface, click.position, options.clickTolerance);
+      const int c = mesh.faceComponent(point.face);
+      if (component >= 0 && c != component)
+      {
+        throw Error("ROI Scissor's clicks lie on different connected components of the mesh");
+      }
+      component = c;
+      result.clicks.push_back(point);
+      GeodesicSource source;
+      source.points = { point };
+      distances.push_back(HeatGeodesics::of(surface, options.paths.heat).compute(source).distance);
+    }
+  }
+  result.candidate.assign(n, 0);
+  std::vector<char> one(n, 0), zero(n, 0);
+  for (int v = 0; v < n; ++v)
+  {
+    bool inside = false;
+    for (std::size_t i = 0; i < added.size(); ++i)
+    {
+      inside = inside || distances[i][v] < added[i].radius;
+      if (distances[i][v] < options.innerFraction * added[i].radius)
+      {
+        one[v] = 1;
+      }
+    }
+    for (std::size_t j = 0; j < subtracted.size(); ++j)
+    {
+      inside = inside && !(distances[added.size() + j][v] < subtracted[j].radius);
+    }
+    result.candidate[v] = inside ? 1 : 0;
+  }
+  for (std::size_t i = 0; i < added.size(); ++i)
+  {
+    // At least the corner nearest to the click.
+    const SurfacePoint& p = result.clicks[i];
+    int nearest = 0;
+    p.barycentric.maxCoeff(&nearest);
+    one[mesh.triangle(p.face)[nearest]] = 1;
+  }
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const std::array<int, 2>& ev = mesh.edgeVertices(e);
+    if (result.candidate[ev[0]] != result.candidate[ev[1]])
+    {
+      zero[ev[0]] = zero[ev[1]] = 1;
+    }
+  }
+  for (int v = 0; v < n; ++v)
+  {
+    if (one[v] && !result.candidate[v])
+    {
+      one[v] = 0; // a click inside a subtracted disc
+    }
+    if (one[v] && zero[v])
+    {
+      throw Error("a click's inner vertices reach the border of its region: the radius is too small for the mesh");
+    }
+    if (one[v])
+    {
+      result.oneVertices.push_back(v);
+    }
+    if (zero[v])
+    {
+      result.zeroVertices.push_back(v);
+    }
+  }
+  if (result.zeroVertices.empty())
+  {
+    throw Error("the clicks' discs cover their whole component: the radius is larger than the mesh");
+  }
+  if (result.oneVertices.empty())
+  {
+    throw Error("every added click lies inside a subtracted disc");
+  }
+
+  // The field on the region's faces only (a submesh), weights from the whole surface.
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    if (result.candidate[t[0]] || result.candidate[t[1]] || result.candidate[t[2]])
+    {
+      result.regionFaces.push_back(f);
+    }
+  }
+  const Submesh sub = extractSubmesh(mesh, result.regionFaces);
+  const std::vector<double> weights = submeshWeights(mesh, sub, surface.laplacianWeights(options.weights).weights);
+  FieldConstraints constraints;
+  for (int v : result.oneVertices)
+  {
+    constraints.dirichletVertices.push_back(sub.localVertex[v]);
+    constraints.dirichletValues.push_back(1.0);
+  }
+  for (int v : result.zeroVertices)
+  {
+    constraints.dirichletVertices.push_back(sub.localVertex[v]);
+    constraints.dirichletValues.push_back(0.0);
+  }
+  HarmonicFieldSolver solver;
+  const std::vector<double> field = solver.solve(sub.mesh, weights, constraints).field;
+  result.field.assign(n, std::numeric_limits<double>::quiet_NaN());
+  for (std::size_t local = 0; local < sub.globalVertex.size(); ++local)
+  {
+    result.field[sub.globalVertex[local]] = field[local];
+  }
+
+  // Section 4.2: the best-scored isoline.
+  const std::vector<double> magnitudes = faceGradientMagnitudes(sub.mesh, field);
+  const std::vector<IsovalueScore> scores = scoreIsovalues(sub.mesh, field, magnitudes, options.isolineCount);
+  if (scores.empty())
+  {
+    throw Error("ROI Scissor's field is constant on its region");
+  }
+  const auto best = std::max_element(scores.begin(), scores.end(),
+    [](const IsovalueScore& a, const IsovalueScore& b) { return a.score < b.score; });
+  result.isovalue = best->value;
+  result.score = best->score;
+
+  // Section 4.3: feature points on each closed component, joined by anisotropic geodesics.
+  const SurfaceDescriptors& descriptors = surface.descriptors();
+  for (const Isoline& isoline : extractIsolines(sub.mesh, field, result.isovalue))
+  {
+    if (!isoline.closed || isoline.faces.size() < 3)
+    {
+      continue;
+    }
+    SurfaceCurve curve;
+    curve.closed = true;
+    curve.points = isoline.points;
+    for (int f : isoline.faces)
+    {
+      curve.faces.push_back(sub.globalFace[f]);
+    }
+    const int crossed = static_cast<int>(curve.faces.size());
+    const int parts = std::max(3, static_cast<int>(std::lround(options.segmentFraction * crossed)));
+    std::vector<int> bestFace(parts, -1);
+    std::vector<double> bestConcavity(parts, -std::numeric_limits<double>::infinity());
+    double arc = 0.0;
+    for (int i = 0; i < crossed; ++i)
+    {
+      const double segment = (curve.points[(i + 1) % crossed] - curve.points[i]).norm();
+      const double middle = arc + 0.5 * segment;
+      arc += segment;
+      const int part = std::min(parts - 1, static_cast<int>(middle / isoline.length * parts));
+      const Triangle& t = mesh.triangle(curve.faces[i]);
+      // Mean curvature at the centroid, positive where concave (section 3.1's H).
+      const double concavity = -(descriptors.meanCurvature[t[0]] + descriptors.meanCurvature[t[1]] +
+        descriptors.meanCurvature[t[2]]) / 3.0;
+      if (concavity > bestConcavity[part])
+      {
+        bestConcavity[part] = concavity;
+        bestFace[part] = curve.faces[i];
+      }
+    }
+    std::vector<SurfacePoint> features;
+    for (int f : bestFace)
+    {
+      if (f >= 0)
+      {
+        SurfacePoint p;
+        p.face = f;
+        p.barycentric = Vector3::Constant(1.0 / 3.0);
+        features.push_back(p);
+      }
+    }
+    if (features.size() < 3)
+    {
+      continue;
+    }
+    result.boundaries.push_back(geodesicLoop(surface, features, options.paths));
+    result.featurePoints.push_back(std::move(features));
+    result.isolines.push_back(std::move(curve));
+  }
+  if (result.boundaries.empty())
+  {
+    throw Error("ROI Scissor's best isoline has no closed component to bound a region");
+  }
+  std::vector<SurfaceCurve> loops;
+  for (const GeodesicLoop& loop : result.boundaries)
+  {
+    loops.push_back(loop.path.curve);
+  }
+  result.faceLabels = labelCurveSides(mesh, loops, result.clicks.front().face);
+  return result;
+}
+
+} // namespace kerf

@@ -1,0 +1,87 @@
+// ROI Scissor: a feature region from clicks, by geodesic discs, a concavity-aware field and a geodesic boundary.
+#pragma once
+
+#include "Geodesic/GeodesicPaths.h"
+#include "Harmonic/Isolines.h"
+#include "Harmonic/LaplacianWeights.h"
+
+#include <vector>
+
+namespace kerf
+{
+
+class Surface;
+
+/// A click: a point in space (projected onto the surface) and the geodesic radius r of its
+/// candidate disc C(r).
+struct RoiClick
+{
+  Vector3 position = Vector3::Zero();
+  double radius = 0.0;
+};
+
+struct RoiScissorOptions
+{
+  /// Vertices nearer than this fraction of r to a click get the value 1 (ROI Scissor, 4.1).
+  double innerFraction = 0.1;
+  /// Isolines sampled uniformly to choose the boundary from (section 4.2).
+  int isolineCount = 50;
+  /// The isoline is split into this fraction of the triangles it crosses (section 4.3), at
+  /// least 3 parts.
+  double segmentFraction = 0.1;
+  /// The concavity-aware weights of section 3.1.
+  LaplacianWeightOptions weights{ LaplacianWeighting::SmoothConcavity };
+  /// The anisotropic geodesics joining the feature points (section 3.2).
+  GeodesicPathOptions paths{ AnisotropicMetricOptions{ 1.0, AnisotropyMeasure::Normalized, 0.05 }, 3, false,
+    HeatGeodesicOptions() };
+  /// A click farther than this fraction of the bounding-box diagonal from the surface is refused.
+  double clickTolerance = 1e-3;
+};
+
+/// What one ROI Scissor selection produced.
+struct RoiScissorResult
+{
+  std::vector<SurfacePoint> clicks;      ///< the clicks on the surface (added, then subtracted)
+  std::vector<char> candidate;           ///< per vertex: inside the union minus the difference of discs
+  std::vector<int> oneVertices;          ///< constraints 1 (near an added click)
+  std::vector<int> zeroVertices;         ///< constraints 0 (ends of edges crossing the region's border)
+  std::vector<int> regionFaces;          ///< the faces the field was solved on (the submesh)
+  std::vector<double> field;             ///< per vertex; NaN outside the submesh
+  double isovalue = 0.0;                 ///< the best-scored isovalue
+  double score = 0.0;                    ///< its score
+  std::vector<SurfaceCurve> isolines;    ///< the best isoline's closed components (faces of the mesh)
+  std::vector<std::vector<SurfacePoint>> featurePoints; ///< per component, section 4.3
+  std::vector<GeodesicLoop> boundaries;  ///< per component, the closed anisotropic geodesic
+  std::vector<int> faceLabels;           ///< per face: 1 inside the region, 0 outside
+};
+
+/// ROI Scissor (sections 4.1-4.3). The candidate region is the union of the geodesic discs
+/// C(r) = {i | d_g(i, s) < r} of `added` minus those of `subtracted` (distances by the heat
+/// method from each click's surface point). Vertices within innerFraction r of an added click
+/// get 1 (at least the corner nearest to it), both ends of every edge crossing the region's
+/// border get 0. The concavity-aware harmonic field is solved on the submesh of the faces
+/// touching the region, with weights computed on the whole surface (their curvature is not cut
+/// short at the submesh's border). The isoline with the highest score among isolineCount uniform
+/// samples is split into k parts of equal length, k = segmentFraction of the triangles it
+/// crosses; in each part the crossed triangle whose centroid is most concave (highest mean
+/// curvature measured positive on concave regions, as section 3.1 measures H) gives a feature
+/// point; the feature points are joined by anisotropic geodesics into a closed loop. Faces are
+/// labelled by the side of the loops they are on, the first added click's face inside.
+///
+/// Throws kerf::Error for: no added click, a click farther than clickTolerance from the surface,
+/// a radius that is not positive and finite, a radius larger than the mesh (the region has no
+/// border on its component), clicks on different connected components, a region whose inner
+/// vertices meet its border (radius too small), and a field without a closed isoline.
+RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted = {}, const RoiScissorOptions& options = RoiScissorOptions());
+
+/// The surface point nearest to `position`; throws kerf::Error if it is farther than
+/// tolerance times the bounding-box diagonal.
+SurfacePoint projectClick(const Surface& surface, const Vector3& position, double tolerance);
+
+/// Per-face side labels of closed curves on the mesh: faces are joined across each edge, and
+/// the label flips when the path between the two faces' centroids (through the edge's midpoint)
+/// crosses a curve an odd number of times. `seedFace` gets 1; faces it does not reach get 0.
+std::vector<int> labelCurveSides(const TriangleMesh& mesh, const std::vector<SurfaceCurve>& curves, int seedFace);
+
+} // namespace kerf

@@ -1,0 +1,432 @@
+// The shared parts of Kerf's filters: the exception border, input arrays and points, output helpers.
+#include "KerfFilterUtilities.h"
+
+#include "Error.h"
+#include "Geometry/ClosestPoint.h"
+#include "Mesh/MeshValidation.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cmath>
+#include <cstring>
+#include <new>
+
+namespace kerf
+{
+
+namespace
+{
+// The values of a one-component array with `expected` tuples; throws naming it otherwise.
+std::vector<double> checkedValues(vtkDataArray* array, const std::string& name, vtkIdType expected, const char* kind)
+{
+  if (array->GetNumberOfComponents() != 1)
+  {
+    throw Error(name + " has " + std::to_string(array->GetNumberOfComponents()) + " components; one is needed");
+  }
+  if (array->GetNumberOfTuples() != expected)
+  {
+    throw Error(name + " has " + std::to_string(array->GetNumberOfTuples()) + " values for " +
+      std::to_string(expected) + " " + kind + "s");
+  }
+  std::vector<double> values;
+  CopyToDoubles(array, 1, values);
+  return values;
+}
+
+std::string sentence(std::string message)
+{
+  if (!message.empty() && message.back() != '.')
+  {
+    message += '.';
+  }
+  return message;
+}
+} // namespace
+
+namespace
+{
+// Runs `body`; false, with the message of whatever it threw, if it threw.
+bool runCatching(const std::function<void()>& body, std::string& message)
+{
+  try
+  {
+    body();
+    return true;
+  }
+  catch (const std::bad_alloc&)
+  {
+    message = "out of memory";
+  }
+  catch (const std::exception& e)
+  {
+    message = e.what();
+  }
+  catch (...)
+  {
+    message = "an unknown failure";
+  }
+  return false;
+}
+} // namespace
+
+int RunGuarded(vtkAlgorithm* algorithm, const char* what, const std::function<void()>& body)
+{
+  std::string message;
+  if (runCatching(body, message))
+  {
+    algorithm->UpdateProgress(1.0);
+    return 1;
+  }
+  vtkErrorWithObjectMacro(algorithm, << what << ": " << sentence(message));
+  return 0;
+}
+
+void GuardSetter(vtkAlgorithm* algorithm, const char* what, const std::function<void()>& setter)
+{
+  std::string message;
+  if (!runCatching(setter, message))
+  {
+    vtkErrorWithObjectMacro(algorithm, << what << ": " << sentence(message) << " Nothing was changed.");
+  }
+}
+
+void LoadSurface(SurfaceInput& surface, vtkPolyData* input, const MeshRequirements& requirements)
+{
+  std::string error;
+  if (!surface.Load(input, requirements, error))
+  {
+    throw Error(error);
+  }
+}
+
+void CheckOutputNames(std::initializer_list<const char*> names)
+{
+  for (const char* name : names)
+  {
+    if (!name || !*name)
+    {
+      throw Error("every output array needs a non-empty name");
+    }
+  }
+}
+
+void CheckDifferentNames(const char* a, const char* b, const std::string& what)
+{
+  if (a && b && std::strcmp(a, b) == 0)
+  {
+    throw Error(what + " need different names (both are arrays of the same kind)");
+  }
+}
+
+double Finite(double value, const char* parameter)
+{
+  if (std::isnan(value))
+  {
+    throw Error(std::string(parameter) + " must be a number, not NaN");
+  }
+  return value;
+}
+
+double StrokeIsoValue(double value)
+{
+  if (!std::isfinite(value) || !(value + 1.0 > value) || !(value - 1.0 < value))
+  {
+    throw Error("IsoValue " + std::to_string(value) + " must be finite, and small enough that IsoValue +- 1 differ from it");
+  }
+  return value;
+}
+
+double RelativeDistance(double fraction, double diagonal, const char* parameter)
+{
+  if (!std::isfinite(fraction))
+  {
+    throw Error(std::string(parameter) + " must be a number (0 for no limit)");
+  }
+  return fraction > 0.0 ? fraction * diagonal : 0.0;
+}
+
+std::vector<double> ReadInputArray(
+  vtkAlgorithm* algorithm, int index, vtkDataArray* array, vtkIdType expected, const std::string& owner)
+{
+  vtkInformation* selection = algorithm->GetInputArrayInformation(index);
+  const char* requested = selection && selection->Has(vtkDataObject::FIELD_NAME())
+    ? selection->Get(vtkDataObject::FIELD_NAME())
+    : nullptr;
+  const int association = selection && selection->Has(vtkDataObject::FIELD_ASSOCIATION())
+    ? selection->Get(vtkDataObject::FIELD_ASSOCIATION())
+    : vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  const char* kind = association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cell" : "point";
+  const std::string where = " (input array " + std::to_string(index) + ")";
+  if (!array)
+  {
+    if (!requested || !*requested)
+    {
+      throw Error("no array is selected for " + owner + where);
+    }
+    throw Error(owner + " has no one-component " + kind + " array named '" + requested + "'" + where);
+  }
+  return checkedValues(array,
+    "the " + std::string(kind) + " array '" + (array->GetName() ? array->GetName() : "") + "' of " + owner + where,
+    expected, kind);
+}
+
+std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner)
+{
+  vtkDataArray* array = name && *name ? points->GetPointData()->GetArray(name) : nullptr;
+  if (!array)
+  {
+    throw Error(owner + " have no one-component point array named '" + (name ? name : "") + "'");
+  }
+  return checkedValues(array, "the point array '" + std::string(name) + "' of " + owner, points->GetNumberOfPoints(), "point");
+}
+
+namespace
+{
+void checkStrokePointCount(long long count)
+{
+  if (count > StrokePointList::MaximumCount)
+  {
+    throw Error("a stroke has at most " + std::to_string(StrokePointList::MaximumCount) + " points, not " +
+      std::to_string(count));
+  }
+}
+} // namespace
+
+bool StrokePointList::SetCount(int count)
+{
+  checkStrokePointCount(count);
+  if (count < 0 || static_cast<std::size_t>(count) == this->List.size())
+  {
+    return false;
+  }
+  this->List.resize(static_cast<std::size_t>(count), Vector3::Zero());
+  return true;
+}
+
+bool StrokePointList::Set(int index, const Vector3& point)
+{
+  if (index < 0)
+  {
+    return false;
+  }
+  checkStrokePointCount(static_cast<long long>(index) + 1);
+  if (static_cast<std::size_t>(index) >= this->List.size())
+  {
+    this->List.resize(static_cast<std::size_t>(index) + 1, Vector3::Zero());
+  }
+  if (this->List[static_cast<std::size_t>(index)] == point)
+  {
+    return false;
+  }
+  this->List[static_cast<std::size_t>(index)] = point;
+  return true;
+}
+
+std::vector<std::vector<Vector3>> ReadStrokes(
+  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface)
+{
+  std::vector<std::vector<Vector3>> strokes;
+  if (strokeInput)
+  {
+    strokes = ReadPolylines(strokeInput, "the stroke input");
+    if (strokes.empty())
+    {
+      throw Error("the stroke input holds no lines");
+    }
+  }
+  else if (panel.Count() > 0)
+  {
+    std::vector<Vector3> stroke;
+    for (const Vector3& point : panel.Points())
+    {
+      const ClosestPointLocator::Hit hit = point.allFinite() && point.cwiseAbs().maxCoeff() <= CoordinateLimit
+        ? surface.locator().closest(point)
+        : ClosestPointLocator::Hit();
+      if (hit.face < 0)
+      {
+        throw Error("stroke point " + std::to_string(stroke.size()) +
+          " has a NaN, infinite or huge coordinate (beyond +-1e50)");
+      }
+      stroke.push_back(hit.position);
+    }
+    strokes.push_back(std::move(stroke));
+  }
+  else
+  {
+    throw Error("there is no stroke: place stroke points on the surface (in ParaView: point at the surface and "
+                "press P, Ctrl+P to add more) or connect polylines to the Strokes input");
+  }
+  return strokes;
+}
+
+std::vector<Vector3> ReadPoints(vtkPointSet* points)
+{
+  std::vector<Vector3> coordinates(static_cast<std::size_t>(points ? points->GetNumberOfPoints() : 0));
+  for (std::size_t i = 0; i < coordinates.size(); ++i)
+  {
+    points->GetPoint(static_cast<vtkIdType>(i), coordinates[i].data());
+  }
+  return coordinates;
+}
+
+std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner)
+{
+  std::vector<std::vector<Vector3>> polylines;
+  if (!lines || !lines->GetLines())
+  {
+    return polylines;
+  }
+  auto cells = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  const vtkIdType pointCount = lines->GetNumberOfPoints();
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    std::vector<Vector3> polyline(static_cast<std::size_t>(size));
+    for (vtkIdType k = 0; k < size; ++k)
+    {
+      if (ids[k] < 0 || ids[k] >= pointCount)
+      {
+        throw Error("line " + std::to_string(cells->GetCurrentCellId()) + " of " + owner + " uses point " +
+          std::to_string(ids[k]) + ", but " + owner + " has " + std::to_string(pointCount) + " points");
+      }
+      lines->GetPoint(ids[k], polyline[static_cast<std::size_t>(k)].data());
+    }
+    polylines.push_back(std::move(polyline));
+  }
+  return polylines;
+}
+
+void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, double scalar, const std::string& message)
+{
+  bool finite = std::isfinite(scalar);
+  for (const std::vector<double>* values : vectors)
+  {
+    for (double v : *values)
+    {
+      finite = finite && std::isfinite(v);
+    }
+  }
+  if (!finite)
+  {
+    throw Error(message);
+  }
+}
+
+vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetName(name);
+  array->InsertNextValue(value);
+  return array;
+}
+
+vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::string& value)
+{
+  auto array = vtkSmartPointer<vtkStringArray>::New();
+  array->SetName(name);
+  array->InsertNextValue(value);
+  return array;
+}
+
+vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values)
+{
+  auto array = vtkSmartPointer<vtkIntArray>::New();
+  array->SetName(name);
+  array->SetNumberOfValues(static_cast<vtkIdType>(values.size()));
+  if (!values.empty())
+  {
+    std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(int));
+  }
+  return array;
+}
+
+void WriteCutLines(const CutResult& cut, vtkPolyData* lines)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polylines;
+  std::vector<double> isoValues, lengths;
+  std::vector<unsigned char> closed;
+  for (const Isoline& line : cut.isolines)
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    const vtkIdType count = static_cast<vtkIdType>(line.points.size());
+    for (const Vector3& p : line.points)
+    {
+      points->InsertNextPoint(p.data());
+    }
+    polylines->InsertNextCell(count + (line.closed ? 1 : 0));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      polylines->InsertCellPoint(first + k);
+    }
+    if (line.closed)
+    {
+      polylines->InsertCellPoint(first);
+    }
+    isoValues.push_back(cut.value);
+    lengths.push_back(line.length);
+    closed.push_back(line.closed ? 1 : 0);
+  }
+  lines->SetPoints(points);
+  lines->SetLines(polylines);
+  lines->GetCellData()->AddArray(MakeArray("IsoValue", isoValues));
+  lines->GetCellData()->AddArray(MakeArray("Score", cut.scores));
+  lines->GetCellData()->AddArray(MakeArray("Length", lengths));
+  lines->GetCellData()->AddArray(MakeArray("Closed", closed));
+}
+
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output)
+{
+  output->GetPointData()->AddArray(MakeArray(name, surface.ToInputPoints(solution.field)));
+  output->GetPointData()->SetActiveScalars(name);
+  output->GetFieldData()->AddArray(MakeFieldValue("RelativeResidual", solution.relativeResidual));
+  output->GetFieldData()->AddArray(MakeFieldValue("SolverWork", SolverWorkName(solution.work)));
+}
+
+std::string SolverWorkName(HarmonicFieldSolution::Work work)
+{
+  switch (work)
+  {
+    case HarmonicFieldSolution::Work::Factorization:
+      return "factorization";
+    case HarmonicFieldSolution::Work::Update:
+      return "update";
+    default:
+      return "back-substitution";
+  }
+}
+
+int FillSurfaceAndOptionalPointsPorts(int port, vtkInformation* info)
+{
+  if (port == 0)
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  }
+  else
+  {
+    info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPointSet");
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+} // namespace kerf

@@ -1,0 +1,123 @@
+// What every Kerf filter's RequestData shares: the exception border, input arrays and points, output helpers.
+#pragma once
+
+#include "Harmonic/HarmonicCutSession.h"
+#include "Harmonic/HarmonicFieldSolver.h"
+#include "KerfSurfaceInput.h"
+#include "Mesh/TriangleMesh.h"
+
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+
+#include <functional>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+class vtkAbstractArray;
+class vtkAlgorithm;
+class vtkDataArray;
+class vtkInformation;
+class vtkInformationVector;
+class vtkPointSet;
+class vtkPolyData;
+
+namespace kerf
+{
+
+/// The border every RequestData runs inside: `body` does the work and throws kerf::Error (or
+/// anything else) on failure. Every exception stops here: it is reported with vtkErrorMacro as
+/// "<what>: <message>." and RunGuarded returns 0 (VTK's failure); otherwise the progress is set
+/// to 1 and it returns 1.
+int RunGuarded(vtkAlgorithm* algorithm, const char* what, const std::function<void()>& body);
+
+/// Calls `setter` and stops every exception at the border of a filter's setter (an impossible
+/// size, an allocation failure): reported with vtkErrorMacro, nothing changes.
+void GuardSetter(vtkAlgorithm* algorithm, const char* what, const std::function<void()>& setter);
+
+/// Loads `input` into `surface` (converting and validating it, or reusing the conversion of the
+/// same geometry); throws kerf::Error with the reason it is refused.
+void LoadSurface(SurfaceInput& surface, vtkPolyData* input, const MeshRequirements& requirements);
+
+/// Throws unless every output array name is non-empty.
+void CheckOutputNames(std::initializer_list<const char*> names);
+/// Throws if two output arrays of the same kind would get the same name.
+void CheckDifferentNames(const char* a, const char* b, const std::string& what);
+
+/// `value` if it is a number; throws naming the parameter for NaN.
+double Finite(double value, const char* parameter);
+/// A stroke's iso-value I: finite, and small enough that I + 1 and I - 1 differ from it (the
+/// values of its two sides); throws otherwise.
+double StrokeIsoValue(double value);
+/// A distance given as a fraction of the bounding-box diagonal, in length units; 0 stays 0 (no
+/// limit). Throws for NaN.
+double RelativeDistance(double fraction, double diagonal, const char* parameter);
+
+/// The one-component values of `array`, the algorithm's input array `index` (what
+/// GetInputArrayToProcess(index, ...) returned), one per point or cell of its data object: throws
+/// kerf::Error naming the array, its owner ("the surface", "the constraint points") and the input
+/// array index for a missing array, another number of components or another number of values
+/// than `expected`.
+std::vector<double> ReadInputArray(
+  vtkAlgorithm* algorithm, int index, vtkDataArray* array, vtkIdType expected, const std::string& owner);
+
+/// The one-component point array `name` of a point set, one value per point; throws kerf::Error
+/// naming it and its owner when it is missing or has another shape. (Arrays of a filter's first
+/// input are selected with SetInputArrayToProcess and read with ReadInputArray; arrays of other
+/// inputs are named, see vtkHarmonicField.)
+std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner);
+
+/// The stroke points a filter's panel sets (ParaView's interactive polyline), one stroke. A count
+/// or an index beyond MaximumCount is refused before anything is allocated.
+class StrokePointList
+{
+public:
+  static constexpr int MaximumCount = 10000000;
+  /// These set the list; true when it changed. Throw kerf::Error for an absurd count or index.
+  bool SetCount(int count);
+  bool Set(int index, const Vector3& point);
+  int Count() const { return static_cast<int>(this->List.size()); }
+  const std::vector<Vector3>& Points() const { return this->List; }
+
+private:
+  std::vector<Vector3> List;
+};
+
+/// The strokes of a filter with strokes as polylines on input 1 or, without it, in its panel:
+/// the polylines, else the panel's points as one stroke, each moved to the nearest point of the
+/// surface (the panel's first points come from the input's bounds, not from the surface);
+/// throws when there is no stroke.
+std::vector<std::vector<Vector3>> ReadStrokes(
+  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface);
+
+/// The coordinates of a point set's points.
+std::vector<Vector3> ReadPoints(vtkPointSet* points);
+/// The polylines of a vtkPolyData's line cells, as point lists; throws for a line naming a point
+/// that does not exist.
+std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner);
+
+/// Throws `message` unless every value of the vectors and `scalar` is finite.
+void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, double scalar, const std::string& message);
+
+/// A one-tuple field-data array holding a number or a word.
+vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value);
+vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::string& value);
+/// A named int array holding `values`.
+vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
+
+/// A cut's chosen isoline components as polylines (closed ones closed) with the cell arrays
+/// IsoValue, Score, Length and Closed.
+void WriteCutLines(const CutResult& cut, vtkPolyData* lines);
+
+/// A solved field on the output: the point array `name` (its active scalars) and the field data
+/// RelativeResidual and SolverWork.
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output);
+
+/// "factorization", "update" or "back-substitution".
+std::string SolverWorkName(HarmonicFieldSolution::Work work);
+
+/// Input port information of a filter with a surface on port 0 and optional points (any
+/// vtkPointSet) on port 1.
+int FillSurfaceAndOptionalPointsPorts(int port, vtkInformation* info);
+
+} // namespace kerf

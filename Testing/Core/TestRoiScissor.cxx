@@ -1,0 +1,179 @@
+// ROI Scissor: the same protrusion from different clicks, a boundary in the crease, Boolean discs, bad input.
+#include "Error.h"
+#include "Geodesic/RoiScissor.h"
+#include "Mesh/MeshGenerators.h"
+#include "Session/Surface.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+using namespace kerf;
+
+namespace
+{
+// The dumbbell of the harmonic-cut tests: lobes of radii 1 (below) and 0.8 (above, the
+// protrusion), the neck at z = 0.3 pinched by 0.65.
+const double HalfLength = 2.2, NeckHeight = 0.3, NeckDepth = 0.65;
+const std::array<double, 2> Radii{ 1.0, 0.8 };
+
+// One surface for every test: its heat-method set-up, curvature and weights are cached on it.
+std::shared_ptr<Surface> dumbbell()
+{
+  static const std::shared_ptr<Surface> surface =
+    std::make_shared<Surface>(makeDumbbell(HalfLength, Radii, NeckHeight, NeckDepth, 5));
+  return surface;
+}
+
+// Height of the crease: where the profile is narrowest near the neck.
+double creaseHeight()
+{
+  double best = NeckHeight, narrowest = 1e9;
+  for (double z = NeckHeight - 0.5; z <= NeckHeight + 0.5; z += 1e-4)
+  {
+    const double r = dumbbellRadius(z, HalfLength, Radii, NeckHeight, NeckDepth);
+    if (r < narrowest)
+    {
+      narrowest = r;
+      best = z;
+    }
+  }
+  return best;
+}
+
+double faceArea(const TriangleMesh& mesh, int f)
+{
+  const Triangle& t = mesh.triangle(f);
+  return 0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
+}
+
+// A point of the surface at height z in the direction of angle `angle` around the axis.
+Vector3 onDumbbell(double z, double angle)
+{
+  const double r = dumbbellRadius(z, HalfLength, Radii, NeckHeight, NeckDepth);
+  return Vector3(r * std::cos(angle), r * std::sin(angle), z);
+}
+} // namespace
+
+TEST(RoiScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
+{
+  const std::shared_ptr<Surface> surface = dumbbell();
+  const TriangleMesh& mesh = surface->mesh();
+  const double crease = creaseHeight();
+  const Vector3 clicks[3] = { onDumbbell(HalfLength - 0.05, 0.0), onDumbbell(1.3, 0.5), onDumbbell(0.9, 2.6) };
+  std::vector<std::vector<int>> labels;
+  double protrusionArea = 0.0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    if ((mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0 > crease)
+    {
+      protrusionArea += faceArea(mesh, f);
+    }
+  }
+  for (const Vector3& click : clicks)
+  {
+    const RoiScissorResult result = roiScissor(*surface, { { click, 2.6 } });
+    ASSERT_EQ(result.boundaries.size(), 1u);
+    EXPECT_EQ(result.boundaries[0].selfCrossings, 0);
+    // The boundary runs through the crease: every point within 0.1 of its height (the
+    // protrusion is 1.9 tall, the mesh's edges about 0.05).
+    double farthest = 0.0;
+    for (const Vector3& p : result.boundaries[0].path.curve.points)
+    {
+      farthest = std::max(farthest, std::abs(p.z() - crease));
+    }
+    RecordProperty("CreaseDistance", std::to_string(farthest));
+    EXPECT_LE(farthest, 0.1);
+    // The region is the protrusion.
+    double area = 0.0, misplaced = 0.0;
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      const Triangle& t = mesh.triangle(f);
+      const bool above = (mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0 > crease;
+      area += result.faceLabels[f] ? faceArea(mesh, f) : 0.0;
+      misplaced += (result.faceLabels[f] != 0) != above ? faceArea(mesh, f) : 0.0;
+    }
+    EXPECT_LE(misplaced, 0.05 * protrusionArea);
+    labels.push_back(result.faceLabels);
+  }
+  for (std::size_t i = 1; i < labels.size(); ++i)
+  {
+    double region = 0.0, difference = 0.0;
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      region += labels[0][f] ? faceArea(mesh, f) : 0.0;
+      difference += labels[0][f] != labels[i][f] ? faceArea(mesh, f) : 0.0;
+    }
+    RecordProperty("Difference" + std::to_string(i), std::to_string(difference / region));
+    EXPECT_LE(difference, 0.02 * region) << "click " << i;
+  }
+}
+
+TEST(RoiScissor, ConstraintsFollowTheDiscs)
+{
+  const std::shared_ptr<Surface> surface = dumbbell();
+  const TriangleMesh& mesh = surface->mesh();
+  const Vector3 top = onDumbbell(HalfLength - 0.05, 0.0);
+  const RoiScissorResult one = roiScissor(*surface, { { top, 2.6 } });
+  // Zeros sit on both sides of the border and nowhere else; ones are near the click.
+  for (int v : one.zeroVertices)
+  {
+    bool crossing = false;
+    for (int w : mesh.vertexNeighbors(v))
+    {
+      crossing = crossing || one.candidate[w] != one.candidate[v];
+    }
+    EXPECT_TRUE(crossing);
+  }
+  for (int v : one.oneVertices)
+  {
+    EXPECT_LE((mesh.point(v) - top).norm(), 0.1 * 2.6 + 0.05);
+    EXPECT_DOUBLE_EQ(one.field[v], 1.0);
+  }
+  // A union with a second disc grows the candidate region; a difference shrinks it.
+  const RoiScissorResult both = roiScissor(*surface, { { top, 2.6 }, { onDumbbell(-1.5, 1.0), 0.5 } });
+  const RoiScissorResult less = roiScissor(*surface, { { top, 2.6 } }, { { onDumbbell(1.2, 3.14), 0.3 } });
+  int counts[3] = { 0, 0, 0 };
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    counts[0] += one.candidate[v];
+    counts[1] += both.candidate[v];
+    counts[2] += less.candidate[v];
+    EXPECT_GE(both.candidate[v], one.candidate[v]);
+    EXPECT_LE(less.candidate[v], one.candidate[v]);
+  }
+  EXPECT_GT(counts[1], counts[0]);
+  EXPECT_LT(counts[2], counts[0]);
+}
+
+TEST(RoiScissor, RefusesBadInput)
+{
+  const std::shared_ptr<Surface> surface = dumbbell();
+  const Vector3 top = onDumbbell(HalfLength - 0.05, 0.0);
+  EXPECT_THROW(roiScissor(*surface, {}), Error);
+  EXPECT_THROW(roiScissor(*surface, { { Vector3(5.0, 0.0, 0.0), 1.0 } }), Error); // off the surface
+  EXPECT_THROW(roiScissor(*surface, { { top, 0.0 } }), Error);
+  EXPECT_THROW(roiScissor(*surface, { { top, -1.0 } }), Error);
+  EXPECT_THROW(roiScissor(*surface, { { top, std::nan("") } }), Error);
+  EXPECT_THROW(roiScissor(*surface, { { top, 100.0 } }), Error); // larger than the mesh
+  // A second component: a sphere beside the dumbbell.
+  const TriangleMesh& mesh = surface->mesh();
+  std::vector<Vector3> points = mesh.points();
+  std::vector<Triangle> triangles = mesh.triangles();
+  const TriangleMesh ball = makeIcosphere(0.5, 2);
+  const int offset = static_cast<int>(points.size());
+  for (const Vector3& p : ball.points())
+  {
+    points.push_back(p + Vector3(4.0, 0.0, 0.0));
+  }
+  for (const Triangle& t : ball.triangles())
+  {
+    triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const auto two = std::make_shared<Surface>(TriangleMesh(points, triangles));
+  EXPECT_THROW(roiScissor(*two, { { top, 2.6 }, { Vector3(4.5, 0.0, 0.0), 0.3 } }), Error);
+}

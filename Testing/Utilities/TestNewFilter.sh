@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The filter generator works: in a copy of the sources, Utilities/new-filter.sh makes a filter
+# that builds, whose Core and filter tests pass and whose proxy loads with the plugin.
+#   TestNewFilter.sh SOURCE_DIR WORK_DIR
+set -euo pipefail
+source_dir=$1
+work=$2
+rm -rf "$work"
+mkdir -p "$work/src"
+# The tracked files only (no build trees).
+(cd "$source_dir" && git ls-files -z --cached --others --exclude-standard 2>/dev/null || find . -path ./build -prune -o -type f -print0) |
+  (cd "$source_dir" && xargs -0 cp --parents -t "$work/src")
+cd "$work/src"
+./Utilities/new-filter.sh ExampleValence Geometry
+# Refuses to make the same filter twice, and bad names.
+! ./Utilities/new-filter.sh ExampleValence Geometry 2>/dev/null
+! ./Utilities/new-filter.sh example Geometry 2>/dev/null
+launcher=()
+if command -v ccache >/dev/null; then
+  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+fi
+cmake -S . -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+  -DKERF_BUILD_BENCHMARKS=OFF "${launcher[@]}" > "$work/configure.log"
+cmake --build "$work/build" --target KerfCoreTests KerfFilterTests Kerf > "$work/build.log"
+"$work/build/bin/KerfCoreTests" --gtest_filter='ExampleValence.*'
+"$work/build/bin/KerfFilterTests" TestExampleValenceFilter
+grep -q "ExampleValence.xml" "$work/build/Plugins/ParaView/CMakeFiles/Kerf.dir/"*.* 2>/dev/null ||
+  grep -rq "KerfExampleValence" "$work/build/Plugins" || { echo "the proxy is not in the plugin" >&2; exit 1; }
+echo "generated filter ExampleValence builds and its tests pass"
