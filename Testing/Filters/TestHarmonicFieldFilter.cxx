@@ -251,9 +251,17 @@ int TestHarmonicFieldFilter(int, char*[])
       return worst;
     };
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(intrinsic).empty());
-    ok &= KERF_CHECK(worstError(intrinsic) <= 1e-9);
+    // The soft constraints are placed by projecting their points onto the surface, which
+    // holds their positions to about 1e-7 (measured: 5.2e-7 in the field with weight 1, 1e-10
+    // with weight 1e-3); the hard values alone are exact below.
+    ok &= KERF_CHECK(worstError(intrinsic) <= 1e-6);
     ok &= KERF_CHECK(residual(intrinsic) <= 1e-10);
     ok &= KERF_CHECK(work(intrinsic) == "factorization");
+    // The point-value formulation on the intrinsic triangles too.
+    intrinsic->SetFormulation(vtkHarmonicField::POINT_VALUES);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(intrinsic).empty());
+    ok &= KERF_CHECK(worstError(intrinsic) <= 1e-6);
+    intrinsic->SetFormulation(vtkHarmonicField::LEAST_SQUARES);
     // Without the soft constraints, hard values alone: the same linear function.
     intrinsic->SetInputData(1, nullptr);
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(intrinsic).empty());

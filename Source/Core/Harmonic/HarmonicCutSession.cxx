@@ -107,6 +107,7 @@ struct IntrinsicLaplacianSet
 
 HarmonicFieldSolution HarmonicCutSession::solve(FieldConstraints constraints, const HarmonicFieldOptions& options)
 {
+  constraints.formulation = options.formulation;
   if (options.weights.weighting == LaplacianWeighting::IntrinsicDelaunay)
   {
     // Its edges join vertex pairs the mesh may not join: the field is solved on the intrinsic
@@ -125,7 +126,6 @@ HarmonicFieldSolution HarmonicCutSession::solve(FieldConstraints constraints, co
   }
   const LaplacianWeightSet& weights = this->surface().laplacianWeights(options.weights);
   constraints.softWeight = options.softWeight * weights.meanDiagonal;
-  constraints.formulation = options.formulation;
   return this->Solver.solve(this->mesh(), weights.weights, constraints);
 }
 
