@@ -23,25 +23,6 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-// A circle of radius r at height z around the z axis, as one closed polyline (the last point
-// repeats the first).
-vtkSmartPointer<vtkPolyData> circle(double r, double z, int points)
-{
-  auto line = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkCellArray> cells;
-  cells->InsertNextCell(points + 1);
-  for (int i = 0; i < points; ++i)
-  {
-    const double a = 2.0 * Pi * i / points;
-    cells->InsertCellPoint(pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), z));
-  }
-  cells->InsertCellPoint(0);
-  line->SetPoints(pts);
-  line->SetLines(cells);
-  return line;
-}
-
 std::array<double, 3> point(vtkPolyData* data, vtkIdType id)
 {
   std::array<double, 3> p;
@@ -75,7 +56,7 @@ int TestGeodesicSeamFilter(int, char*[])
   const vtkMTimeType inputTime = cylinder->GetMTime();
   vtkNew<vtkGeodesicSeam> seam;
   seam->SetInputData(0, cylinder);
-  seam->SetInputData(1, circle(1.0, 1.5, 12));
+  seam->SetInputData(1, kerf::test::CirclePolyline(1.0, 1.5, 12));
   seam->SetGamma(0.0);
   const double angle = 0.4;
   seam->SetTargetPoint(std::cos(angle), std::sin(angle), 3.5);
@@ -151,7 +132,7 @@ int TestGeodesicSeamFilter(int, char*[])
   ok &= KERF_CHECK(error.find("the target point lies off the surface") != std::string::npos);
   ok &= KERF_CHECK(seam->GetOutput()->GetNumberOfPoints() == 0 && seam->GetSeam()->GetNumberOfPoints() == 0);
   seam->SetTargetPoint(1.0, 0.0, 3.0);
-  seam->SetInputData(1, circle(1.5, 1.5, 12));
+  seam->SetInputData(1, kerf::test::CirclePolyline(1.5, 1.5, 12));
   error = kerf::test::UpdateAndCaptureError(seam);
   std::cout << error << std::endl;
   ok &= KERF_CHECK(error.find("the cut input line 0") != std::string::npos);
