@@ -128,7 +128,7 @@ int TestGeodesicDistanceFilter(int, char*[])
   const auto fromNearer = [&](const double* p) { return std::min(fromC(p), std::hypot(p[0] - d[0], p[1] - d[1])); };
   onPlane->SetInputData(1, sourcePoints({ c, d }));
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(onPlane).empty());
-  // (Away from the bisector too, where the heat method rounds the ridge of the minimum.)
+  // (Away from the bisector too, |d1 - d2| > 4, where the heat method rounds the ridge of the minimum.)
   e = relativeErrors(onPlane, fromNearer, [&](const double* p) {
     return fromNearer(p) > 4.0 && std::abs(fromC(p) - std::hypot(p[0] - d[0], p[1] - d[1])) > 4.0;
   });
