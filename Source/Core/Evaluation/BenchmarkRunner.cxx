@@ -359,6 +359,9 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
   options.sameCutTolerance = parameters.positive("same", options.sameCutTolerance);
   options.minimumSegmentArea = parameters.positive("area", options.minimumSegmentArea);
   options.voteExponent = std::stod(parameters.text("votes", std::to_string(options.voteExponent)));
+  options.lengthExponent = std::stod(parameters.text("length", std::to_string(options.lengthExponent)));
+  options.areaExponent = std::stod(parameters.text("sizes", std::to_string(options.areaExponent)));
+  options.peaksPerField = static_cast<int>(parameters.positive("peaks", options.peaksPerField));
   return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
@@ -430,7 +433,7 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "delta", "eta", "patches" }, SegmentationMethod::Protocol::Automatic, segmentWithSpectralClustering },
     { "consensus-cuts",
       "cuts that many concavity-aware harmonic fields between feature points agree on, k - 1 of them",
-      { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes" },
+      { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
   };
   return methods;

@@ -10,6 +10,7 @@
 #include "Session/Surface.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -27,6 +28,8 @@ struct Candidate
 {
   Bits side;
   double sideArea = 0.0;
+  Vector3 centroid = Vector3::Zero(); ///< of the side, area-weighted
+  double extent = 0.0;                ///< the side's bounding-box diagonal
   double score = 0.0;
   int field = -1;
 };
@@ -172,16 +175,143 @@ std::vector<double> clippedField(const TriangleMesh& mesh, const std::vector<dou
       sorted.push_back(field[v]);
     }
   }
-  std::sort(sorted.begin(), sorted.end());
   const std::size_t last = sorted.size() - 1;
-  const double lo = sorted[static_cast<std::size_t>(std::floor(quantile * last))];
-  const double hi = sorted[static_cast<std::size_t>(std::ceil((1.0 - quantile) * last))];
+  const auto low = sorted.begin() + static_cast<std::ptrdiff_t>(std::floor(quantile * last));
+  const auto high = sorted.begin() + static_cast<std::ptrdiff_t>(std::ceil((1.0 - quantile) * last));
+  std::nth_element(sorted.begin(), low, sorted.end());
+  const double lo = *low;
+  std::nth_element(low, high, sorted.end());
+  const double hi = *high;
   for (double& value : field)
   {
     value = std::clamp(value, lo, hi);
   }
   return field;
 }
+
+// The smaller of the two sides an isoline component splits the surface into, found by flooding
+// from the component's faces with a stop at half the area, so that it costs the smaller side.
+class SideFinder
+{
+public:
+  explicit SideFinder(const FaceGraph& graph)
+    : Graph(graph)
+    , OnCut(graph.faceCount(), 0)
+    , Visited(graph.faceCount(), 0)
+  {
+  }
+
+  /// False when the component does not split the surface in two.
+  bool smallerSide(const std::vector<double>& field, double value, const Isoline& line, Candidate& candidate)
+  {
+    const TriangleMesh& mesh = this->Graph.mesh();
+    ++this->CutStamp;
+    for (int f : line.faces)
+    {
+      this->OnCut[f] = this->CutStamp;
+    }
+    auto upper = [&](int f) {
+      const Triangle& t = mesh.triangle(f);
+      return (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= value;
+    };
+    const int first = line.faces.front();
+    const bool firstUpper = upper(first);
+    int second = -1; // a face across the cut from the first one's side
+    for (int f : line.faces)
+    {
+      if (upper(f) != firstUpper)
+      {
+        second = f;
+        break;
+      }
+      for (int e : this->Graph.faceEdges(f))
+      {
+        if (e >= 0 && upper(this->Graph.opposite(e, f)) != firstUpper)
+        {
+          second = this->Graph.opposite(e, f);
+          break;
+        }
+      }
+      if (second >= 0)
+      {
+        break;
+      }
+    }
+    if (second < 0)
+    {
+      return false;
+    }
+    // Both sides flood in turns, one face at a time; the first to finish is the smaller.
+    const int stamp = ++this->VisitStamp;
+    std::array<std::vector<int>, 2> queues{ { { first }, { second } } };
+    std::array<std::size_t, 2> next{ { 0, 0 } };
+    std::array<double, 2> areas{ { 0.0, 0.0 } };
+    this->Visited[first] = stamp;
+    this->Visited[second] = stamp;
+    const double half = 0.5 * this->Graph.totalArea();
+    for (int turn = 0;; turn = 1 - turn)
+    {
+      std::vector<int>& queue = queues[turn];
+      if (next[turn] == queue.size())
+      {
+        if (areas[turn] > half)
+        {
+          return false; // the cut does not split the surface: one side reached the other
+        }
+        this->fill(queue, candidate);
+        candidate.sideArea = areas[turn];
+        return true;
+      }
+      const int f = queue[next[turn]++];
+      areas[turn] += this->Graph.area(f);
+      const bool fUpper = upper(f);
+      for (int e : this->Graph.faceEdges(f))
+      {
+        if (e < 0)
+        {
+          continue;
+        }
+        const int g = this->Graph.opposite(e, f);
+        if (this->Visited[g] == stamp)
+        {
+          continue;
+        }
+        const bool cutHere = this->OnCut[f] == this->CutStamp || this->OnCut[g] == this->CutStamp;
+        if (cutHere && upper(g) != fUpper)
+        {
+          continue;
+        }
+        this->Visited[g] = stamp;
+        queue.push_back(g);
+      }
+    }
+  }
+
+private:
+  void fill(const std::vector<int>& faces, Candidate& candidate) const
+  {
+    candidate.side.assign((static_cast<std::size_t>(this->Graph.faceCount()) + 63) / 64, 0);
+    Vector3 low = this->Graph.centroid(faces.front()), high = low;
+    candidate.centroid.setZero();
+    double area = 0.0;
+    for (int f : faces)
+    {
+      candidate.side[static_cast<std::size_t>(f) / 64] |= std::uint64_t(1) << (f % 64);
+      candidate.centroid += this->Graph.area(f) * this->Graph.centroid(f);
+      area += this->Graph.area(f);
+      low = low.cwiseMin(this->Graph.centroid(f));
+      high = high.cwiseMax(this->Graph.centroid(f));
+    }
+    candidate.centroid /= std::max(area, std::numeric_limits<double>::min());
+    candidate.extent = (high - low).norm();
+  }
+
+  const FaceGraph& Graph;
+  std::vector<int> OnCut;
+  std::vector<int> Visited;
+  int CutStamp = 0;
+  int VisitStamp = 0;
+};
 
 ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
 {
@@ -202,10 +332,10 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
   const std::vector<std::vector<double>> potentials =
     unitPotentials(mesh, surface.laplacianWeights(weightOptions).weights, points);
 
-  const std::size_t words = (static_cast<std::size_t>(n) + 63) / 64;
   const double minimumArea = options.minimumSegmentArea * graph.totalArea();
   std::vector<Candidate> candidates;
   std::vector<double> sorted;
+  SideFinder sides(graph);
   for (std::size_t i = 0; i < points.size(); ++i)
   {
     for (std::size_t j = i + 1; j < points.size(); ++j)
@@ -214,45 +344,33 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
       const std::vector<double> field = clippedField(mesh, potentials[i], potentials[j], options.clipQuantile, sorted);
       const std::vector<double> gradient = faceGradientMagnitudes(mesh, field);
       const std::vector<IsovalueScore> scores = scoreIsovalues(mesh, field, gradient, options.isovaluesPerField);
+      // The peaks of the score along the isovalues, the strongest first (score times length^gamma).
+      std::vector<std::pair<double, std::size_t>> peaks;
       for (std::size_t s = 0; s < scores.size(); ++s)
       {
-        // Peaks of the score along the isovalues.
         const double left = s > 0 ? scores[s - 1].score : 0.0;
         const double right = s + 1 < scores.size() ? scores[s + 1].score : 0.0;
-        if (!(scores[s].score > left && scores[s].score >= right))
+        if (scores[s].score > left && scores[s].score >= right)
         {
-          continue;
+          peaks.push_back({ -scores[s].score * std::pow(scores[s].length, options.lengthExponent), s });
         }
+      }
+      std::sort(peaks.begin(), peaks.end());
+      peaks.resize(std::min<std::size_t>(peaks.size(), static_cast<std::size_t>(options.peaksPerField)));
+      for (const auto& peak : peaks)
+      {
+        const std::size_t s = peak.second;
         const std::vector<Isoline> isolines = extractIsolines(mesh, field, scores[s].value);
         for (const Isoline& line : isolines)
         {
-          const std::vector<int> sides = labelCutSides(mesh, field, scores[s].value, { &line });
-          const int regions = *std::max_element(sides.begin(), sides.end()) + 1;
-          if (regions != 2)
-          {
-            continue; // a loop that does not split the surface (around a handle)
-          }
-          double area0 = 0.0;
-          for (int f = 0; f < n; ++f)
-          {
-            area0 += sides[f] == 0 ? graph.area(f) : 0.0;
-          }
-          const int smaller = area0 <= 0.5 * graph.totalArea() ? 0 : 1;
           Candidate candidate;
-          candidate.sideArea = smaller == 0 ? area0 : graph.totalArea() - area0;
-          if (candidate.sideArea < minimumArea)
+          if (!sides.smallerSide(field, scores[s].value, line, candidate) ||
+            candidate.sideArea < minimumArea)
           {
             continue;
           }
-          candidate.side.assign(words, 0);
-          for (int f = 0; f < n; ++f)
-          {
-            if (sides[f] == smaller)
-            {
-              candidate.side[static_cast<std::size_t>(f) / 64] |= std::uint64_t(1) << (f % 64);
-            }
-          }
-          candidate.score = isolineScore({ line }, gradient);
+          // Unit current: score x length is the cut's mean resistance per unit length.
+          candidate.score = isolineScore({ line }, gradient) * std::pow(line.length, options.lengthExponent);
           candidate.field = fieldIndex;
           candidates.push_back(std::move(candidate));
         }
@@ -275,6 +393,7 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
       const Candidate& r = candidates[cut.representative];
       const double tolerance = options.sameCutTolerance * std::min(r.sideArea, candidate.sideArea);
       if (std::abs(r.sideArea - candidate.sideArea) <= tolerance &&
+        (r.centroid - candidate.centroid).norm() <= options.sameCutTolerance * std::max(r.extent, candidate.extent) &&
         symmetricDifferenceArea(r.side, candidate.side, graph.areas()) <= tolerance)
       {
         home = &cut;
@@ -293,7 +412,8 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
   }
   for (ConsensusCut& cut : cuts)
   {
-    cut.rank = cut.bestScore * std::pow(static_cast<double>(cut.fields.size()), options.voteExponent);
+    cut.rank = cut.bestScore * std::pow(static_cast<double>(cut.fields.size()), options.voteExponent) *
+      std::pow(candidates[cut.representative].sideArea / graph.totalArea(), options.areaExponent);
   }
   std::stable_sort(cuts.begin(), cuts.end(), [](const ConsensusCut& a, const ConsensusCut& b) { return a.rank > b.rank; });
   result.consensusCuts = static_cast<int>(cuts.size());

@@ -17,12 +17,14 @@ struct ConsensusCutOptions
   /// drops fastest across concave creases, so its isolines gather there.
   LaplacianWeighting weighting = LaplacianWeighting::ConcavityAware;
   /// Feature points: k + this many, found by farthest-point sampling along the edges (the first
-  /// ones are the shape's extremities). Default 4.
-  int extraFeaturePoints = 4;
-  /// Never more feature points than this (every pair gives a field). Default 16.
-  int maximumFeaturePoints = 16;
+  /// ones are the shape's extremities). Default 8.
+  int extraFeaturePoints = 8;
+  /// Never more feature points than this (every pair gives a field). Default 20.
+  int maximumFeaturePoints = 20;
   /// Isovalues sampled in each field (ROI Scissor's score for each). Default 48.
   int isovaluesPerField = 48;
+  /// Score peaks taken from each field, the strongest first. Default 4.
+  int peaksPerField = 4;
   /// Each field is clipped to these quantiles of its vertex values, below and above, so that
   /// the logarithmic peaks at its two feature points do not take the isovalues. Default 0.02.
   double clipQuantile = 0.02;
@@ -30,8 +32,16 @@ struct ConsensusCutOptions
   /// of the smaller of the two areas. Default 0.3.
   double sameCutTolerance = 0.3;
   /// A cut is refused when it would leave a segment smaller than this fraction of the area.
-  /// Default 0.002.
-  double minimumSegmentArea = 0.002;
+  /// Default 0.01.
+  double minimumSegmentArea = 0.01;
+  /// A candidate's score is ROI Scissor's isoline score times (isoline length)^this. With unit
+  /// current the score alone is the inverse of the cut's conductance, high on thin parts as well
+  /// as on concave creases; times the length it is the mean resistance per unit length, which
+  /// only concavity raises. Default 0.5, between the two.
+  double lengthExponent = 0.5;
+  /// ... and times (the area it splits off / the total area)^this, so that parts of the size
+  /// people name come before small tips. Default 0.25.
+  double areaExponent = 0.25;
   /// A consensus cut ranks by its best score times (fields that found it)^this. Default 0.5.
   double voteExponent = 0.5;
 };
