@@ -6,6 +6,8 @@
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkFieldData.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
@@ -17,6 +19,7 @@
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <new>
@@ -234,6 +237,19 @@ void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, doub
   {
     throw Error(message);
   }
+}
+
+void AddSegmentLabels(const SurfaceInput& surface, vtkPolyData* output, const char* name, const std::vector<int>& labels)
+{
+  std::vector<int> perCell(static_cast<std::size_t>(output->GetNumberOfCells()), -1);
+  const std::vector<vtkIdType>& source = surface.SourceCells();
+  for (std::size_t t = 0; t < labels.size(); ++t)
+  {
+    perCell[surface.Rebuilt() ? t : static_cast<std::size_t>(source[t])] = labels[t];
+  }
+  output->GetCellData()->AddArray(MakeIntArray(name, perCell));
+  const int count = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
+  output->GetFieldData()->AddArray(MakeFieldValue("SegmentCount", count));
 }
 
 vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value)

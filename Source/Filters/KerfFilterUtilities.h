@@ -78,6 +78,10 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::st
 /// A named int array holding `values`.
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
 
+/// Adds per-triangle segment labels to `output` (made by surface.MakeOutput) as the int cell
+/// array `name`, and the field value "SegmentCount".
+void AddSegmentLabels(const SurfaceInput& surface, vtkPolyData* output, const char* name, const std::vector<int>& labels);
+
 /// "factorization", "update" or "back-substitution".
 std::string SolverWorkName(HarmonicFieldSolution::Work work);
 

@@ -198,6 +198,7 @@ public:
     : Graph(graph)
     , OnCut(graph.faceCount(), 0)
     , Visited(graph.faceCount(), 0)
+    , Owner(graph.faceCount(), 0)
   {
   }
 
@@ -248,6 +249,8 @@ public:
     std::array<double, 2> areas{ { 0.0, 0.0 } };
     this->Visited[first] = stamp;
     this->Visited[second] = stamp;
+    this->Owner[first] = 0;
+    this->Owner[second] = 1;
     const double half = 0.5 * this->Graph.totalArea();
     for (int turn = 0;; turn = 1 - turn)
     {
@@ -272,16 +275,21 @@ public:
           continue;
         }
         const int g = this->Graph.opposite(e, f);
-        if (this->Visited[g] == stamp)
-        {
-          continue;
-        }
         const bool cutHere = this->OnCut[f] == this->CutStamp || this->OnCut[g] == this->CutStamp;
         if (cutHere && upper(g) != fUpper)
         {
           continue;
         }
+        if (this->Visited[g] == stamp)
+        {
+          if (this->Owner[g] != turn)
+          {
+            return false; // the two sides meet: the cut does not split the surface
+          }
+          continue;
+        }
         this->Visited[g] = stamp;
+        this->Owner[g] = static_cast<char>(turn);
         queue.push_back(g);
       }
     }
@@ -309,6 +317,7 @@ private:
   const FaceGraph& Graph;
   std::vector<int> OnCut;
   std::vector<int> Visited;
+  std::vector<char> Owner;
   int CutStamp = 0;
   int VisitStamp = 0;
 };
