@@ -1,6 +1,7 @@
 // What every Kerf filter's RequestData shares: the exception border, input arrays and points, output helpers.
 #pragma once
 
+#include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/TriangleMesh.h"
@@ -45,6 +46,9 @@ void CheckDifferentNames(const char* a, const char* b, const std::string& what);
 
 /// `value` if it is a number; throws naming the parameter for NaN.
 double Finite(double value, const char* parameter);
+/// A stroke's iso-value I: finite, and small enough that I + 1 and I - 1 differ from it (the
+/// values of its two sides); throws otherwise.
+double StrokeIsoValue(double value);
 /// A distance given as a fraction of the bounding-box diagonal, in length units; 0 stays 0 (no
 /// limit). Throws for NaN.
 double RelativeDistance(double fraction, double diagonal, const char* parameter);
@@ -62,6 +66,29 @@ std::vector<double> ReadInputArray(
 /// input are selected with SetInputArrayToProcess and read with ReadInputArray; arrays of other
 /// inputs are named, see vtkHarmonicField.)
 std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner);
+
+/// The stroke points a filter's panel sets (ParaView's interactive polyline), one stroke. A count
+/// or an index beyond MaximumCount is refused before anything is allocated.
+class StrokePointList
+{
+public:
+  static constexpr int MaximumCount = 10000000;
+  /// These set the list; true when it changed. Throw kerf::Error for an absurd count or index.
+  bool SetCount(int count);
+  bool Set(int index, const Vector3& point);
+  int Count() const { return static_cast<int>(this->List.size()); }
+  const std::vector<Vector3>& Points() const { return this->List; }
+
+private:
+  std::vector<Vector3> List;
+};
+
+/// The strokes of a filter with strokes as polylines on input 1 or, without it, in its panel:
+/// the polylines, else the panel's points as one stroke, each moved to the nearest point of the
+/// surface (the panel's first points come from the input's bounds, not from the surface);
+/// throws when there is no stroke.
+std::vector<std::vector<Vector3>> ReadStrokes(
+  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface);
 
 /// The coordinates of a point set's points.
 std::vector<Vector3> ReadPoints(vtkPointSet* points);
@@ -81,6 +108,14 @@ vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vect
 /// Adds per-triangle segment labels to `output` (made by surface.MakeOutput) as the int cell
 /// array `name`, and the field value "SegmentCount".
 void AddSegmentLabels(const SurfaceInput& surface, vtkPolyData* output, const char* name, const std::vector<int>& labels);
+
+/// A cut's chosen isoline components as polylines (closed ones closed) with the cell arrays
+/// IsoValue, Score, Length and Closed.
+void WriteCutLines(const CutResult& cut, vtkPolyData* lines);
+
+/// A solved field on the output: the point array `name` (its active scalars) and the field data
+/// RelativeResidual and SolverWork.
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output);
 
 /// "factorization", "update" or "back-substitution".
 std::string SolverWorkName(HarmonicFieldSolution::Work work);

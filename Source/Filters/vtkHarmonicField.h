@@ -71,6 +71,21 @@ public:
   void SetWeightingToSmoothConcavity() { this->SetWeighting(SMOOTH_CONCAVITY); }
   ///@}
 
+  enum Formulations
+  {
+    POINT_VALUES = 0,
+    LEAST_SQUARES = 1
+  };
+
+  ///@{
+  /// How the soft constraints shape the field. LEAST_SQUARES (default): SeamCut's least squares,
+  /// the squared Laplacian factored, the cut that follows the user's strokes most closely.
+  /// POINT_VALUES: the field harmonic away from the constraint points and equal to their values
+  /// there; the plain Laplacian factored, about three times faster on a fresh mesh.
+  vtkSetClampMacro(Formulation, int, POINT_VALUES, LEAST_SQUARES);
+  vtkGetMacro(Formulation, int);
+  ///@}
+
   ///@{
   /// beta on edges touching a concave vertex (CONCAVITY_AWARE). Default 0.01 (Au et al.).
   vtkSetClampMacro(ConcaveBeta, double, 1e-6, 1.0);
@@ -143,6 +158,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int Weighting = COTANGENT;
+  int Formulation = LEAST_SQUARES;
   double ConcaveBeta = 0.01;
   double ConcavityQuantile = 1.0;
   double SoftConstraintWeight = 1.0;

@@ -46,6 +46,23 @@ class KerfPluginTest(unittest.TestCase):
             self.assertEqual(information.GetNumberOfPoints(), 9770)
             self.assertEqual(information.GetNumberOfCells(), 19536)
 
+    def test_cut_from_stroke_applies_at_once(self):
+        """A first-time user adds Cut From Stroke to the camel and presses Apply: the stroke
+        starts across the middle of the surface, so a cut comes out without any error."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        cut = simple.CutFromStroke(Input=camel)
+        points = list(cut.StrokePoints)
+        bounds = camel.GetDataInformation().GetBounds()
+        self.assertEqual(len(points), 6)
+        self.assertEqual(points[0], bounds[0])
+        self.assertEqual(points[3], bounds[1])
+        cut.UpdatePipeline()  # an error would print "ERROR:", which fails the test
+        segments = vtk_to_numpy(servermanager.Fetch(cut).GetCellData().GetArray("Segment"))
+        self.assertEqual(len(segments), 19536)
+        self.assertGreaterEqual(segments.max(), 1)
+        self.assertGreaterEqual(servermanager.Fetch(cut, idx=1).GetNumberOfLines(), 1)
+
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}
         for name, definition in proxy_definitions("filters"):

@@ -98,6 +98,7 @@ HarmonicFieldSolution HarmonicCutSession::solve(FieldConstraints constraints, co
 {
   const LaplacianWeightSet& weights = this->surface().laplacianWeights(options.weights);
   constraints.softWeight = options.softWeight * weights.meanDiagonal;
+  constraints.formulation = options.formulation;
   return this->Solver.solve(this->mesh(), weights.weights, constraints);
 }
 

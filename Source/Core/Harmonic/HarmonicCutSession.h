@@ -29,6 +29,8 @@ struct HarmonicFieldOptions
   LaplacianWeightOptions weights;
   /// Weight w of the soft constraints, relative to the Laplacian's mean diagonal entry.
   double softWeight = 1.0;
+  /// How the soft constraints shape the field.
+  SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
 };
 
 /// How the cut is chosen among the field's isolines.
