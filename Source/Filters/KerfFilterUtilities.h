@@ -17,6 +17,7 @@
 class vtkAbstractArray;
 class vtkAlgorithm;
 class vtkDataArray;
+class vtkFieldData;
 class vtkInformation;
 class vtkInformationVector;
 class vtkPointSet;
@@ -105,9 +106,13 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::st
 /// A named int array holding `values`.
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
 
-/// Adds per-triangle segment labels to `output` (made by surface.MakeOutput) as the int cell
-/// array `name`, and the field value "SegmentCount".
-void AddSegmentLabels(const SurfaceInput& surface, vtkPolyData* output, const char* name, const std::vector<int>& labels);
+/// The body of an automatic-segmentation filter: checks `arrayName`, loads `input` into `surface`
+/// (validated against `requirements`), copies it to `output` with its arrays, runs `segment` (which
+/// returns one label per triangle and may add its figures to the output's field data) and writes
+/// the labels as the int cell array `arrayName` and their count as the field value SegmentCount.
+void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
+  const char* arrayName, const MeshRequirements& requirements,
+  const std::function<std::vector<int>(const Surface&, vtkFieldData*)>& segment);
 
 /// A cut's chosen isoline components as polylines (closed ones closed) with the cell arrays
 /// IsoValue, Score, Length and Closed.

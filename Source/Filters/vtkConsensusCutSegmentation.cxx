@@ -6,7 +6,6 @@
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
-#include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -34,27 +33,18 @@ vtkConsensusCutSegmentation::~vtkConsensusCutSegmentation()
 int vtkConsensusCutSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Consensus Cut Segmentation", [&]() {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::CheckOutputNames({ this->SegmentArrayName });
-    kerf::MeshRequirements requirements;
-    requirements.manifold = true;
-    requirements.consistentOrientation = true;
-    requirements.allowBoundary = true;
-    requirements.allowSeveralComponents = true;
-    kerf::LoadSurface(this->State->surface, input, requirements);
-    const kerf::Surface& surface = this->State->surface.GetSurface();
-
-    this->State->surface.MakeOutput(input, output);
-    std::vector<int> labels;
-    kerf::ConsensusCutOptions options;
-    options.extraFeaturePoints = this->ExtraFeaturePoints;
-    options.maximumFeaturePoints = this->MaximumFeaturePoints;
-    options.minimumSegmentArea = kerf::Finite(this->MinimumSegmentArea, "MinimumSegmentArea");
-    const kerf::ConsensusCutResult result = kerf::segmentByConsensusCuts(surface, this->SegmentCount, options);
-    labels = result.labels;
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("ChosenCuts", result.chosenCuts));
-    kerf::AddSegmentLabels(this->State->surface, output, this->SegmentArrayName, labels);
+    const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
+    kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
+      vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
+      [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
+      kerf::ConsensusCutOptions options;
+      options.extraFeaturePoints = this->ExtraFeaturePoints;
+      options.maximumFeaturePoints = this->MaximumFeaturePoints;
+      options.minimumSegmentArea = kerf::Finite(this->MinimumSegmentArea, "MinimumSegmentArea");
+      const kerf::ConsensusCutResult result = kerf::segmentByConsensusCuts(surface, this->SegmentCount, options);
+      fieldData->AddArray(kerf::MakeFieldValue("ChosenCuts", result.chosenCuts));
+      return result.labels;
+      });
   });
 }
 

@@ -1,17 +1,23 @@
 // vtkConsensusCutSegmentation: Automatic segmentation into k parts by the cuts many concavity-aware harmonic fields agree on.
 /**
  * @class vtkConsensusCutSegmentation
- * @brief Consensus Cut Segmentation: Automatic segmentation into k parts by the cuts many concavity-aware harmonic fields agree on.
+ * @brief Consensus Cut Segmentation: Automatic segmentation into k parts by the cuts many
+ * concavity-aware harmonic fields agree on.
  *
- * Feature points by farthest-point sampling; one factorization of the concavity-aware Laplacian gives every pair of feature points a unit-current harmonic field; the isolines at the peaks of ROI Scissor's score are candidate cuts; candidates that split the surface alike are one consensus cut, ranked by score and by how many fields found it; the best k - 1 compatible cuts make the segments.
+ * Feature points by farthest-point sampling; one factorization of the concavity-aware Laplacian
+ * gives every pair of feature points a unit-current harmonic field; the isolines at the peaks of
+ * ROI Scissor's score are candidate cuts; candidates that split the surface alike are one consensus
+ * cut, ranked by score and by how many fields found it; the best k - 1 compatible cuts make the
+ * segments.
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
  * "SegmentCount" and the method's own figures.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation (NaN coordinates, triangles
- * repeating a point, non-manifold or inconsistently oriented edges), a segment count below 1 or above the
- * number of triangles, parameters out of range. Documentation/filters/ConsensusCutSegmentation.md has the details.
+ * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
+ * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
+ * orientation), a segment count below 1 or above the number of triangles, parameters out of range.
+ * Documentation/filters/AutomaticSegmentation.md has the details.
  */
 #ifndef vtkConsensusCutSegmentation_h
 #define vtkConsensusCutSegmentation_h

@@ -3,10 +3,10 @@
 
 #include "Segmentation/ConvexFlooding.h"
 #include "Error.h"
+#include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
-#include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -34,27 +34,18 @@ vtkConvexFlooding::~vtkConvexFlooding()
 int vtkConvexFlooding::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Convex Flooding", [&]() {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::CheckOutputNames({ this->SegmentArrayName });
-    kerf::MeshRequirements requirements;
-    requirements.manifold = false;
-    requirements.consistentOrientation = false;
-    requirements.allowBoundary = true;
-    requirements.allowSeveralComponents = true;
-    kerf::LoadSurface(this->State->surface, input, requirements);
-    const kerf::Surface& surface = this->State->surface.GetSurface();
-
-    this->State->surface.MakeOutput(input, output);
-    std::vector<int> labels;
-    kerf::ConvexFloodingOptions options;
-    options.angleTolerance = kerf::Finite(this->AngleTolerance, "AngleTolerance");
-    options.minimumAreaFraction = kerf::Finite(this->MinimumAreaFraction, "MinimumAreaFraction");
-    options.segmentCount = this->SegmentCount;
-    const kerf::ConvexFloodingResult result = kerf::segmentByConvexFlooding(kerf::FaceGraph(surface.mesh()), options);
-    labels = result.labels;
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("FloodedPatches", result.floodedPatches));
-    kerf::AddSegmentLabels(this->State->surface, output, this->SegmentArrayName, labels);
+    const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
+    kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
+      vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
+      [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
+      kerf::ConvexFloodingOptions options;
+      options.angleTolerance = kerf::Finite(this->AngleTolerance, "AngleTolerance");
+      options.minimumAreaFraction = kerf::Finite(this->MinimumAreaFraction, "MinimumAreaFraction");
+      options.segmentCount = this->SegmentCount;
+      const kerf::ConvexFloodingResult result = kerf::segmentByConvexFlooding(kerf::faceGraph(surface), options);
+      fieldData->AddArray(kerf::MakeFieldValue("FloodedPatches", result.floodedPatches));
+      return result.labels;
+      });
   });
 }
 

@@ -1,17 +1,22 @@
 // vtkConvexFlooding: Convex patches flooded across the dual graph (Kouhestani 2013, section 3.1).
 /**
  * @class vtkConvexFlooding
- * @brief Convex Flooding: Convex patches flooded across the dual graph (Kouhestani 2013, section 3.1).
+ * @brief Convex Flooding: Convex patches flooded across the dual graph (Kouhestani 2013, section
+ * 3.1).
  *
- * Flooding of the dual graph while the patch stays convex: a face joins when every edge it shares with the patch has an interior dihedral angle of at most pi + epsilon; global convexity failures are not tested. Patches smaller than q times the total area are then merged into their largest neighbour, and, with a segment count, on down to that many.
+ * Flooding of the dual graph while the patch stays convex: a face joins when every edge it shares
+ * with the patch has an interior dihedral angle of at most pi + epsilon; global convexity failures
+ * are not tested. Patches smaller than q times the total area are then merged into their largest
+ * neighbour, and, with a segment count, on down to that many.
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
  * "SegmentCount" and the method's own figures.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation (NaN coordinates, triangles
- * repeating a point), a segment count below 1 or above the
- * number of triangles, parameters out of range. Documentation/filters/ConvexFlooding.md has the details.
+ * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
+ * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
+ * orientation), a segment count below 1 or above the number of triangles, parameters out of range.
+ * Documentation/filters/AutomaticSegmentation.md has the details.
  */
 #ifndef vtkConvexFlooding_h
 #define vtkConvexFlooding_h

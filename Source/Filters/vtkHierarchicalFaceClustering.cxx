@@ -6,7 +6,6 @@
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
-#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
@@ -35,42 +34,34 @@ vtkHierarchicalFaceClustering::~vtkHierarchicalFaceClustering()
 int vtkHierarchicalFaceClustering::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Hierarchical Face Clustering", [&]() {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::CheckOutputNames({ this->SegmentArrayName });
-    kerf::MeshRequirements requirements;
-    requirements.manifold = false;
-    requirements.consistentOrientation = false;
-    requirements.allowBoundary = true;
-    requirements.allowSeveralComponents = true;
-    kerf::LoadSurface(this->State->surface, input, requirements);
-    const kerf::Surface& surface = this->State->surface.GetSurface();
-
-    this->State->surface.MakeOutput(input, output);
-    std::vector<int> labels;
-    kerf::HierarchicalClusteringOptions options;
-    options.directionWeight = kerf::Finite(this->DirectionWeight, "DirectionWeight");
-    options.shapeWeight = kerf::Finite(this->ShapeWeight, "ShapeWeight");
-    if (this->SegmentCount < 0)
-    {
-      throw kerf::Error("SegmentCount must be 0 (cut at MaximumError) or positive");
-    }
-    const int before = surface.computations();
-    const kerf::FaceClusterHierarchy& hierarchy = kerf::faceClusterHierarchy(surface, options);
-    const bool built = surface.computations() != before;
-    labels = this->SegmentCount > 0 ? kerf::cutHierarchyAtCount(hierarchy, this->SegmentCount)
-                                    : kerf::cutHierarchyAtError(hierarchy, kerf::Finite(this->MaximumError, "MaximumError"));
-    std::vector<int> first, second;
-    for (const auto& merge : hierarchy.merges)
-    {
-      first.push_back(merge[0]);
-      second.push_back(merge[1]);
-    }
-    output->GetFieldData()->AddArray(kerf::MakeIntArray("MergeFirst", first));
-    output->GetFieldData()->AddArray(kerf::MakeIntArray("MergeSecond", second));
-    output->GetFieldData()->AddArray(kerf::MakeArray("MergeCost", hierarchy.costs));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("Work", built ? std::string("hierarchy") : std::string("relabel")));
-    kerf::AddSegmentLabels(this->State->surface, output, this->SegmentArrayName, labels);
+    const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
+    kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
+      vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
+      [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
+      kerf::HierarchicalClusteringOptions options;
+      options.directionWeight = kerf::Finite(this->DirectionWeight, "DirectionWeight");
+      options.shapeWeight = kerf::Finite(this->ShapeWeight, "ShapeWeight");
+      if (this->SegmentCount < 0)
+      {
+        throw kerf::Error("SegmentCount must be 0 (cut at MaximumError) or positive");
+      }
+      const int before = surface.computations();
+      const kerf::FaceClusterHierarchy& hierarchy = kerf::faceClusterHierarchy(surface, options);
+      const bool built = surface.computations() != before;
+      std::vector<int> first, second;
+      for (const auto& merge : hierarchy.merges)
+      {
+        first.push_back(merge[0]);
+        second.push_back(merge[1]);
+      }
+      fieldData->AddArray(kerf::MakeIntArray("MergeFirst", first));
+      fieldData->AddArray(kerf::MakeIntArray("MergeSecond", second));
+      fieldData->AddArray(kerf::MakeArray("MergeCost", hierarchy.costs));
+      fieldData->AddArray(kerf::MakeFieldValue("Work", built ? std::string("hierarchy") : std::string("relabel")));
+      return this->SegmentCount > 0
+        ? kerf::cutHierarchyAtCount(hierarchy, this->SegmentCount)
+        : kerf::cutHierarchyAtError(hierarchy, kerf::Finite(this->MaximumError, "MaximumError"));
+      });
   });
 }
 

@@ -1,17 +1,23 @@
 // vtkHierarchicalFaceClustering: Garland et al. 2001 face clusters by dual-edge contraction, cut at k clusters or an error.
 /**
  * @class vtkHierarchicalFaceClustering
- * @brief Hierarchical Face Clustering: Garland et al. 2001 face clusters by dual-edge contraction, cut at k clusters or an error.
+ * @brief Hierarchical Face Clustering: Garland et al. 2001 face clusters by dual-edge contraction,
+ * cut at k clusters or an error.
  *
- * Every face starts as a cluster; the dual edge with the smallest contraction cost E = E_fit + a1 E_dir + a2 E_shape (fit and direction quadrics, irregularity) is contracted until one cluster per component remains. The merge tree is an output (field data MergeFirst, MergeSecond, MergeCost: merge i joins two nodes into node n + i) and is cached: a new segment count or error only relabels (field data Work = relabel).
+ * Every face starts as a cluster; the dual edge with the smallest contraction cost E = E_fit + a1
+ * E_dir + a2 E_shape (fit and direction quadrics, irregularity) is contracted until one cluster per
+ * component remains. The merge tree is an output (field data MergeFirst, MergeSecond, MergeCost:
+ * merge i joins two nodes into node n + i) and is cached: a new segment count or error only
+ * relabels (field data Work = relabel).
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
  * "SegmentCount" and the method's own figures.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation (NaN coordinates, triangles
- * repeating a point), a segment count below 1 or above the
- * number of triangles, parameters out of range. Documentation/filters/HierarchicalFaceClustering.md has the details.
+ * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
+ * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
+ * orientation), a segment count below 1 or above the number of triangles, parameters out of range.
+ * Documentation/filters/AutomaticSegmentation.md has the details.
  */
 #ifndef vtkHierarchicalFaceClustering_h
 #define vtkHierarchicalFaceClustering_h

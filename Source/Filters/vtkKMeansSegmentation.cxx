@@ -3,10 +3,10 @@
 
 #include "Segmentation/KMeansSegmentation.h"
 #include "Error.h"
+#include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
-#include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -33,28 +33,19 @@ vtkKMeansSegmentation::~vtkKMeansSegmentation()
 
 int vtkKMeansSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return kerf::RunGuarded(this, "Cannot segment with KMeans Segmentation", [&]() {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::CheckOutputNames({ this->SegmentArrayName });
-    kerf::MeshRequirements requirements;
-    requirements.manifold = false;
-    requirements.consistentOrientation = false;
-    requirements.allowBoundary = true;
-    requirements.allowSeveralComponents = true;
-    kerf::LoadSurface(this->State->surface, input, requirements);
-    const kerf::Surface& surface = this->State->surface.GetSurface();
-
-    this->State->surface.MakeOutput(input, output);
-    std::vector<int> labels;
-    kerf::KMeansSegmentationOptions options;
-    options.physicalWeight = kerf::Finite(this->PhysicalWeight, "PhysicalWeight");
-    options.maximumIterations = this->MaximumIterations;
-    const kerf::KMeansSegmentationResult result =
-      kerf::segmentByKMeans(kerf::FaceGraph(surface.mesh()), this->SegmentCount, options);
-    labels = result.labels;
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("Iterations", result.iterations));
-    kerf::AddSegmentLabels(this->State->surface, output, this->SegmentArrayName, labels);
+  return kerf::RunGuarded(this, "Cannot segment with K-Means Segmentation", [&]() {
+    const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
+    kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
+      vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
+      [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
+      kerf::KMeansSegmentationOptions options;
+      options.physicalWeight = kerf::Finite(this->PhysicalWeight, "PhysicalWeight");
+      options.maximumIterations = this->MaximumIterations;
+      const kerf::KMeansSegmentationResult result =
+        kerf::segmentByKMeans(kerf::faceGraph(surface), this->SegmentCount, options);
+      fieldData->AddArray(kerf::MakeFieldValue("Iterations", result.iterations));
+      return result.labels;
+      });
   });
 }
 

@@ -3,15 +3,19 @@
  * @class vtkKMeansSegmentation
  * @brief KMeans Segmentation: Shlafman et al. 2002 k-means face clustering on the dual graph.
  *
- * Representatives start at the face nearest the centroid and then the faces farthest on average from those chosen; faces are assigned by a multi-source Dijkstra on the dual graph with the distance (1 - delta)(1 - cos^2 alpha) + delta Phys, and each patch re-elects the face nearest its centroid until nothing changes.
+ * Representatives start at the face nearest the centroid and then the faces farthest on average
+ * from those chosen; faces are assigned by a multi-source Dijkstra on the dual graph with the
+ * distance (1 - delta)(1 - cos^2 alpha) + delta Phys, and each patch re-elects the face nearest its
+ * centroid until nothing changes.
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
  * "SegmentCount" and the method's own figures.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation (NaN coordinates, triangles
- * repeating a point), a segment count below 1 or above the
- * number of triangles, parameters out of range. Documentation/filters/KMeansSegmentation.md has the details.
+ * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
+ * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
+ * orientation), a segment count below 1 or above the number of triangles, parameters out of range.
+ * Documentation/filters/AutomaticSegmentation.md has the details.
  */
 #ifndef vtkKMeansSegmentation_h
 #define vtkKMeansSegmentation_h

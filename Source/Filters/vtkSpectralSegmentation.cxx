@@ -3,10 +3,10 @@
 
 #include "Segmentation/SpectralSegmentation.h"
 #include "Error.h"
+#include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
-#include <vtkCellData.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -34,28 +34,19 @@ vtkSpectralSegmentation::~vtkSpectralSegmentation()
 int vtkSpectralSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Spectral Segmentation", [&]() {
-    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::CheckOutputNames({ this->SegmentArrayName });
-    kerf::MeshRequirements requirements;
-    requirements.manifold = false;
-    requirements.consistentOrientation = false;
-    requirements.allowBoundary = true;
-    requirements.allowSeveralComponents = true;
-    kerf::LoadSurface(this->State->surface, input, requirements);
-    const kerf::Surface& surface = this->State->surface.GetSurface();
-
-    this->State->surface.MakeOutput(input, output);
-    std::vector<int> labels;
-    kerf::SpectralSegmentationOptions options;
-    options.geodesicWeight = kerf::Finite(this->GeodesicWeight, "GeodesicWeight");
-    options.convexAngleWeight = kerf::Finite(this->ConvexAngleWeight, "ConvexAngleWeight");
-    options.patchCount = this->PatchCount;
-    const kerf::SpectralSegmentationResult result =
-      kerf::segmentSpectrally(kerf::FaceGraph(surface.mesh()), this->SegmentCount, options);
-    labels = result.labels;
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("Patches", result.patches));
-    kerf::AddSegmentLabels(this->State->surface, output, this->SegmentArrayName, labels);
+    const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
+    kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
+      vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
+      [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
+      kerf::SpectralSegmentationOptions options;
+      options.geodesicWeight = kerf::Finite(this->GeodesicWeight, "GeodesicWeight");
+      options.convexAngleWeight = kerf::Finite(this->ConvexAngleWeight, "ConvexAngleWeight");
+      options.patchCount = this->PatchCount;
+      const kerf::SpectralSegmentationResult result =
+        kerf::segmentSpectrally(kerf::faceGraph(surface), this->SegmentCount, options);
+      fieldData->AddArray(kerf::MakeFieldValue("Patches", result.patches));
+      return result.labels;
+      });
   });
 }
 

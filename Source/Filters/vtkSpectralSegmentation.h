@@ -1,17 +1,22 @@
 // vtkSpectralSegmentation: Liu and Zhang 2004 spectral clustering of faces, on a coarsened patch graph.
 /**
  * @class vtkSpectralSegmentation
- * @brief Spectral Segmentation: Liu and Zhang 2004 spectral clustering of faces, on a coarsened patch graph.
+ * @brief Spectral Segmentation: Liu and Zhang 2004 spectral clustering of faces, on a coarsened
+ * patch graph.
  *
- * The faces are first grouped into patches by hierarchical face clustering; the dense affinity exp(-Dist / 2 sigma^2) of geodesic and angular distance is formed on the patches, normalised, and its k leading eigenvectors embed the patches on a sphere where k-means clusters them; each face takes its patch's segment.
+ * The faces are first grouped into patches by hierarchical face clustering; the dense affinity
+ * exp(-Dist / 2 sigma^2) of geodesic and angular distance is formed on the patches, normalised, and
+ * its k leading eigenvectors embed the patches on a sphere where k-means clusters them; each face
+ * takes its patch's segment.
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
  * "SegmentCount" and the method's own figures.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation (NaN coordinates, triangles
- * repeating a point), a segment count below 1 or above the
- * number of triangles, parameters out of range. Documentation/filters/SpectralSegmentation.md has the details.
+ * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
+ * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
+ * orientation), a segment count below 1 or above the number of triangles, parameters out of range.
+ * Documentation/filters/AutomaticSegmentation.md has the details.
  */
 #ifndef vtkSpectralSegmentation_h
 #define vtkSpectralSegmentation_h

@@ -2,6 +2,7 @@
 #include "Segmentation/FaceGraph.h"
 
 #include "Error.h"
+#include "Session/Surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -58,8 +59,8 @@ FaceGraph::FaceGraph(const TriangleMesh& mesh)
     {
       dual.normalCosine = std::clamp(na.dot(nb), -1.0, 1.0);
       const double angle = std::atan2(na.cross(nb).norm(), na.dot(nb));
-      // Convex where each face's neighbour lies below its plane.
-      const double side = (this->Centroids[fb] - this->Centroids[fa]).dot(na) -
+      // Convex where each face's neighbour lies below its plane (both terms negative).
+      const double side = (this->Centroids[fb] - this->Centroids[fa]).dot(na) +
         (this->Centroids[fa] - this->Centroids[fb]).dot(nb);
       dual.bend = side > 0.0 ? -angle : angle;
     }
@@ -105,6 +106,11 @@ FaceGraph::FaceGraph(const TriangleMesh& mesh)
     }
     ++this->ComponentCount;
   }
+}
+
+const FaceGraph& faceGraph(const Surface& surface)
+{
+  return surface.derived<FaceGraph>("face-graph", [&surface]() { return FaceGraph(surface.mesh()); });
 }
 
 void checkSegmentCount(int k, int faceCount)

@@ -10,6 +10,8 @@
 namespace kerf
 {
 
+class Surface;
+
 /// One edge of the dual graph: two faces sharing a manifold mesh edge.
 struct DualEdge
 {
@@ -68,6 +70,9 @@ private:
   int ComponentCount = 0;
   std::vector<int> Components;
 };
+
+/// The dual graph of a surface's mesh, built on first use and cached on it (Surface::derived).
+const FaceGraph& faceGraph(const Surface& surface);
 
 /// Throws kerf::Error unless 1 <= k <= the number of faces (a method asked for k segments).
 void checkSegmentCount(int k, int faceCount);

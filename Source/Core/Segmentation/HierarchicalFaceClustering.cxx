@@ -279,7 +279,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
 const FaceClusterHierarchy& faceClusterHierarchy(const Surface& surface, const HierarchicalClusteringOptions& options)
 {
   return surface.derived<FaceClusterHierarchy>("face-cluster-hierarchy:" + cacheKey(options),
-    [&]() { return buildFaceClusterHierarchy(FaceGraph(surface.mesh()), options); });
+    [&]() { return buildFaceClusterHierarchy(faceGraph(surface), options); });
 }
 
 std::vector<int> cutHierarchyAtCount(const FaceClusterHierarchy& hierarchy, int k)
