@@ -2,7 +2,6 @@
 #include "vtkConsensusCutSegmentation.h"
 
 #include "Segmentation/ConsensusCutSegmentation.h"
-#include "Error.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -30,20 +29,21 @@ vtkConsensusCutSegmentation::~vtkConsensusCutSegmentation()
   this->SetSegmentArrayName(nullptr);
 }
 
-int vtkConsensusCutSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkConsensusCutSegmentation::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Consensus Cut Segmentation", [&]() {
     const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
     kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
       vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
       [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
-      kerf::ConsensusCutOptions options;
-      options.extraFeaturePoints = this->ExtraFeaturePoints;
-      options.maximumFeaturePoints = this->MaximumFeaturePoints;
-      options.minimumSegmentArea = kerf::Finite(this->MinimumSegmentArea, "MinimumSegmentArea");
-      const kerf::ConsensusCutResult result = kerf::segmentByConsensusCuts(surface, this->SegmentCount, options);
-      fieldData->AddArray(kerf::MakeFieldValue("ChosenCuts", result.chosenCuts));
-      return result.labels;
+        kerf::ConsensusCutOptions options;
+        options.extraFeaturePoints = this->ExtraFeaturePoints;
+        options.maximumFeaturePoints = this->MaximumFeaturePoints;
+        options.minimumSegmentArea = kerf::Finite(this->MinimumSegmentArea, "MinimumSegmentArea");
+        const kerf::ConsensusCutResult result = kerf::segmentByConsensusCuts(surface, this->SegmentCount, options);
+        fieldData->AddArray(kerf::MakeFieldValue("ChosenCuts", result.chosenCuts));
+        return result.labels;
       });
   });
 }

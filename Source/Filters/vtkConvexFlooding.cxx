@@ -2,7 +2,6 @@
 #include "vtkConvexFlooding.h"
 
 #include "Segmentation/ConvexFlooding.h"
-#include "Error.h"
 #include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
@@ -31,20 +30,21 @@ vtkConvexFlooding::~vtkConvexFlooding()
   this->SetSegmentArrayName(nullptr);
 }
 
-int vtkConvexFlooding::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkConvexFlooding::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Convex Flooding", [&]() {
     const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
     kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
       vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
       [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
-      kerf::ConvexFloodingOptions options;
-      options.angleTolerance = kerf::Finite(this->AngleTolerance, "AngleTolerance");
-      options.minimumAreaFraction = kerf::Finite(this->MinimumAreaFraction, "MinimumAreaFraction");
-      options.segmentCount = this->SegmentCount;
-      const kerf::ConvexFloodingResult result = kerf::segmentByConvexFlooding(kerf::faceGraph(surface), options);
-      fieldData->AddArray(kerf::MakeFieldValue("FloodedPatches", result.floodedPatches));
-      return result.labels;
+        kerf::ConvexFloodingOptions options;
+        options.angleTolerance = kerf::Finite(this->AngleTolerance, "AngleTolerance");
+        options.minimumAreaFraction = kerf::Finite(this->MinimumAreaFraction, "MinimumAreaFraction");
+        options.segmentCount = this->SegmentCount;
+        const kerf::ConvexFloodingResult result = kerf::segmentByConvexFlooding(kerf::faceGraph(surface), options);
+        fieldData->AddArray(kerf::MakeFieldValue("FloodedPatches", result.floodedPatches));
+        return result.labels;
       });
   });
 }

@@ -2,7 +2,6 @@
 #include "vtkKMeansSegmentation.h"
 
 #include "Segmentation/KMeansSegmentation.h"
-#include "Error.h"
 #include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
@@ -31,20 +30,21 @@ vtkKMeansSegmentation::~vtkKMeansSegmentation()
   this->SetSegmentArrayName(nullptr);
 }
 
-int vtkKMeansSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkKMeansSegmentation::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with K-Means Segmentation", [&]() {
     const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
     kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
       vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
       [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
-      kerf::KMeansSegmentationOptions options;
-      options.physicalWeight = kerf::Finite(this->PhysicalWeight, "PhysicalWeight");
-      options.maximumIterations = this->MaximumIterations;
-      const kerf::KMeansSegmentationResult result =
-        kerf::segmentByKMeans(kerf::faceGraph(surface), this->SegmentCount, options);
-      fieldData->AddArray(kerf::MakeFieldValue("Iterations", result.iterations));
-      return result.labels;
+        kerf::KMeansSegmentationOptions options;
+        options.physicalWeight = kerf::Finite(this->PhysicalWeight, "PhysicalWeight");
+        options.maximumIterations = this->MaximumIterations;
+        const kerf::KMeansSegmentationResult result =
+          kerf::segmentByKMeans(kerf::faceGraph(surface), this->SegmentCount, options);
+        fieldData->AddArray(kerf::MakeFieldValue("Iterations", result.iterations));
+        return result.labels;
       });
   });
 }

@@ -2,7 +2,6 @@
 #include "vtkSpectralSegmentation.h"
 
 #include "Segmentation/SpectralSegmentation.h"
-#include "Error.h"
 #include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
@@ -31,21 +30,22 @@ vtkSpectralSegmentation::~vtkSpectralSegmentation()
   this->SetSegmentArrayName(nullptr);
 }
 
-int vtkSpectralSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSpectralSegmentation::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Spectral Segmentation", [&]() {
     const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
     kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
       vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
       [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
-      kerf::SpectralSegmentationOptions options;
-      options.geodesicWeight = kerf::Finite(this->GeodesicWeight, "GeodesicWeight");
-      options.convexAngleWeight = kerf::Finite(this->ConvexAngleWeight, "ConvexAngleWeight");
-      options.patchCount = this->PatchCount;
-      const kerf::SpectralSegmentationResult result =
-        kerf::segmentSpectrally(kerf::faceGraph(surface), this->SegmentCount, options);
-      fieldData->AddArray(kerf::MakeFieldValue("Patches", result.patches));
-      return result.labels;
+        kerf::SpectralSegmentationOptions options;
+        options.geodesicWeight = kerf::Finite(this->GeodesicWeight, "GeodesicWeight");
+        options.convexAngleWeight = kerf::Finite(this->ConvexAngleWeight, "ConvexAngleWeight");
+        options.patchCount = this->PatchCount;
+        const kerf::SpectralSegmentationResult result =
+          kerf::segmentSpectrally(kerf::faceGraph(surface), this->SegmentCount, options);
+        fieldData->AddArray(kerf::MakeFieldValue("Patches", result.patches));
+        return result.labels;
       });
   });
 }

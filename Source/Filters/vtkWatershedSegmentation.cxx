@@ -2,7 +2,6 @@
 #include "vtkWatershedSegmentation.h"
 
 #include "Segmentation/WatershedSegmentation.h"
-#include "Error.h"
 #include "Segmentation/FaceGraph.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
@@ -31,19 +30,20 @@ vtkWatershedSegmentation::~vtkWatershedSegmentation()
   this->SetSegmentArrayName(nullptr);
 }
 
-int vtkWatershedSegmentation::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkWatershedSegmentation::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot segment with Watershed Segmentation", [&]() {
     const kerf::MeshRequirements requirements; // edge-manifold, consistently oriented
     kerf::SegmentSurface(this, this->State->surface, vtkPolyData::GetData(inputVector[0], 0),
       vtkPolyData::GetData(outputVector, 0), this->SegmentArrayName, requirements,
       [this](const kerf::Surface& surface, vtkFieldData* fieldData) {
-      kerf::WatershedOptions options;
-      options.depthThreshold = kerf::Finite(this->DepthThreshold, "DepthThreshold");
-      options.segmentCount = this->SegmentCount;
-      const kerf::WatershedResult result = kerf::segmentByWatershed(kerf::faceGraph(surface), options);
-      fieldData->AddArray(kerf::MakeFieldValue("Basins", result.basins));
-      return result.labels;
+        kerf::WatershedOptions options;
+        options.depthThreshold = kerf::Finite(this->DepthThreshold, "DepthThreshold");
+        options.segmentCount = this->SegmentCount;
+        const kerf::WatershedResult result = kerf::segmentByWatershed(kerf::faceGraph(surface), options);
+        fieldData->AddArray(kerf::MakeFieldValue("Basins", result.basins));
+        return result.labels;
       });
   });
 }
