@@ -2,6 +2,7 @@
 #include "KerfFilterUtilities.h"
 
 #include "Error.h"
+#include "Geodesic/SurfaceLocation.h"
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
 
@@ -318,6 +319,29 @@ std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::s
   return polylines;
 }
 
+std::vector<SurfaceCurve> PlaceLinesOnSurface(
+  const Surface& surface, vtkPolyData* lines, double maximumDistance, const std::string& owner)
+{
+  std::vector<SurfaceCurve> curves;
+  std::vector<std::vector<Vector3>> polylines = ReadPolylines(lines, owner);
+  for (std::size_t i = 0; i < polylines.size(); ++i)
+  {
+    std::vector<Vector3>& points = polylines[i];
+    const bool closed = points.size() > 2 && points.front() == points.back();
+    if (closed)
+    {
+      points.pop_back();
+    }
+    curves.push_back(
+      placeCurveOnSurface(surface, points, closed, maximumDistance, owner + " line " + std::to_string(i)));
+  }
+  if (curves.empty())
+  {
+    throw Error(owner + " holds no line");
+  }
+  return curves;
+}
+
 void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, double scalar, const std::string& message)
 {
   bool finite = std::isfinite(scalar);
@@ -389,40 +413,49 @@ vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vect
   return array;
 }
 
-void WriteCutLines(const CutResult& cut, vtkPolyData* lines)
+void WritePolylines(const std::vector<PolylineToWrite>& polylines, vtkPolyData* lines)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polylines;
-  std::vector<double> isoValues, lengths;
+  vtkNew<vtkCellArray> cells;
+  std::vector<double> lengths;
   std::vector<unsigned char> closed;
-  for (const Isoline& line : cut.isolines)
+  for (const PolylineToWrite& line : polylines)
   {
     const vtkIdType first = points->GetNumberOfPoints();
-    const vtkIdType count = static_cast<vtkIdType>(line.points.size());
-    for (const Vector3& p : line.points)
+    const vtkIdType count = static_cast<vtkIdType>(line.points->size());
+    for (const Vector3& p : *line.points)
     {
       points->InsertNextPoint(p.data());
     }
-    polylines->InsertNextCell(count + (line.closed ? 1 : 0));
+    cells->InsertNextCell(count + (line.closed ? 1 : 0));
     for (vtkIdType k = 0; k < count; ++k)
     {
-      polylines->InsertCellPoint(first + k);
+      cells->InsertCellPoint(first + k);
     }
     if (line.closed)
     {
-      polylines->InsertCellPoint(first);
+      cells->InsertCellPoint(first);
     }
-    isoValues.push_back(cut.value);
     lengths.push_back(line.length);
     closed.push_back(line.closed ? 1 : 0);
   }
   lines->SetPoints(points);
-  lines->SetLines(polylines);
-  lines->GetCellData()->AddArray(MakeArray("IsoValue", isoValues));
-  lines->GetCellData()->AddArray(MakeArray("Score", cut.scores));
+  lines->SetLines(cells);
   lines->GetCellData()->AddArray(MakeArray("Length", lengths));
   lines->GetCellData()->AddArray(MakeArray("Closed", closed));
+}
+
+void WriteCutLines(const CutResult& cut, vtkPolyData* lines)
+{
+  std::vector<PolylineToWrite> polylines;
+  for (const Isoline& line : cut.isolines)
+  {
+    polylines.push_back({ &line.points, line.closed, line.length });
+  }
+  WritePolylines(polylines, lines);
+  lines->GetCellData()->AddArray(MakeArray("IsoValue", std::vector<double>(cut.isolines.size(), cut.value)));
+  lines->GetCellData()->AddArray(MakeArray("Score", cut.scores));
 }
 
 void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output)

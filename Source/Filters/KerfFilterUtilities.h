@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Harmonic/HarmonicCutSession.h"
+#include "Geodesic/SurfacePoint.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/TriangleMesh.h"
@@ -97,6 +98,12 @@ std::vector<Vector3> ReadPoints(vtkPointSet* points);
 /// that does not exist.
 std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner);
 
+/// The polylines of `lines` placed on the surface (kerf::placeCurveOnSurface), each named
+/// "<owner> line <i>" in errors; a polyline whose last point repeats its first is closed.
+/// Throws when `lines` holds no line.
+std::vector<SurfaceCurve> PlaceLinesOnSurface(
+  const Surface& surface, vtkPolyData* lines, double maximumDistance, const std::string& owner);
+
 /// Throws `message` unless every value of the vectors and `scalar` is finite.
 void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, double scalar, const std::string& message);
 
@@ -113,6 +120,17 @@ vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vect
 void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
   const char* arrayName, const MeshRequirements& requirements,
   const std::function<std::vector<int>(const Surface&, vtkFieldData*)>& segment);
+
+/// One polyline to write: its points, whether it closes, its length.
+struct PolylineToWrite
+{
+  const std::vector<Vector3>* points;
+  bool closed;
+  double length;
+};
+/// Polylines as the line cells of `lines` (a closed one repeats its first point), with the cell
+/// arrays Length and Closed.
+void WritePolylines(const std::vector<PolylineToWrite>& polylines, vtkPolyData* lines);
 
 /// A cut's chosen isoline components as polylines (closed ones closed) with the cell arrays
 /// IsoValue, Score, Length and Closed.

@@ -23,7 +23,8 @@ vtkStandardNewMacro(vtkHarmonicField);
 static_assert(static_cast<int>(kerf::LaplacianWeighting::Uniform) == vtkHarmonicField::UNIFORM &&
     static_cast<int>(kerf::LaplacianWeighting::Cotangent) == vtkHarmonicField::COTANGENT &&
     static_cast<int>(kerf::LaplacianWeighting::ConcavityAware) == vtkHarmonicField::CONCAVITY_AWARE &&
-    static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY,
+    static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY &&
+    static_cast<int>(kerf::LaplacianWeighting::IntrinsicDelaunay) == vtkHarmonicField::INTRINSIC_DELAUNAY,
   "vtkHarmonicField's Weightings follow kerf::LaplacianWeighting");
 static_assert(static_cast<int>(kerf::SoftConstraintFormulation::PointValues) == vtkHarmonicField::POINT_VALUES &&
     static_cast<int>(kerf::SoftConstraintFormulation::LeastSquares) == vtkHarmonicField::LEAST_SQUARES,

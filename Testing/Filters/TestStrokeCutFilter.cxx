@@ -24,24 +24,6 @@ namespace
 {
 constexpr double Pi = 3.14159265358979323846;
 
-// A circle of radius r at height z around the z axis, as one closed polyline.
-vtkSmartPointer<vtkPolyData> circle(double r, double z, int points)
-{
-  auto stroke = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> pts;
-  vtkNew<vtkCellArray> line;
-  line->InsertNextCell(points + 1);
-  for (int i = 0; i < points; ++i)
-  {
-    const double a = 2.0 * Pi * i / points;
-    line->InsertCellPoint(pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), z));
-  }
-  line->InsertCellPoint(0);
-  stroke->SetPoints(pts);
-  stroke->SetLines(line);
-  return stroke;
-}
-
 // Equal to `tolerance` (0: exactly).
 bool sameArrays(vtkDataArray* a, vtkDataArray* b, double tolerance = 0.0)
 {
@@ -70,7 +52,7 @@ int TestStrokeCutFilter(int, char*[])
   bool ok = true;
   // A closed tube (radius 1, height 4, capped) would need capping; an open cylinder is enough.
   vtkSmartPointer<vtkPolyData> cylinder = kerf::test::ToPolyData(kerf::makeCylinder(1.0, 4.0, 96, 97));
-  vtkSmartPointer<vtkPolyData> stroke = circle(1.0, 1.5, 12);
+  vtkSmartPointer<vtkPolyData> stroke = kerf::test::CirclePolyline(1.0, 1.5, 12);
 
   // One filter and three filters give the same segments and the same field (to rounding: the
   // pipeline passes the constraint points as coordinates, projected again).

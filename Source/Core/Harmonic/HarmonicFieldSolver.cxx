@@ -29,6 +29,17 @@ bool sameSoftLocations(const std::vector<SoftConstraint>& a, const std::vector<S
   return true;
 }
 
+// The corners a soft constraint interpolates between, and its connected component.
+const Triangle& softCorners(const TriangleMesh& mesh, const FieldConstraints& constraints, const SoftConstraint& s)
+{
+  return constraints.softTriangles ? (*constraints.softTriangles)[s.face] : mesh.triangle(s.face);
+}
+
+int softComponent(const TriangleMesh& mesh, const FieldConstraints& constraints, const SoftConstraint& s)
+{
+  return mesh.vertexComponent(softCorners(mesh, constraints, s)[0]);
+}
+
 // Hard values sorted by vertex, with conflicting duplicates refused.
 std::vector<std::pair<int, double>> sortedDirichlet(const FieldConstraints& c, int vertexCount)
 {
@@ -161,6 +172,7 @@ struct HarmonicFieldSolver::Cache
 
   // Soft part, for the current constraint locations and weight.
   std::vector<SoftConstraint> softLocations; // values ignored
+  std::vector<Triangle> softCornerList;       // the corners each one interpolates
   double softWeight = 0.0;
   SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
   bool prepared = false;
@@ -214,10 +226,19 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   for (std::size_t i = 0; i < constraints.soft.size(); ++i)
   {
     const SoftConstraint& s = constraints.soft[i];
-    if (s.face < 0 || s.face >= mesh.faceCount())
+    const int faces = constraints.softTriangles ? static_cast<int>(constraints.softTriangles->size()) : mesh.faceCount();
+    if (s.face < 0 || s.face >= faces)
     {
       throw Error("soft constraint " + std::to_string(i) + " lies on face " + std::to_string(s.face) +
         ", which is not a face of the mesh");
+    }
+    for (int corner : softCorners(mesh, constraints, s))
+    {
+      if (corner < 0 || corner >= mesh.vertexCount() || mesh.vertexComponent(corner) < 0)
+      {
+        throw Error("soft constraint " + std::to_string(i) + " lies on a triangle whose corner " +
+          std::to_string(corner) + " is not a vertex of the solver's triangles");
+      }
     }
     if (!s.barycentric.allFinite() || !std::isfinite(s.value))
     {
@@ -238,7 +259,7 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   }
   for (const SoftConstraint& s : constraints.soft)
   {
-    constrained[mesh.faceComponent(s.face)] = 1;
+    constrained[softComponent(mesh, constraints, s)] = 1;
   }
   for (int c = 0; c < mesh.componentCount(); ++c)
   {
@@ -373,8 +394,14 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
   const TriangleMesh& mesh, const FieldConstraints& constraints, bool direct)
 {
   Cache& cache = *this->State;
+  std::vector<Triangle> corners;
+  for (const SoftConstraint& s : constraints.soft)
+  {
+    corners.push_back(softCorners(mesh, constraints, s));
+  }
   if (cache.prepared && cache.direct == direct && sameSoftLocations(cache.softLocations, constraints.soft) &&
-    cache.softWeight == constraints.softWeight && cache.formulation == constraints.formulation)
+    cache.softCornerList == corners && cache.softWeight == constraints.softWeight &&
+    cache.formulation == constraints.formulation)
   {
     return false;
   }
@@ -388,7 +415,7 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
     const SoftConstraint& s = constraints.soft[i];
     for (int j = 0; j < 3; ++j)
     {
-      const int c = cache.column[mesh.triangle(s.face)[j]];
+      const int c = cache.column[softCorners(mesh, constraints, s)[j]];
       if (c >= 0 && s.barycentric[j] != 0.0)
       {
         entries.emplace_back(c, i, penaltyWeight(constraints) * s.barycentric[j]);
@@ -428,6 +455,7 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
   cache.lowRank = std::move(lowRank);
   cache.direct = direct;
   cache.softLocations = std::move(locations);
+  cache.softCornerList = std::move(corners);
   cache.softWeight = constraints.softWeight;
   cache.formulation = constraints.formulation;
   cache.prepared = true;
@@ -445,7 +473,7 @@ void HarmonicFieldSolver::factorWithConstraints(
   std::vector<double> counts(cache.offsets, 0.0);
   for (int i = 0; i < k; ++i)
   {
-    const int c = cache.offsetIndex[mesh.faceComponent(constraints.soft[i].face)];
+    const int c = cache.offsetIndex[softComponent(mesh, constraints, constraints.soft[i])];
     if (c >= 0)
     {
       byComponent.emplace_back(i, c, penaltyWeight(constraints));
@@ -501,13 +529,13 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
     double known = 0.0;
     for (int j = 0; j < 3; ++j)
     {
-      if (const auto* hard = findHard(problem.dirichlet, mesh.triangle(s.face)[j]))
+      if (const auto* hard = findHard(problem.dirichlet, softCorners(mesh, constraints, s)[j]))
       {
         known += s.barycentric[j] * hard->second;
       }
     }
     q[i] = penaltyWeight(constraints) * (s.value - known);
-    const int c = cache.offsetIndex[mesh.faceComponent(s.face)];
+    const int c = cache.offsetIndex[softComponent(mesh, constraints, s)];
     if (c >= 0)
     {
       E(i, c) = 1.0;
@@ -574,9 +602,9 @@ double HarmonicFieldSolver::relativeResidual(const TriangleMesh& mesh, const Fie
       double value = 0.0;
       for (int j = 0; j < 3; ++j)
       {
-        const int v = mesh.triangle(s.face)[j];
+        const int v = softCorners(mesh, constraints, s)[j];
         const int c = cache.column[v];
-        const int o = cache.offsetIndex[mesh.faceComponent(s.face)];
+        const int o = cache.offsetIndex[softComponent(mesh, constraints, s)];
         const auto* hard = findHard(problem.dirichlet, v);
         const double hardValue = hard ? hard->second : 0.0;
         value += s.barycentric[j] * ((c >= 0 ? x[c] : hardValue) + (o >= 0 ? offset[o] : 0.0));

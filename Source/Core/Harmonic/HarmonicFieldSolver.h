@@ -42,6 +42,11 @@ struct FieldConstraints
   std::vector<double> dirichletValues;
   std::vector<SoftConstraint> soft;
   double softWeight = 1.0;
+  /// The triangles the soft constraints' faces index, when they are not the solver mesh's own:
+  /// the intrinsic Delaunay Laplacian is solved on the intrinsic triangles over the same points,
+  /// while constraints stay inside the input's triangles, where the field is read. Null: the
+  /// solver mesh's triangles.
+  const std::vector<Triangle>* softTriangles = nullptr;
   SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
 };
 
