@@ -103,7 +103,7 @@ int main(int argc, char* argv[])
         {
           for (const std::string& method : vtkSegmentationBenchmark::GetMethodNames())
           {
-            std::cout << "  " << std::left << std::setw(15) << method
+            std::cout << "  " << std::left << std::setw(23) << method
                       << vtkSegmentationBenchmark::GetMethodDescription(method) << "\n";
           }
         }

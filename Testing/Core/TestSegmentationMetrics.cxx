@@ -241,3 +241,41 @@ TEST(SimulatedStrokes, OneStrokePerBoundaryChain)
   EXPECT_EQ(boundaryStrokes(cylinder, labels, 0.2).size(), 2u);
   EXPECT_THROW(boundaryStrokes(cylinder, { 1, 2 }, 0.2), Error);
 }
+
+TEST(SimulatedStrokes, InnermostStrokesRunAlongTheMiddleOfEachSegment)
+{
+  // Three bands of height 1 on a cylinder: each stroke lies inside its band, at least half as far
+  // from the band's borders as the band's innermost face (the band's middle height is 0.5 inside).
+  const TriangleMesh cylinder = makeCylinder(1.0, 3.0, 48, 31);
+  std::vector<int> labels(cylinder.faceCount());
+  for (int f = 0; f < cylinder.faceCount(); ++f)
+  {
+    const Triangle& t = cylinder.triangle(f);
+    const double z = (cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])).z() / 3.0;
+    labels[f] = z < 1.0 ? 0 : (z < 2.0 ? 5 : 9);
+  }
+  const std::vector<SegmentStroke> strokes = innermostStrokes(cylinder, labels, 5);
+  ASSERT_EQ(strokes.size(), 3u);
+  const std::vector<int> expectedLabels{ 0, 5, 9 };
+  for (size_t s = 0; s < strokes.size(); ++s)
+  {
+    EXPECT_EQ(strokes[s].label, expectedLabels[s]);
+    ASSERT_EQ(strokes[s].points.size(), 5u);
+    const double middle = 0.5 + static_cast<double>(s);
+    for (const Vector3& p : strokes[s].points)
+    {
+      EXPECT_LT(std::abs(p.z() - middle), 0.3);
+    }
+  }
+  // One face per stroke, unlabelled faces left out, a whole component starting at its first face.
+  std::vector<int> one(cylinder.faceCount(), 3);
+  one[0] = -1;
+  const std::vector<SegmentStroke> single = innermostStrokes(cylinder, one, 1);
+  ASSERT_EQ(single.size(), 1u);
+  EXPECT_EQ(single[0].label, 3);
+  ASSERT_EQ(single[0].points.size(), 1u);
+  const Triangle& first = cylinder.triangle(1);
+  EXPECT_LT((single[0].points[0] - (cylinder.point(first[0]) + cylinder.point(first[1]) + cylinder.point(first[2])) / 3.0).norm(), 1e-12);
+  EXPECT_THROW(innermostStrokes(cylinder, { 1, 2 }, 5), Error);
+  EXPECT_THROW(innermostStrokes(cylinder, labels, 0), Error);
+}

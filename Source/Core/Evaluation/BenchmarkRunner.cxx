@@ -8,6 +8,8 @@
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/SurfaceConversion.h"
+#include "Segmentation/RegionGrowing.h"
+#include "Segmentation/SnakeRefinement.h"
 
 #include <poll.h>
 #include <sys/wait.h>
@@ -290,6 +292,41 @@ MethodOutput segmentWithHarmonicCuts(
   return output;
 }
 
+// Easy Mesh Cutting (Ji et al. 2006): one stroke per segment of the input human through its
+// innermost faces, region growing under the isophotic metric, and optionally the snakes.
+MethodOutput segmentWithRegionGrowing(
+  const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters, bool snakes)
+{
+  const TriangleMesh& mesh = c.surface->mesh();
+  RegionGrowingOptions options;
+  options.metric.normalWeight = parameters.positive("normal-weight", options.metric.normalWeight);
+  options.metric.curvatureWeight = parameters.positive("curvature-weight", options.metric.curvatureWeight);
+  options.metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
+  options.metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
+  const std::vector<SegmentStroke> simulated =
+    innermostStrokes(mesh, *input, static_cast<int>(parameters.positive("faces", 5)));
+  MethodOutput output;
+  output.inputs = static_cast<int>(simulated.size());
+  if (simulated.size() < 2)
+  {
+    output.labels = *input; // one segment: nothing to cut
+    return output;
+  }
+  std::vector<LabelledStroke> strokes;
+  for (const SegmentStroke& stroke : simulated)
+  {
+    strokes.push_back({ stroke.label, stroke.points });
+  }
+  output.labels = growRegions(*c.surface, strokes, options).faceLabels;
+  if (snakes)
+  {
+    BoundarySnake snake(c.surface, output.labels);
+    snake.refine({});
+    output.labels = snake.faceLabels();
+  }
+  return output;
+}
+
 std::string quoted(const std::string& text)
 {
   std::string out = "\"";
@@ -345,6 +382,19 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
       { "weighting", "samples", "offset", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
       segmentWithHarmonicCuts },
+    { "region-growing",
+      "Easy Mesh Cutting's region growing from one simulated stroke per segment through its innermost faces",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces" },
+      SegmentationMethod::Protocol::Interactive,
+      [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
+        return segmentWithRegionGrowing(c, input, parameters, false);
+      } },
+    { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces" },
+      SegmentationMethod::Protocol::Interactive,
+      [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
+        return segmentWithRegionGrowing(c, input, parameters, true);
+      } },
   };
   return methods;
 }

@@ -34,7 +34,7 @@ struct IsophoticMetricOptions
   /// w* f(k_pq) |p - q|, the discretization of its continuous definition w* int f(k_D) ds. Per edge,
   /// the term counts edges rather than length (it makes up nearly all of d on meshes of 10k
   /// vertices) and a concave crease crossed by edges oblique to it costs little, so parts leak into
-  /// each other (see Documentation/filters/RegionGrowing.md). Default off.
+  /// each other (see Documentation/filters/EasyMeshCutting.md). Default off.
   bool curvaturePerEdge = false;
 };
 
