@@ -18,7 +18,8 @@ cd "$top"
 templates=Utilities/FilterTemplate
 label=$(echo "$name" | sed -E 's/([a-z0-9])([A-Z])/\1 \2/g')
 
-for existing in "Source/Core/$area/$name.h" "Source/Filters/vtk$name.h" "Plugins/ParaView/$name.xml"; do
+for existing in "Source/Core/$area/$name.h" "Source/Filters/vtk$name.h" "Plugins/ParaView/$name.xml" \
+  "Testing/Core/Test$name.cxx" "Testing/Filters/Test${name}Filter.cxx" "Documentation/filters/$name.md"; do
   [ ! -e "$existing" ] || { echo "$existing exists already" >&2; exit 1; }
 done
 grep -q "\"$name:" Source/Filters/CMakeLists.txt && { echo "$name is already a filter" >&2; exit 1; }

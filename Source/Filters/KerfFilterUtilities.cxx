@@ -2,20 +2,27 @@
 #include "KerfFilterUtilities.h"
 
 #include "Error.h"
+#include "Geodesic/SurfaceLocation.h"
+#include "Geometry/ClosestPoint.h"
+#include "Mesh/MeshValidation.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <cmath>
 #include <cstring>
@@ -137,6 +144,15 @@ double Finite(double value, const char* parameter)
   return value;
 }
 
+double StrokeIsoValue(double value)
+{
+  if (!std::isfinite(value) || !(value + 1.0 > value) || !(value - 1.0 < value))
+  {
+    throw Error("IsoValue " + std::to_string(value) + " must be finite, and small enough that IsoValue +- 1 differ from it");
+  }
+  return value;
+}
+
 double RelativeDistance(double fraction, double diagonal, const char* parameter)
 {
   if (!std::isfinite(fraction))
@@ -181,6 +197,85 @@ std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, c
   return checkedValues(array, "the point array '" + std::string(name) + "' of " + owner, points->GetNumberOfPoints(), "point");
 }
 
+namespace
+{
+void checkStrokePointCount(long long count)
+{
+  if (count > StrokePointList::MaximumCount)
+  {
+    throw Error("a stroke has at most " + std::to_string(StrokePointList::MaximumCount) + " points, not " +
+      std::to_string(count));
+  }
+}
+} // namespace
+
+bool StrokePointList::SetCount(int count)
+{
+  checkStrokePointCount(count);
+  if (count < 0 || static_cast<std::size_t>(count) == this->List.size())
+  {
+    return false;
+  }
+  this->List.resize(static_cast<std::size_t>(count), Vector3::Zero());
+  return true;
+}
+
+bool StrokePointList::Set(int index, const Vector3& point)
+{
+  if (index < 0)
+  {
+    return false;
+  }
+  checkStrokePointCount(static_cast<long long>(index) + 1);
+  if (static_cast<std::size_t>(index) >= this->List.size())
+  {
+    this->List.resize(static_cast<std::size_t>(index) + 1, Vector3::Zero());
+  }
+  if (this->List[static_cast<std::size_t>(index)] == point)
+  {
+    return false;
+  }
+  this->List[static_cast<std::size_t>(index)] = point;
+  return true;
+}
+
+std::vector<std::vector<Vector3>> ReadStrokes(
+  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface)
+{
+  std::vector<std::vector<Vector3>> strokes;
+  if (strokeInput)
+  {
+    strokes = ReadPolylines(strokeInput, "the stroke input");
+    if (strokes.empty())
+    {
+      throw Error("the stroke input holds no lines");
+    }
+  }
+  else if (panel.Count() > 0)
+  {
+    std::vector<Vector3> stroke;
+    for (const Vector3& point : panel.Points())
+    {
+      const ClosestPointLocator::Hit hit = point.allFinite() && point.cwiseAbs().maxCoeff() <= CoordinateLimit
+        ? surface.locator().closest(point)
+        : ClosestPointLocator::Hit();
+      if (hit.face < 0)
+      {
+        throw Error("stroke point " + std::to_string(stroke.size()) +
+          " has a NaN, infinite or huge coordinate (beyond +-1e50)");
+      }
+      stroke.push_back(hit.position);
+    }
+    strokes.push_back(std::move(stroke));
+  }
+  else
+  {
+    throw Error("there is no stroke: place stroke points on the surface (in ParaView: point at the surface and "
+                "press P, Ctrl+P to add more) or connect polylines to the Strokes input");
+  }
+  return strokes;
+}
+
 std::vector<Vector3> ReadPoints(vtkPointSet* points)
 {
   std::vector<Vector3> coordinates(static_cast<std::size_t>(points ? points->GetNumberOfPoints() : 0));
@@ -218,6 +313,29 @@ std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::s
     polylines.push_back(std::move(polyline));
   }
   return polylines;
+}
+
+std::vector<SurfaceCurve> PlaceLinesOnSurface(
+  const Surface& surface, vtkPolyData* lines, double maximumDistance, const std::string& owner)
+{
+  std::vector<SurfaceCurve> curves;
+  std::vector<std::vector<Vector3>> polylines = ReadPolylines(lines, owner);
+  for (std::size_t i = 0; i < polylines.size(); ++i)
+  {
+    std::vector<Vector3>& points = polylines[i];
+    const bool closed = points.size() > 2 && points.front() == points.back();
+    if (closed)
+    {
+      points.pop_back();
+    }
+    curves.push_back(
+      placeCurveOnSurface(surface, points, closed, maximumDistance, owner + " line " + std::to_string(i)));
+  }
+  if (curves.empty())
+  {
+    throw Error(owner + " holds no line");
+  }
+  return curves;
 }
 
 void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, double scalar, const std::string& message)
@@ -262,6 +380,59 @@ vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vect
     std::memcpy(array->GetPointer(0), values.data(), values.size() * sizeof(int));
   }
   return array;
+}
+
+void WritePolylines(const std::vector<PolylineToWrite>& polylines, vtkPolyData* lines)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> cells;
+  std::vector<double> lengths;
+  std::vector<unsigned char> closed;
+  for (const PolylineToWrite& line : polylines)
+  {
+    const vtkIdType first = points->GetNumberOfPoints();
+    const vtkIdType count = static_cast<vtkIdType>(line.points->size());
+    for (const Vector3& p : *line.points)
+    {
+      points->InsertNextPoint(p.data());
+    }
+    cells->InsertNextCell(count + (line.closed ? 1 : 0));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      cells->InsertCellPoint(first + k);
+    }
+    if (line.closed)
+    {
+      cells->InsertCellPoint(first);
+    }
+    lengths.push_back(line.length);
+    closed.push_back(line.closed ? 1 : 0);
+  }
+  lines->SetPoints(points);
+  lines->SetLines(cells);
+  lines->GetCellData()->AddArray(MakeArray("Length", lengths));
+  lines->GetCellData()->AddArray(MakeArray("Closed", closed));
+}
+
+void WriteCutLines(const CutResult& cut, vtkPolyData* lines)
+{
+  std::vector<PolylineToWrite> polylines;
+  for (const Isoline& line : cut.isolines)
+  {
+    polylines.push_back({ &line.points, line.closed, line.length });
+  }
+  WritePolylines(polylines, lines);
+  lines->GetCellData()->AddArray(MakeArray("IsoValue", std::vector<double>(cut.isolines.size(), cut.value)));
+  lines->GetCellData()->AddArray(MakeArray("Score", cut.scores));
+}
+
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output)
+{
+  output->GetPointData()->AddArray(MakeArray(name, surface.ToInputPoints(solution.field)));
+  output->GetPointData()->SetActiveScalars(name);
+  output->GetFieldData()->AddArray(MakeFieldValue("RelativeResidual", solution.relativeResidual));
+  output->GetFieldData()->AddArray(MakeFieldValue("SolverWork", SolverWorkName(solution.work)));
 }
 
 std::string SolverWorkName(HarmonicFieldSolution::Work work)

@@ -1,6 +1,8 @@
 // What every Kerf filter's RequestData shares: the exception border, input arrays and points, output helpers.
 #pragma once
 
+#include "Harmonic/HarmonicCutSession.h"
+#include "Geodesic/SurfacePoint.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/TriangleMesh.h"
@@ -45,6 +47,9 @@ void CheckDifferentNames(const char* a, const char* b, const std::string& what);
 
 /// `value` if it is a number; throws naming the parameter for NaN.
 double Finite(double value, const char* parameter);
+/// A stroke's iso-value I: finite, and small enough that I + 1 and I - 1 differ from it (the
+/// values of its two sides); throws otherwise.
+double StrokeIsoValue(double value);
 /// A distance given as a fraction of the bounding-box diagonal, in length units; 0 stays 0 (no
 /// limit). Throws for NaN.
 double RelativeDistance(double fraction, double diagonal, const char* parameter);
@@ -63,11 +68,40 @@ std::vector<double> ReadInputArray(
 /// inputs are named, see vtkHarmonicField.)
 std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner);
 
+/// The stroke points a filter's panel sets (ParaView's interactive polyline), one stroke. A count
+/// or an index beyond MaximumCount is refused before anything is allocated.
+class StrokePointList
+{
+public:
+  static constexpr int MaximumCount = 10000000;
+  /// These set the list; true when it changed. Throw kerf::Error for an absurd count or index.
+  bool SetCount(int count);
+  bool Set(int index, const Vector3& point);
+  int Count() const { return static_cast<int>(this->List.size()); }
+  const std::vector<Vector3>& Points() const { return this->List; }
+
+private:
+  std::vector<Vector3> List;
+};
+
+/// The strokes of a filter with strokes as polylines on input 1 or, without it, in its panel:
+/// the polylines, else the panel's points as one stroke, each moved to the nearest point of the
+/// surface (the panel's first points come from the input's bounds, not from the surface);
+/// throws when there is no stroke.
+std::vector<std::vector<Vector3>> ReadStrokes(
+  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface);
+
 /// The coordinates of a point set's points.
 std::vector<Vector3> ReadPoints(vtkPointSet* points);
 /// The polylines of a vtkPolyData's line cells, as point lists; throws for a line naming a point
 /// that does not exist.
 std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner);
+
+/// The polylines of `lines` placed on the surface (kerf::placeCurveOnSurface), each named
+/// "<owner> line <i>" in errors; a polyline whose last point repeats its first is closed.
+/// Throws when `lines` holds no line.
+std::vector<SurfaceCurve> PlaceLinesOnSurface(
+  const Surface& surface, vtkPolyData* lines, double maximumDistance, const std::string& owner);
 
 /// Throws `message` unless every value of the vectors and `scalar` is finite.
 void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, double scalar, const std::string& message);
@@ -77,6 +111,25 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value)
 vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::string& value);
 /// A named int array holding `values`.
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
+
+/// One polyline to write: its points, whether it closes, its length.
+struct PolylineToWrite
+{
+  const std::vector<Vector3>* points;
+  bool closed;
+  double length;
+};
+/// Polylines as the line cells of `lines` (a closed one repeats its first point), with the cell
+/// arrays Length and Closed.
+void WritePolylines(const std::vector<PolylineToWrite>& polylines, vtkPolyData* lines);
+
+/// A cut's chosen isoline components as polylines (closed ones closed) with the cell arrays
+/// IsoValue, Score, Length and Closed.
+void WriteCutLines(const CutResult& cut, vtkPolyData* lines);
+
+/// A solved field on the output: the point array `name` (its active scalars) and the field data
+/// RelativeResidual and SolverWork.
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output);
 
 /// "factorization", "update" or "back-substitution".
 std::string SolverWorkName(HarmonicFieldSolution::Work work);

@@ -23,8 +23,12 @@ vtkStandardNewMacro(vtkHarmonicField);
 static_assert(static_cast<int>(kerf::LaplacianWeighting::Uniform) == vtkHarmonicField::UNIFORM &&
     static_cast<int>(kerf::LaplacianWeighting::Cotangent) == vtkHarmonicField::COTANGENT &&
     static_cast<int>(kerf::LaplacianWeighting::ConcavityAware) == vtkHarmonicField::CONCAVITY_AWARE &&
-    static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY,
+    static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY &&
+    static_cast<int>(kerf::LaplacianWeighting::IntrinsicDelaunay) == vtkHarmonicField::INTRINSIC_DELAUNAY,
   "vtkHarmonicField's Weightings follow kerf::LaplacianWeighting");
+static_assert(static_cast<int>(kerf::SoftConstraintFormulation::PointValues) == vtkHarmonicField::POINT_VALUES &&
+    static_cast<int>(kerf::SoftConstraintFormulation::LeastSquares) == vtkHarmonicField::LEAST_SQUARES,
+  "vtkHarmonicField's Formulations follow kerf::SoftConstraintFormulation");
 
 struct vtkHarmonicField::Internals
 {
@@ -102,6 +106,7 @@ int vtkHarmonicField::RequestData(
     options.weights.concaveBeta = kerf::Finite(this->ConcaveBeta, "ConcaveBeta");
     options.weights.concavityQuantile = kerf::Finite(this->ConcavityQuantile, "ConcavityQuantile");
     options.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
+    options.formulation = kerf::SoftConstraintFormulation(this->Formulation);
     kerf::HarmonicFieldSolution solution = session.solve(constraints, options);
     this->UpdateProgress(0.9);
 
@@ -110,13 +115,9 @@ int vtkHarmonicField::RequestData(
     kerf::CheckFinite({ &solution.field, &magnitudes }, solution.relativeResidual,
       "the field or its gradient overflows (hard or constraint values too large for double precision)");
     this->State->surface.MakeOutput(input, output);
-    output->GetPointData()->AddArray(
-      kerf::MakeArray(this->FieldArrayName, this->State->surface.ToInputPoints(solution.field)));
-    output->GetPointData()->SetActiveScalars(this->FieldArrayName);
+    kerf::WriteField(this->State->surface, solution, this->FieldArrayName, output);
     output->GetCellData()->AddArray(kerf::MakeArray(this->GradientArrayName, gradients));
     output->GetCellData()->AddArray(kerf::MakeArray(this->GradientMagnitudeArrayName, magnitudes));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("RelativeResidual", solution.relativeResidual));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SolverWork", kerf::SolverWorkName(solution.work)));
   });
 }
 
@@ -124,6 +125,7 @@ void vtkHarmonicField::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Weighting: " << this->Weighting << "\n";
+  os << indent << "Formulation: " << this->Formulation << "\n";
   os << indent << "ConcaveBeta: " << this->ConcaveBeta << "\n";
   os << indent << "ConcavityQuantile: " << this->ConcavityQuantile << "\n";
   os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";

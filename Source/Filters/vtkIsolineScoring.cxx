@@ -77,43 +77,6 @@ int vtkIsolineScoring::FillOutputPortInformation(int port, vtkInformation* info)
 
 namespace
 {
-// Output 0: the chosen isoline components as polylines with their value, score, length and closure.
-void writeIsolines(const kerf::CutResult& cut, vtkPolyData* lines)
-{
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polylines;
-  std::vector<double> isoValues, lengths;
-  std::vector<unsigned char> closed;
-  for (const kerf::Isoline& line : cut.isolines)
-  {
-    const vtkIdType first = points->GetNumberOfPoints();
-    const vtkIdType count = static_cast<vtkIdType>(line.points.size());
-    for (const kerf::Vector3& p : line.points)
-    {
-      points->InsertNextPoint(p.data());
-    }
-    polylines->InsertNextCell(count + (line.closed ? 1 : 0));
-    for (vtkIdType k = 0; k < count; ++k)
-    {
-      polylines->InsertCellPoint(first + k);
-    }
-    if (line.closed)
-    {
-      polylines->InsertCellPoint(first);
-    }
-    isoValues.push_back(cut.value);
-    lengths.push_back(line.length);
-    closed.push_back(line.closed ? 1 : 0);
-  }
-  lines->SetPoints(points);
-  lines->SetLines(polylines);
-  lines->GetCellData()->AddArray(kerf::MakeArray("IsoValue", isoValues));
-  lines->GetCellData()->AddArray(kerf::MakeArray("Score", cut.scores));
-  lines->GetCellData()->AddArray(kerf::MakeArray("Length", lengths));
-  lines->GetCellData()->AddArray(kerf::MakeArray("Closed", closed));
-}
-
 // Output 2: the candidates' values, scores and lengths (BEST_SCORE).
 void writeCandidates(const kerf::CutResult& cut, vtkTable* table)
 {
@@ -156,7 +119,7 @@ int vtkIsolineScoring::RequestData(
     const kerf::CutResult cut = session.chooseCut(field, options);
     this->UpdateProgress(0.8);
 
-    writeIsolines(cut, vtkPolyData::GetData(outputVector, 0));
+    kerf::WriteCutLines(cut, vtkPolyData::GetData(outputVector, 0));
     vtkPolyData* labelled = vtkPolyData::GetData(outputVector, 1);
     this->State->surface.MakeOutput(input, labelled);
     labelled->GetCellData()->AddArray(kerf::MakeIntArray(this->SegmentArrayName, cut.labels));

@@ -29,7 +29,7 @@ struct vtkStrokeConstraints::Internals
 {
   kerf::SurfaceInput surface;
   std::unique_ptr<kerf::HarmonicCutSession> session;
-  std::vector<kerf::Vector3> strokePoints;
+  kerf::StrokePointList strokePoints;
 };
 
 vtkStrokeConstraints::vtkStrokeConstraints()
@@ -40,29 +40,11 @@ vtkStrokeConstraints::vtkStrokeConstraints()
 
 vtkStrokeConstraints::~vtkStrokeConstraints() = default;
 
-namespace
-{
-// More stroke points than anyone draws: a larger count or index is a mistake, refused before it
-// allocates gigabytes.
-constexpr int MaximumStrokePoints = 10000000;
-
-void checkStrokePointCount(long long count)
-{
-  if (count > MaximumStrokePoints)
-  {
-    throw kerf::Error("a stroke has at most " + std::to_string(MaximumStrokePoints) + " points, not " +
-      std::to_string(count));
-  }
-}
-} // namespace
-
 void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
 {
   kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
-    checkStrokePointCount(count);
-    if (count >= 0 && static_cast<std::size_t>(count) != this->State->strokePoints.size())
+    if (this->State->strokePoints.SetCount(count))
     {
-      this->State->strokePoints.resize(static_cast<std::size_t>(count), kerf::Vector3::Zero());
       this->Modified();
     }
   });
@@ -70,26 +52,14 @@ void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
 
 int vtkStrokeConstraints::GetNumberOfStrokePoints() const
 {
-  return static_cast<int>(this->State->strokePoints.size());
+  return this->State->strokePoints.Count();
 }
 
 void vtkStrokeConstraints::SetStrokePoint(int index, double x, double y, double z)
 {
   kerf::GuardSetter(this, "Cannot set a stroke point", [&]() {
-    if (index < 0)
+    if (this->State->strokePoints.Set(index, kerf::Vector3(x, y, z)))
     {
-      return;
-    }
-    checkStrokePointCount(static_cast<long long>(index) + 1);
-    std::vector<kerf::Vector3>& points = this->State->strokePoints;
-    if (static_cast<std::size_t>(index) >= points.size())
-    {
-      points.resize(static_cast<std::size_t>(index) + 1, kerf::Vector3::Zero());
-    }
-    const kerf::Vector3 p(x, y, z);
-    if (points[static_cast<std::size_t>(index)] != p)
-    {
-      points[static_cast<std::size_t>(index)] = p;
       this->Modified();
     }
   });
@@ -112,33 +82,12 @@ int vtkStrokeConstraints::RequestData(
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
     vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    if (!std::isfinite(this->IsoValue) || !(this->IsoValue + 1.0 > this->IsoValue) ||
-      !(this->IsoValue - 1.0 < this->IsoValue))
-    {
-      throw kerf::Error("IsoValue " + std::to_string(this->IsoValue) +
-        " must be finite, and small enough that IsoValue +- 1 differ from it");
-    }
+    kerf::StrokeIsoValue(this->IsoValue);
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
 
-    std::vector<std::vector<kerf::Vector3>> strokes;
-    if (strokeInput)
-    {
-      strokes = kerf::ReadPolylines(strokeInput, "the stroke input");
-      if (strokes.empty())
-      {
-        throw kerf::Error("the stroke input holds no lines");
-      }
-    }
-    else if (!this->State->strokePoints.empty())
-    {
-      strokes.push_back(this->State->strokePoints);
-    }
-    else
-    {
-      throw kerf::Error("there is no stroke: connect polylines to input 1 or set the stroke points");
-    }
+    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, this->State->strokePoints, session.surface());
 
     kerf::StrokeOptions options;
     options.samplesPerSegment = this->SamplesPerSegment;
@@ -177,5 +126,5 @@ void vtkStrokeConstraints::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Offset: " << this->Offset << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "StrokePoints: " << this->State->strokePoints.size() << "\n";
+  os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";
 }

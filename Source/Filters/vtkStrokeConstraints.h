@@ -1,7 +1,7 @@
 /**
  * @class vtkStrokeConstraints
  * @brief Turns strokes drawn on a surface into the paired constraints of a harmonic cut
- * (SeamCut, SeamCut, section 2.1.1).
+ * (SeamCut, section 2.1.1).
  *
  * Each stroke is a polyline near the surface: the lines of the second input (any number of
  * strokes), or, when no second input is connected, the points set with SetStrokePoint (one

@@ -226,6 +226,7 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
         ctf->AddRGBPoint(0.5 * (lo + hi), 0.128, 0.567, 0.551);
         ctf->AddRGBPoint(hi, 0.993, 0.906, 0.144);
       }
+      ctf->SetNanColor(0.8, 0.8, 0.8); // values without a number (a field solved on part of the surface)
       ctf->DiscretizeOn();
       ctf->SetNumberOfValues(256);
       ctf->Build();

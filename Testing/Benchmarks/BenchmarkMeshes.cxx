@@ -1,4 +1,4 @@
-// Builds the cube-based dumbbell: a subdivided cube, spread over the sphere, stretched like kerf::makeDumbbell.
+// Builds the cube-based dumbbell (a subdivided cube, spread over the sphere, stretched like kerf::makeDumbbell) and strokes on it.
 #include "BenchmarkMeshes.h"
 
 #include "Error.h"
@@ -83,6 +83,51 @@ TriangleMesh MakeCubeDumbbell(double halfLength, const std::array<double, 2>& lo
     }
   }
   return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+TriangleMesh MakeBenchmarkDumbbell(int cells)
+{
+  return MakeCubeDumbbell(DumbbellHalfLength, DumbbellLobeRadii, DumbbellNeckCentre, DumbbellNeckDepth, cells);
+}
+
+double DumbbellNeckHeight()
+{
+  double best = DumbbellNeckCentre, smallest = HUGE_VAL;
+  for (double z = -0.5 * DumbbellHalfLength; z <= 0.5 * DumbbellHalfLength; z += 1e-4)
+  {
+    const double r = dumbbellRadius(z, DumbbellHalfLength, DumbbellLobeRadii, DumbbellNeckCentre, DumbbellNeckDepth);
+    if (r < smallest)
+    {
+      smallest = r;
+      best = z;
+    }
+  }
+  return best;
+}
+
+std::vector<Vector3> DumbbellStroke(double height, double tilt, double firstAngle, double lastAngle, int count)
+{
+  std::vector<Vector3> points;
+  for (int k = 0; k < count; ++k)
+  {
+    const double angle = firstAngle + (lastAngle - firstAngle) * k / (count - 1);
+    const double z = height + tilt * std::cos(angle);
+    const double r = dumbbellRadius(z, DumbbellHalfLength, DumbbellLobeRadii, DumbbellNeckCentre, DumbbellNeckDepth);
+    points.emplace_back(r * std::cos(angle), r * std::sin(angle), z);
+  }
+  return points;
+}
+
+DumbbellStrokes MakeDumbbellStrokes()
+{
+  constexpr double Pi = 3.14159265358979323846;
+  const double neck = DumbbellNeckHeight();
+  DumbbellStrokes strokes;
+  strokes.around[0] = DumbbellStroke(neck, 0.0, 0.0, 2.0 * Pi, 9);
+  strokes.around[1] = DumbbellStroke(neck + 0.04, 0.03, Pi / 8.0, Pi / 8.0 + 2.0 * Pi, 9);
+  strokes.refinement[0] = DumbbellStroke(neck - 0.03, 0.0, 0.5 * Pi, 1.5 * Pi, 9);
+  strokes.refinement[1] = DumbbellStroke(neck + 0.03, 0.0, -0.5 * Pi, 0.5 * Pi, 9);
+  return strokes;
 }
 
 } // namespace benchmarks

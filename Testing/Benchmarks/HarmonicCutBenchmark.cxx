@@ -76,13 +76,9 @@ namespace
 
 using kerf::benchmarks::Fail;
 
-constexpr double Pi = 3.14159265358979323846;
 
-// The dumbbell of kerf's tests (TestHarmonicCut, TestConcavityCut).
-constexpr double HalfLength = 2.2;
-const std::array<double, 2> LobeRadii = { { 1.0, 0.8 } };
-constexpr double NeckCentre = 0.3;
-constexpr double NeckDepth = 0.65;
+using kerf::benchmarks::DumbbellHalfLength;
+using Strokes = kerf::benchmarks::DumbbellStrokes;
 
 // The iso-value the cut is slid to and back from; the refinement starts from a cut at SlidValue.
 constexpr double SlidValue = 0.25;
@@ -98,55 +94,6 @@ struct CutSize
 
 // 12 * 43^2 = 22,188; 12 * 91^2 = 99,372; 12 * 289^2 = 1,002,252 triangles.
 const std::array<CutSize, 3> Sizes = { { { "22k", 43, 0.5 }, { "100k", 91, 1.0 }, { "1M", 289, 2.0 } } };
-
-// Height of the narrowest circle of the profile (the pinch's centre moved by the lobes' blend).
-double narrowestHeight()
-{
-  double best = NeckCentre, smallest = 1e300;
-  for (double z = -0.5 * HalfLength; z <= 0.5 * HalfLength; z += 1e-4)
-  {
-    const double r = kerf::dumbbellRadius(z, HalfLength, LobeRadii, NeckCentre, NeckDepth);
-    if (r < smallest)
-    {
-      smallest = r;
-      best = z;
-    }
-  }
-  return best;
-}
-
-// `count` points on the smooth surface at angles firstAngle..lastAngle about z, at height
-// height + tilt cos(angle); a full turn repeats its first point at the end (a closed stroke).
-std::vector<kerf::Vector3> strokeOnSurface(
-  double height, double tilt, double firstAngle, double lastAngle, int count)
-{
-  std::vector<kerf::Vector3> points;
-  for (int k = 0; k < count; ++k)
-  {
-    const double angle = firstAngle + (lastAngle - firstAngle) * k / (count - 1);
-    const double z = height + tilt * std::cos(angle);
-    const double r = kerf::dumbbellRadius(z, HalfLength, LobeRadii, NeckCentre, NeckDepth);
-    points.emplace_back(r * std::cos(angle), r * std::sin(angle), z);
-  }
-  return points;
-}
-
-struct Strokes
-{
-  std::array<std::vector<kerf::Vector3>, 2> around;     ///< closed strokes around the neck
-  std::array<std::vector<kerf::Vector3>, 2> refinement; ///< half loops near the cut
-};
-
-Strokes makeStrokes()
-{
-  const double neck = narrowestHeight();
-  Strokes strokes;
-  strokes.around[0] = strokeOnSurface(neck, 0.0, 0.0, 2.0 * Pi, 9);
-  strokes.around[1] = strokeOnSurface(neck + 0.04, 0.03, Pi / 8.0, Pi / 8.0 + 2.0 * Pi, 9);
-  strokes.refinement[0] = strokeOnSurface(neck - 0.03, 0.0, 0.5 * Pi, 1.5 * Pi, 9);
-  strokes.refinement[1] = strokeOnSurface(neck + 0.03, 0.0, -0.5 * Pi, 0.5 * Pi, 9);
-  return strokes;
-}
 
 // One polyline through the points.
 vtkSmartPointer<vtkPolyData> makePolyline(const std::vector<kerf::Vector3>& stroke)
@@ -266,9 +213,9 @@ std::unique_ptr<HarmonicScene> buildScene(const CutSize& size)
 {
   auto scene = std::make_unique<HarmonicScene>();
   scene->size = &size;
-  scene->mesh = kerf::benchmarks::MakeCubeDumbbell(HalfLength, LobeRadii, NeckCentre, NeckDepth, size.cells);
+  scene->mesh = kerf::benchmarks::MakeBenchmarkDumbbell(size.cells);
   scene->polyData = kerf::benchmarks::MakePolyData(scene->mesh);
-  scene->strokes = makeStrokes();
+  scene->strokes = kerf::benchmarks::MakeDumbbellStrokes();
   const kerf::TriangleMesh& mesh = scene->mesh;
 
   kerf::LaplacianWeightOptions weighting;
@@ -300,7 +247,7 @@ std::unique_ptr<HarmonicScene> buildScene(const CutSize& size)
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
     const double z = mesh.point(v).z();
-    if (std::abs(z) > 0.9 * HalfLength)
+    if (std::abs(z) > 0.9 * DumbbellHalfLength)
     {
       scene->capConstraints.dirichletVertices.push_back(v);
       scene->capConstraints.dirichletValues.push_back(z > 0.0 ? 1.0 : 0.0);
@@ -589,20 +536,7 @@ using Function = void (*)(benchmark::State&, HarmonicScene&);
 // Runs one benchmark on its size's scene; any exception fails it.
 void run(benchmark::State& state, const CutSize* size, Function function)
 {
-  HarmonicScene* scene = nullptr;
-  try
-  {
-    scene = &sceneOfSize(*size);
-    function(state, *scene);
-  }
-  catch (const std::exception& e)
-  {
-    Fail(state, e.what());
-  }
-  if (scene)
-  {
-    setCounters(state, *scene);
-  }
+  kerf::benchmarks::RunOnScene(state, [size]() -> HarmonicScene& { return sceneOfSize(*size); }, function, setCounters);
 }
 
 } // namespace

@@ -4,13 +4,15 @@
 //   SurfaceDescriptorsBenchmark.cxx     descriptors filter, vtkCurvatures, Core steps (/10k /100k /1M)
 //   HarmonicCutBenchmark.cxx            harmonic cuts from strokes: factorization, solve, isolines,
 //                                       scoring, the filter pipeline (/22k /100k /1M)
+//   HarmonicSolverBenchmark.cxx         the solver at the Core level: cuts from stroke to labels,
+//                                       orderings, low-rank routes (/22k /100k /1M)
 //   SegmentationEvaluationBenchmark.cxx segmentation metrics (/50k) and the human baseline over
 //                                       psb-dev (/1model /all; only when the folder exists)
 // Run from the build directory with OPENBLAS_NUM_THREADS=1 (CHOLMOD's BLAS on one thread, like
 // everything else), for example:
 //   bin/KerfBenchmarks
 //   bin/KerfBenchmarks --benchmark_filter=/100k --benchmark_format=json
-// and the full run (one command; about 6 minutes, most of it the 1M factorizations, which run
+// and the full run (one command; about 20 minutes, most of it the 1M factorizations, which run
 // once per repetition; under 7 GB of memory):
 //   bin/KerfBenchmarks --benchmark_repetitions=5 --benchmark_report_aggregates_only=true
 //     --benchmark_min_time=0.2
@@ -68,6 +70,7 @@ int main(int argc, char** argv)
   benchmark::AddCustomContext("sparse_cholesky", kerf::SparseCholesky::backend());
   kerf::benchmarks::RegisterSurfaceDescriptorsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterHarmonicSolverBenchmarks();
   kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();

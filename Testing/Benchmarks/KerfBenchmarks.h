@@ -3,6 +3,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include <exception>
 #include <string>
 
 namespace kerf
@@ -16,10 +17,32 @@ void Fail(benchmark::State& state, const std::string& message);
 /// True once any benchmark has called Fail.
 bool AnyBenchmarkFailed();
 
+/// Runs function(state, scene) on the scene getScene() returns (built on first use), then
+/// setCounters(state, scene); an exception fails the benchmark with its message.
+template <typename GetScene, typename Function, typename SetCounters>
+void RunOnScene(benchmark::State& state, GetScene getScene, Function function, SetCounters setCounters)
+{
+  decltype(&getScene()) scene = nullptr;
+  try
+  {
+    scene = &getScene();
+    function(state, *scene);
+  }
+  catch (const std::exception& e)
+  {
+    Fail(state, e.what());
+  }
+  if (scene)
+  {
+    setCounters(state, *scene);
+  }
+}
+
 /// Register one family each, in the order they run. With `useSizeMinimumTimes`, each size gets
 /// its own minimum time; without it, --benchmark_min_time applies to all.
 void RegisterSurfaceDescriptorsBenchmarks(bool useSizeMinimumTimes);
 void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes);
+void RegisterHarmonicSolverBenchmarks();
 void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 

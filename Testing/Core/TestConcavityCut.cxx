@@ -1,4 +1,5 @@
 // The best-scored isoline of a harmonic field lies in the neck of a two-lobe shape.
+#include "BenchmarkMeshes.h"
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
@@ -34,20 +35,13 @@ class ConcavityCut : public ::testing::TestWithParam<NeckCase>
 
 TEST_P(ConcavityCut, BestIsolineLiesInTheNeck)
 {
-  // Lobes of radii 1 and 0.8, the neck off-centre at z = 0.3 and pinched to a third.
-  const double halfLength = 2.2, neckHeight = 0.3, depth = 0.65;
-  const std::array<double, 2> radii{ 1.0, 0.8 };
-  const TriangleMesh shape = makeDumbbell(halfLength, radii, neckHeight, depth, 5);
-  double zNeck = 0.0, rNeck = 1e300;
-  for (double z = -0.5 * halfLength; z <= 0.5 * halfLength; z += 1e-4)
-  {
-    const double r = dumbbellRadius(z, halfLength, radii, neckHeight, depth);
-    if (r < rNeck)
-    {
-      rNeck = r;
-      zNeck = z;
-    }
-  }
+  // The benchmarks' dumbbell: lobes of radii 1 and 0.8, the neck off-centre at z = 0.3 and
+  // pinched to a third.
+  const double halfLength = benchmarks::DumbbellHalfLength;
+  const std::array<double, 2> radii = benchmarks::DumbbellLobeRadii;
+  const TriangleMesh shape =
+    makeDumbbell(halfLength, radii, benchmarks::DumbbellNeckCentre, benchmarks::DumbbellNeckDepth, 5);
+  const double zNeck = benchmarks::DumbbellNeckHeight();
   // Hard values on the two tips (the last 5% of the length at each end).
   FieldConstraints constraints;
   for (int v = 0; v < shape.vertexCount(); ++v)

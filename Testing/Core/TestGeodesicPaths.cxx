@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -270,4 +271,31 @@ TEST(GeodesicPaths, RefusesBadInput)
   GeodesicSource outside;
   outside.vertices = { -1 };
   EXPECT_THROW(HeatGeodesics(surface->mesh()).compute(outside), Error);
+}
+
+TEST(GeodesicPaths, DistanceFollowsTheChosenMetric)
+{
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 3));
+  GeodesicSource source;
+  source.vertices = { 5 };
+  GeodesicPathOptions options;
+  // gamma = 0: the heat method, its set-up cached on the surface.
+  const GeodesicDistance heat = geodesicDistance(*surface, source, options);
+  EXPECT_EQ(heat.distance, HeatGeodesics::of(*surface).compute(source).distance);
+  EXPECT_EQ(heat.faceGradients.size(), static_cast<std::size_t>(surface->mesh().faceCount()));
+  // Otherwise Short-Term Vector Dijkstra under the metric.
+  options.metric.gamma = 2.0;
+  const GeodesicDistance anisotropic = geodesicDistance(*surface, source, options);
+  VectorDijkstraOptions dijkstra;
+  EXPECT_EQ(anisotropic.distance,
+    shortTermVectorDijkstra(surface->mesh(), anisotropicMetric(*surface, options.metric), source, dijkstra).distance);
+  options.metric.gamma = 0.0;
+  options.vectorDijkstra = true;
+  EXPECT_EQ(geodesicDistance(*surface, source, options).distance,
+    shortTermVectorDijkstra(surface->mesh(), anisotropicMetric(*surface, options.metric), source, dijkstra).distance);
+  for (double gamma : { -1.0, std::nan(""), std::numeric_limits<double>::infinity() })
+  {
+    options.metric.gamma = gamma;
+    EXPECT_THROW(geodesicDistance(*surface, source, options), Error);
+  }
 }

@@ -112,6 +112,14 @@ double maximumMisfit(const TriangleMesh& mesh, const std::vector<double>& field,
   return misfit;
 }
 
+const SoftConstraintFormulation BothFormulations[] = { SoftConstraintFormulation::PointValues,
+  SoftConstraintFormulation::LeastSquares };
+
+const char* formulationName(SoftConstraintFormulation formulation)
+{
+  return formulation == SoftConstraintFormulation::PointValues ? "point values" : "least squares";
+}
+
 bool bitwiseEqual(const HarmonicFieldSolution& a, const HarmonicFieldSolution& b)
 {
   return a.field.size() == b.field.size() &&
@@ -440,12 +448,20 @@ struct SoftGrid
   TriangleMesh mesh = makeGrid(1.0, 1.0, 16, 16);
   ClosestPointLocator locator{ mesh };
   std::vector<double> weights = cotangentWeights(mesh);
+  SoftConstraintFormulation formulation = FieldConstraints().formulation;
+
+  SoftGrid() = default;
+  explicit SoftGrid(SoftConstraintFormulation f)
+    : formulation(f)
+  {
+  }
 
   // +1 at x = 0.4 and -1 at x = 0.6 on three heights, shifted by `shift`.
   FieldConstraints pairs(double shift, double softWeight, double plus = 1.0, double minus = -1.0) const
   {
     FieldConstraints c;
     c.softWeight = softWeight;
+    c.formulation = this->formulation;
     for (double y : { 0.31, 0.52, 0.73 })
     {
       c.soft.push_back(softAt(this->locator, Vector3(0.4 + shift, y + shift, 0.0), plus));
@@ -479,7 +495,8 @@ TEST(HarmonicField, SoftOnlyMisfitShrinksAsWeightGrows)
   double previous = std::numeric_limits<double>::infinity();
   for (double w : { 0.1, 1.0, 10.0, 100.0, 1000.0 })
   {
-    const FieldConstraints c = g.pairs(0.0, w);
+    FieldConstraints c = g.pairs(0.0, w);
+    c.formulation = SoftConstraintFormulation::LeastSquares;
     const HarmonicFieldSolution solution = freshSolve(g.mesh, g.weights, c);
     const double misfit = maximumMisfit(g.mesh, solution.field, c.soft);
     EXPECT_LT(misfit, previous) << "softWeight " << w;
@@ -508,106 +525,146 @@ TEST(HarmonicField, SoftConstraintsOnFlatGridForEveryWeighting)
 {
   // Flat grid (every Gaussian curvature 0): each weighting must give a finite field that
   // separates the +1 and -1 constraints.
-  const SoftGrid g;
-  const FieldConstraints c = g.pairs(0.0, 10.0);
-  for (LaplacianWeighting weighting : AllWeightings)
+  for (const SoftConstraintFormulation formulation : BothFormulations)
   {
-    HarmonicFieldSolution solution;
-    try
+    SCOPED_TRACE(formulationName(formulation));
+    const SoftGrid g(formulation);
+    const FieldConstraints c = g.pairs(0.0, 10.0);
+    for (LaplacianWeighting weighting : AllWeightings)
     {
-      solution = freshSolve(g.mesh, weightsFor(g.mesh, weighting), c);
-    }
-    catch (const Error& error)
-    {
-      ADD_FAILURE() << weightingName(weighting) << ": " << error.what();
-      continue;
-    }
-    EXPECT_TRUE(std::isfinite(solution.relativeResidual)) << weightingName(weighting);
-    for (std::size_t i = 0; i < c.soft.size(); i += 2)
-    {
-      EXPECT_GT(interpolate(g.mesh, solution.field, c.soft[i]), 0.0) << weightingName(weighting);
-      EXPECT_LT(interpolate(g.mesh, solution.field, c.soft[i + 1]), 0.0) << weightingName(weighting);
+      HarmonicFieldSolution solution;
+      try
+      {
+        solution = freshSolve(g.mesh, weightsFor(g.mesh, weighting), c);
+      }
+      catch (const Error& error)
+      {
+        ADD_FAILURE() << weightingName(weighting) << ": " << error.what();
+        continue;
+      }
+      EXPECT_TRUE(std::isfinite(solution.relativeResidual)) << weightingName(weighting);
+      for (std::size_t i = 0; i < c.soft.size(); i += 2)
+      {
+        EXPECT_GT(interpolate(g.mesh, solution.field, c.soft[i]), 0.0) << weightingName(weighting);
+        EXPECT_LT(interpolate(g.mesh, solution.field, c.soft[i + 1]), 0.0) << weightingName(weighting);
+      }
     }
   }
 }
 
 TEST(HarmonicField, NewSoftValuesCostOnlyBackSubstitution)
 {
-  const SoftGrid g;
-  HarmonicFieldSolver solver;
-  const FieldConstraints first = g.pairs(0.0, 2.0);
-  const HarmonicFieldSolution a = solver.solve(g.mesh, g.weights, first);
-  EXPECT_EQ(a.work, HarmonicFieldSolution::Work::Factorization);
-  EXPECT_TRUE(bitwiseEqual(a, freshSolve(g.mesh, g.weights, first)));
+  for (const SoftConstraintFormulation formulation : BothFormulations)
+  {
+    SCOPED_TRACE(formulationName(formulation));
+    const SoftGrid g(formulation);
+    HarmonicFieldSolver solver;
+    const FieldConstraints first = g.pairs(0.0, 2.0);
+    const HarmonicFieldSolution a = solver.solve(g.mesh, g.weights, first);
+    EXPECT_EQ(a.work, HarmonicFieldSolution::Work::Factorization);
+    EXPECT_TRUE(bitwiseEqual(a, freshSolve(g.mesh, g.weights, first)));
 
-  const HarmonicFieldSolution again = solver.solve(g.mesh, g.weights, first);
-  EXPECT_EQ(again.work, HarmonicFieldSolution::Work::BackSubstitution);
-  EXPECT_TRUE(bitwiseEqual(again, a));
+    const HarmonicFieldSolution again = solver.solve(g.mesh, g.weights, first);
+    EXPECT_EQ(again.work, HarmonicFieldSolution::Work::BackSubstitution);
+    EXPECT_TRUE(bitwiseEqual(again, a));
 
-  const FieldConstraints shifted = g.pairs(0.0, 2.0, 3.5, 0.25); // same points, new values
-  const HarmonicFieldSolution b = solver.solve(g.mesh, g.weights, shifted);
-  EXPECT_EQ(b.work, HarmonicFieldSolution::Work::BackSubstitution);
-  const HarmonicFieldSolution fresh = freshSolve(g.mesh, g.weights, shifted);
-  EXPECT_TRUE(bitwiseEqual(b, fresh));
-  EXPECT_EQ(b.relativeResidual, fresh.relativeResidual);
-  EXPECT_FALSE(bitwiseEqual(b, a));
+    const FieldConstraints shifted = g.pairs(0.0, 2.0, 3.5, 0.25); // same points, new values
+    const HarmonicFieldSolution b = solver.solve(g.mesh, g.weights, shifted);
+    EXPECT_EQ(b.work, HarmonicFieldSolution::Work::BackSubstitution);
+    const HarmonicFieldSolution fresh = freshSolve(g.mesh, g.weights, shifted);
+    EXPECT_TRUE(bitwiseEqual(b, fresh));
+    EXPECT_EQ(b.relativeResidual, fresh.relativeResidual);
+    EXPECT_FALSE(bitwiseEqual(b, a));
+  }
 }
 
 TEST(HarmonicField, NewSoftLocationsCostAnUpdate)
 {
+  for (const SoftConstraintFormulation formulation : BothFormulations)
+  {
+    SCOPED_TRACE(formulationName(formulation));
+    const SoftGrid g(formulation);
+    HarmonicFieldSolver solver;
+    const FieldConstraints first = g.pairs(0.0, 2.0);
+    const HarmonicFieldSolution a = solver.solve(g.mesh, g.weights, first);
+    ASSERT_EQ(a.work, HarmonicFieldSolution::Work::Factorization);
+
+    const FieldConstraints moved = g.pairs(0.07, 2.0); // same values, other points
+    const HarmonicFieldSolution b = solver.solve(g.mesh, g.weights, moved);
+    EXPECT_EQ(b.work, HarmonicFieldSolution::Work::Update);
+    EXPECT_TRUE(bitwiseEqual(b, freshSolve(g.mesh, g.weights, moved)));
+    EXPECT_FALSE(bitwiseEqual(b, a));
+
+    // One more constraint: an update too.
+    FieldConstraints more = moved;
+    more.soft.push_back(softAt(g.locator, Vector3(0.2, 0.2, 0.0), 0.5));
+    const HarmonicFieldSolution c = solver.solve(g.mesh, g.weights, more);
+    EXPECT_EQ(c.work, HarmonicFieldSolution::Work::Update);
+    EXPECT_TRUE(bitwiseEqual(c, freshSolve(g.mesh, g.weights, more)));
+
+    // Updates start from the base factor: going back reproduces the first result exactly.
+    const HarmonicFieldSolution back = solver.solve(g.mesh, g.weights, first);
+    EXPECT_EQ(back.work, HarmonicFieldSolution::Work::Update);
+    EXPECT_TRUE(bitwiseEqual(back, a));
+
+    // A new soft weight changes the constraint term only.
+    FieldConstraints heavier = first;
+    heavier.softWeight = 5.0;
+    const HarmonicFieldSolution d = solver.solve(g.mesh, g.weights, heavier);
+    EXPECT_NE(d.work, HarmonicFieldSolution::Work::BackSubstitution);
+    EXPECT_TRUE(bitwiseEqual(d, freshSolve(g.mesh, g.weights, heavier)));
+  }
+}
+
+TEST(HarmonicField, NewFormulationCostsAFactorization)
+{
+  // The formulations factor different matrices: switching refactors, and switching back gives
+  // the first field bit for bit.
   const SoftGrid g;
   HarmonicFieldSolver solver;
-  const FieldConstraints first = g.pairs(0.0, 2.0);
-  const HarmonicFieldSolution a = solver.solve(g.mesh, g.weights, first);
-  ASSERT_EQ(a.work, HarmonicFieldSolution::Work::Factorization);
-
-  const FieldConstraints moved = g.pairs(0.07, 2.0); // same values, other points
-  const HarmonicFieldSolution b = solver.solve(g.mesh, g.weights, moved);
-  EXPECT_EQ(b.work, HarmonicFieldSolution::Work::Update);
-  EXPECT_TRUE(bitwiseEqual(b, freshSolve(g.mesh, g.weights, moved)));
-  EXPECT_FALSE(bitwiseEqual(b, a));
-
-  // One more constraint: an update too.
-  FieldConstraints more = moved;
-  more.soft.push_back(softAt(g.locator, Vector3(0.2, 0.2, 0.0), 0.5));
-  const HarmonicFieldSolution c = solver.solve(g.mesh, g.weights, more);
-  EXPECT_EQ(c.work, HarmonicFieldSolution::Work::Update);
-  EXPECT_TRUE(bitwiseEqual(c, freshSolve(g.mesh, g.weights, more)));
-
-  // Updates start from the base factor: going back reproduces the first result exactly.
-  const HarmonicFieldSolution back = solver.solve(g.mesh, g.weights, first);
-  EXPECT_EQ(back.work, HarmonicFieldSolution::Work::Update);
-  EXPECT_TRUE(bitwiseEqual(back, a));
-
-  // A new soft weight changes the constraint term only.
-  FieldConstraints heavier = first;
-  heavier.softWeight = 5.0;
-  const HarmonicFieldSolution d = solver.solve(g.mesh, g.weights, heavier);
-  EXPECT_NE(d.work, HarmonicFieldSolution::Work::BackSubstitution);
-  EXPECT_TRUE(bitwiseEqual(d, freshSolve(g.mesh, g.weights, heavier)));
+  FieldConstraints c = g.pairs(0.0, 2.0);
+  c.formulation = SoftConstraintFormulation::PointValues;
+  const HarmonicFieldSolution points = solver.solve(g.mesh, g.weights, c);
+  EXPECT_EQ(points.work, HarmonicFieldSolution::Work::Factorization);
+  c.formulation = SoftConstraintFormulation::LeastSquares;
+  const HarmonicFieldSolution squares = solver.solve(g.mesh, g.weights, c);
+  EXPECT_EQ(squares.work, HarmonicFieldSolution::Work::Factorization);
+  EXPECT_TRUE(bitwiseEqual(squares, freshSolve(g.mesh, g.weights, c)));
+  EXPECT_FALSE(bitwiseEqual(squares, points));
+  c.formulation = SoftConstraintFormulation::PointValues;
+  const HarmonicFieldSolution again = solver.solve(g.mesh, g.weights, c);
+  EXPECT_EQ(again.work, HarmonicFieldSolution::Work::Factorization);
+  EXPECT_TRUE(bitwiseEqual(again, points));
+  // Point values hold the values within 0.5% (least squares, at this weight, within 10%).
+  EXPECT_LE(maximumMisfit(g.mesh, points.field, c.soft), 0.005);
+  EXPECT_LE(maximumMisfit(g.mesh, squares.field, c.soft), 0.1);
 }
 
 TEST(HarmonicField, NewLaplacianWeightsCostAFactorization)
 {
-  const SoftGrid g;
-  HarmonicFieldSolver solver;
-  const FieldConstraints c = g.pairs(0.0, 2.0);
-  ASSERT_EQ(solver.solve(g.mesh, g.weights, c).work, HarmonicFieldSolution::Work::Factorization);
-  const std::vector<double> uniform = weightsFor(g.mesh, LaplacianWeighting::Uniform);
-  const HarmonicFieldSolution b = solver.solve(g.mesh, uniform, c);
-  EXPECT_EQ(b.work, HarmonicFieldSolution::Work::Factorization);
-  EXPECT_TRUE(bitwiseEqual(b, freshSolve(g.mesh, uniform, c)));
+  for (const SoftConstraintFormulation formulation : BothFormulations)
+  {
+    SCOPED_TRACE(formulationName(formulation));
+    const SoftGrid g(formulation);
+    HarmonicFieldSolver solver;
+    const FieldConstraints c = g.pairs(0.0, 2.0);
+    ASSERT_EQ(solver.solve(g.mesh, g.weights, c).work, HarmonicFieldSolution::Work::Factorization);
+    const std::vector<double> uniform = weightsFor(g.mesh, LaplacianWeighting::Uniform);
+    const HarmonicFieldSolution b = solver.solve(g.mesh, uniform, c);
+    EXPECT_EQ(b.work, HarmonicFieldSolution::Work::Factorization);
+    EXPECT_TRUE(bitwiseEqual(b, freshSolve(g.mesh, uniform, c)));
 
-  // One weight changed slightly is a new operator too.
-  std::vector<double> edited = uniform;
-  edited[5] *= 1.5;
-  const HarmonicFieldSolution d = solver.solve(g.mesh, edited, c);
-  EXPECT_EQ(d.work, HarmonicFieldSolution::Work::Factorization);
-  EXPECT_TRUE(bitwiseEqual(d, freshSolve(g.mesh, edited, c)));
+    // One weight changed slightly is a new operator too.
+    std::vector<double> edited = uniform;
+    edited[5] *= 1.5;
+    const HarmonicFieldSolution d = solver.solve(g.mesh, edited, c);
+    EXPECT_EQ(d.work, HarmonicFieldSolution::Work::Factorization);
+    EXPECT_TRUE(bitwiseEqual(d, freshSolve(g.mesh, edited, c)));
 
-  // reset() forgets the factorization.
-  solver.reset();
-  EXPECT_EQ(solver.solve(g.mesh, edited, c).work, HarmonicFieldSolution::Work::Factorization);
+    // reset() forgets the factorization.
+    solver.reset();
+    EXPECT_EQ(solver.solve(g.mesh, edited, c).work, HarmonicFieldSolution::Work::Factorization);
+  }
 }
 
 TEST(HarmonicField, HardOnlyCaching)
@@ -639,6 +696,13 @@ struct MixedCylinder
   TriangleMesh mesh = makeCylinder(1.0, Height, Around, Rings);
   ClosestPointLocator locator{ mesh };
   std::vector<double> weights = cotangentWeights(mesh);
+  SoftConstraintFormulation formulation = FieldConstraints().formulation;
+
+  MixedCylinder() = default;
+  explicit MixedCylinder(SoftConstraintFormulation f)
+    : formulation(f)
+  {
+  }
 
   // Hard 2 at the bottom, 5 at the top; soft constraints at points given as (angle, z), with
   // values of the linear field 2 + 3 z / height plus `offset`.
@@ -646,6 +710,7 @@ struct MixedCylinder
   {
     FieldConstraints c = cylinderRingConstraints(Around, Rings, 2.0, 5.0);
     c.softWeight = w;
+    c.formulation = this->formulation;
     for (const auto& [angle, z] : at)
     {
       const Vector3 p(std::cos(angle), std::sin(angle), z);
@@ -666,75 +731,83 @@ const std::vector<std::pair<double, double>> MixedPoints = { { 0.05, 0.03 }, { 1
 
 TEST(HarmonicField, MixedHardAndConsistentSoftKeepLinearField)
 {
-  const MixedCylinder m;
-  const FieldConstraints c = m.constraints(MixedPoints, 0.0, 3.0);
-  // At least one soft constraint has a hard corner with a non-zero value.
-  bool touchesHard = false;
-  for (const SoftConstraint& s : c.soft)
+  for (const SoftConstraintFormulation formulation : BothFormulations)
   {
-    for (int v : m.mesh.triangle(s.face))
+    SCOPED_TRACE(formulationName(formulation));
+    const MixedCylinder m(formulation);
+    const FieldConstraints c = m.constraints(MixedPoints, 0.0, 3.0);
+    // At least one soft constraint has a hard corner with a non-zero value.
+    bool touchesHard = false;
+    for (const SoftConstraint& s : c.soft)
     {
-      touchesHard = touchesHard || v < MixedCylinder::Around || v >= (MixedCylinder::Rings - 1) * MixedCylinder::Around;
+      for (int v : m.mesh.triangle(s.face))
+      {
+        touchesHard = touchesHard || v < MixedCylinder::Around || v >= (MixedCylinder::Rings - 1) * MixedCylinder::Around;
+      }
     }
+    ASSERT_TRUE(touchesHard);
+    const HarmonicFieldSolution solution = freshSolve(m.mesh, m.weights, c);
+    EXPECT_LE(solution.relativeResidual, 1e-10);
+    for (int v = 0; v < m.mesh.vertexCount(); ++v)
+    {
+      EXPECT_NEAR(solution.field[v], 2.0 + 3.0 * m.mesh.point(v).z() / MixedCylinder::Height, 1e-9) << "vertex " << v;
+    }
+    EXPECT_LE(maximumMisfit(m.mesh, solution.field, c.soft), 1e-9);
   }
-  ASSERT_TRUE(touchesHard);
-  const HarmonicFieldSolution solution = freshSolve(m.mesh, m.weights, c);
-  EXPECT_LE(solution.relativeResidual, 1e-10);
-  for (int v = 0; v < m.mesh.vertexCount(); ++v)
-  {
-    EXPECT_NEAR(solution.field[v], 2.0 + 3.0 * m.mesh.point(v).z() / MixedCylinder::Height, 1e-9) << "vertex " << v;
-  }
-  EXPECT_LE(maximumMisfit(m.mesh, solution.field, c.soft), 1e-9);
 }
 
 TEST(HarmonicField, MixedHardAndSoftCaching)
 {
-  const MixedCylinder m;
-  HarmonicFieldSolver solver;
-  double previous = std::numeric_limits<double>::infinity();
-  // The soft values pull the field away from the linear one; more weight, smaller misfit.
-  for (double w : { 0.3, 3.0, 30.0 })
+  for (const SoftConstraintFormulation formulation : BothFormulations)
   {
-    const FieldConstraints c = m.constraints(MixedPoints, 0.4, w);
-    const HarmonicFieldSolution s = freshSolve(m.mesh, m.weights, c);
-    const double misfit = maximumMisfit(m.mesh, s.field, c.soft);
-    EXPECT_LT(misfit, previous) << "softWeight " << w;
-    EXPECT_LT(misfit, 0.4) << "softWeight " << w;
-    previous = misfit;
-    for (int i = 0; i < MixedCylinder::Around; ++i)
+    SCOPED_TRACE(formulationName(formulation));
+    const MixedCylinder m(formulation);
+    HarmonicFieldSolver solver;
+    double previous = std::numeric_limits<double>::infinity();
+    // The soft values pull the field away from the linear one; more weight, smaller misfit.
+    for (double w : { 0.3, 3.0, 30.0 })
     {
-      EXPECT_EQ(s.field[i], 2.0);
-      EXPECT_EQ(s.field[(MixedCylinder::Rings - 1) * MixedCylinder::Around + i], 5.0);
+      const FieldConstraints c = m.constraints(MixedPoints, 0.4, w);
+      const HarmonicFieldSolution s = freshSolve(m.mesh, m.weights, c);
+      const double misfit = maximumMisfit(m.mesh, s.field, c.soft);
+      EXPECT_LT(misfit, previous) << "softWeight " << w;
+      EXPECT_LT(misfit, 0.4) << "softWeight " << w;
+      previous = misfit;
+      for (int i = 0; i < MixedCylinder::Around; ++i)
+      {
+        EXPECT_EQ(s.field[i], 2.0);
+        EXPECT_EQ(s.field[(MixedCylinder::Rings - 1) * MixedCylinder::Around + i], 5.0);
+      }
     }
+
+    const FieldConstraints first = m.constraints(MixedPoints, 0.4, 3.0);
+    const HarmonicFieldSolution a = solver.solve(m.mesh, m.weights, first);
+    EXPECT_EQ(a.work, HarmonicFieldSolution::Work::Factorization);
+
+    const FieldConstraints newValues = m.constraints(MixedPoints, -0.2, 3.0);
+    const HarmonicFieldSolution b = solver.solve(m.mesh, m.weights, newValues);
+    EXPECT_EQ(b.work, HarmonicFieldSolution::Work::BackSubstitution);
+    EXPECT_TRUE(bitwiseEqual(b, freshSolve(m.mesh, m.weights, newValues)));
+
+    // New hard values at the same vertices: a back-substitution as well.
+    FieldConstraints newHard = newValues;
+    std::fill(newHard.dirichletValues.begin(), newHard.dirichletValues.end(), 1.0);
+    const HarmonicFieldSolution h = solver.solve(m.mesh, m.weights, newHard);
+    EXPECT_EQ(h.work, HarmonicFieldSolution::Work::BackSubstitution);
+    EXPECT_TRUE(bitwiseEqual(h, freshSolve(m.mesh, m.weights, newHard)));
+
+    std::vector<std::pair<double, double>> movedPoints = MixedPoints;
+    movedPoints[2].second += 0.2;
+    const FieldConstraints moved = m.constraints(movedPoints, -0.2, 3.0);
+    const HarmonicFieldSolution c = solver.solve(m.mesh, m.weights, moved);
+    EXPECT_EQ(c.work, HarmonicFieldSolution::Work::Update);
+    EXPECT_TRUE(bitwiseEqual(c, freshSolve(m.mesh, m.weights, moved)));
+
+    const std::vector<double> uniform = weightsFor(m.mesh, LaplacianWeighting::Uniform);
+    const HarmonicFieldSolution d = solver.solve(m.mesh, uniform, moved);
+    EXPECT_EQ(d.work, HarmonicFieldSolution::Work::Factorization);
+    EXPECT_TRUE(bitwiseEqual(d, freshSolve(m.mesh, uniform, moved)));
   }
-
-  const FieldConstraints first = m.constraints(MixedPoints, 0.4, 3.0);
-  const HarmonicFieldSolution a = solver.solve(m.mesh, m.weights, first);
-  EXPECT_EQ(a.work, HarmonicFieldSolution::Work::Factorization);
-
-  const FieldConstraints newValues = m.constraints(MixedPoints, -0.2, 3.0);
-  const HarmonicFieldSolution b = solver.solve(m.mesh, m.weights, newValues);
-  EXPECT_EQ(b.work, HarmonicFieldSolution::Work::BackSubstitution);
-  EXPECT_TRUE(bitwiseEqual(b, freshSolve(m.mesh, m.weights, newValues)));
-
-  // New hard values at the same vertices: a back-substitution as well.
-  FieldConstraints newHard = newValues;
-  std::fill(newHard.dirichletValues.begin(), newHard.dirichletValues.end(), 1.0);
-  const HarmonicFieldSolution h = solver.solve(m.mesh, m.weights, newHard);
-  EXPECT_EQ(h.work, HarmonicFieldSolution::Work::BackSubstitution);
-  EXPECT_TRUE(bitwiseEqual(h, freshSolve(m.mesh, m.weights, newHard)));
-
-  std::vector<std::pair<double, double>> movedPoints = MixedPoints;
-  movedPoints[2].second += 0.2;
-  const FieldConstraints moved = m.constraints(movedPoints, -0.2, 3.0);
-  const HarmonicFieldSolution c = solver.solve(m.mesh, m.weights, moved);
-  EXPECT_EQ(c.work, HarmonicFieldSolution::Work::Update);
-  EXPECT_TRUE(bitwiseEqual(c, freshSolve(m.mesh, m.weights, moved)));
-
-  const std::vector<double> uniform = weightsFor(m.mesh, LaplacianWeighting::Uniform);
-  const HarmonicFieldSolution d = solver.solve(m.mesh, uniform, moved);
-  EXPECT_EQ(d.work, HarmonicFieldSolution::Work::Factorization);
-  EXPECT_TRUE(bitwiseEqual(d, freshSolve(m.mesh, uniform, moved)));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -757,10 +830,11 @@ std::vector<SoftConstraint> scatteredConstraints(const TriangleMesh& mesh, int c
   return soft;
 }
 
-// The least-squares field by dense normal equations over every non-hard vertex (SeamCut
-// Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F = -L_F^T L_D f_D + w^2 C_F^T (c - C_D f_D), L_F the
-// Laplacian rows of the non-hard vertices.
-std::vector<double> denseLeastSquares(const TriangleMesh& mesh, const std::vector<double>& weights,
+// The field by dense normal equations over every non-hard vertex, L_F the Laplacian rows of the
+// non-hard vertices. Least squares (SeamCut, Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F =
+// -L_F^T L_D f_D + w^2 C_F^T (c - C_D f_D). Point values: (L_FF + K w C_F^T C_F) f_F = -L_FD f_D +
+// K w C_F^T (c - C_D f_D), K = HarmonicFieldSolver::PointValueStiffness.
+std::vector<double> denseReference(const TriangleMesh& mesh, const std::vector<double>& weights,
   const FieldConstraints& c)
 {
   const int n = mesh.vertexCount();
@@ -804,9 +878,10 @@ std::vector<double> denseLeastSquares(const TriangleMesh& mesh, const std::vecto
       }
     }
   }
-  Eigen::MatrixXd M = LF.transpose() * LF;
-  Eigen::VectorXd b = -LF.transpose() * known;
-  const double w2 = c.softWeight * c.softWeight;
+  const bool squared = c.formulation == SoftConstraintFormulation::LeastSquares;
+  Eigen::MatrixXd M = squared ? Eigen::MatrixXd(LF.transpose() * LF) : LF;
+  Eigen::VectorXd b = squared ? Eigen::VectorXd(-LF.transpose() * known) : Eigen::VectorXd(-known);
+  const double w2 = squared ? c.softWeight * c.softWeight : HarmonicFieldSolver::PointValueStiffness * c.softWeight;
   const int k = static_cast<int>(c.soft.size());
   Eigen::MatrixXd C = Eigen::MatrixXd::Zero(m, k); // C_F^T
   Eigen::VectorXd target(k);
@@ -849,38 +924,43 @@ double largestDifference(const std::vector<double>& a, const std::vector<double>
 } // namespace
 
 // Few constraints go through the Woodbury identity, many through the factor of the whole
-// system: both give the dense least-squares solution, with and without hard values, on two
-// components (one of them without hard values, so with an offset unknown).
-TEST(HarmonicField, FewAndManySoftConstraintsMatchDenseLeastSquares)
+// system: both give the dense solution of either formulation, with and without hard values, on
+// two components (one of them without hard values, so with an offset unknown).
+TEST(HarmonicField, FewAndManySoftConstraintsMatchDenseReference)
 {
   const TriangleMesh mesh = twoSpheres(2); // 2 x 162 vertices
   const std::vector<double> weights = cotangentWeights(mesh);
-  for (const bool withHard : { false, true })
+  for (const auto formulation : { SoftConstraintFormulation::LeastSquares, SoftConstraintFormulation::PointValues })
   {
-    for (const int count : { 12, 400 }) // 400 constraints exceed half the unknowns
+    for (const bool withHard : { false, true })
     {
-      SCOPED_TRACE(std::string(withHard ? "hard and " : "") + std::to_string(count) + " soft");
-      FieldConstraints c;
-      c.softWeight = 0.7;
-      c.soft = scatteredConstraints(mesh, count, 7u + static_cast<unsigned>(count));
-      if (withHard)
+      for (const int count : { 12, 400 }) // 400 constraints exceed half the unknowns
       {
-        c.dirichletVertices = { 0, 5 };
-        c.dirichletValues = { 2.0, -1.5 };
+        SCOPED_TRACE(std::string(formulation == SoftConstraintFormulation::PointValues ? "point values, " : "") +
+          (withHard ? "hard and " : "") + std::to_string(count) + " soft");
+        FieldConstraints c;
+        c.formulation = formulation;
+        c.softWeight = 0.7;
+        c.soft = scatteredConstraints(mesh, count, 7u + static_cast<unsigned>(count));
+        if (withHard)
+        {
+          c.dirichletVertices = { 0, 5 };
+          c.dirichletValues = { 2.0, -1.5 };
+        }
+        const std::vector<double> reference = denseReference(mesh, weights, c);
+        HarmonicFieldSolver solver;
+        const HarmonicFieldSolution solution = solver.solve(mesh, weights, c);
+        EXPECT_LE(largestDifference(solution.field, reference), 1e-8);
+        EXPECT_LE(solution.relativeResidual, 1e-9);
+        // New values only: a back-substitution, still the reference.
+        for (SoftConstraint& k : c.soft)
+        {
+          k.value = 0.5 - k.value;
+        }
+        const HarmonicFieldSolution again = solver.solve(mesh, weights, c);
+        EXPECT_EQ(again.work, HarmonicFieldSolution::Work::BackSubstitution);
+        EXPECT_LE(largestDifference(again.field, denseReference(mesh, weights, c)), 1e-8);
       }
-      const std::vector<double> reference = denseLeastSquares(mesh, weights, c);
-      HarmonicFieldSolver solver;
-      const HarmonicFieldSolution solution = solver.solve(mesh, weights, c);
-      EXPECT_LE(largestDifference(solution.field, reference), 1e-8);
-      EXPECT_LE(solution.relativeResidual, 1e-9);
-      // New values only: a back-substitution, still the reference.
-      for (SoftConstraint& k : c.soft)
-      {
-        k.value = 0.5 - k.value;
-      }
-      const HarmonicFieldSolution again = solver.solve(mesh, weights, c);
-      EXPECT_EQ(again.work, HarmonicFieldSolution::Work::BackSubstitution);
-      EXPECT_LE(largestDifference(again.field, denseLeastSquares(mesh, weights, c)), 1e-8);
     }
   }
 }
@@ -891,12 +971,16 @@ TEST(HarmonicField, ThousandsOfSoftConstraints)
 {
   const TriangleMesh mesh = makeIcosphere(1.0, 3);
   const std::vector<double> weights = cotangentWeights(mesh);
-  FieldConstraints c;
-  c.soft = scatteredConstraints(mesh, 6000, 11u);
-  HarmonicFieldSolver solver;
-  const HarmonicFieldSolution solution = solver.solve(mesh, weights, c);
-  EXPECT_EQ(solution.work, HarmonicFieldSolution::Work::Factorization);
-  EXPECT_LE(largestDifference(solution.field, denseLeastSquares(mesh, weights, c)), 1e-8);
+  for (const auto formulation : { SoftConstraintFormulation::LeastSquares, SoftConstraintFormulation::PointValues })
+  {
+    FieldConstraints c;
+    c.formulation = formulation;
+    c.soft = scatteredConstraints(mesh, 6000, 11u);
+    HarmonicFieldSolver solver;
+    const HarmonicFieldSolution solution = solver.solve(mesh, weights, c);
+    EXPECT_EQ(solution.work, HarmonicFieldSolution::Work::Factorization);
+    EXPECT_LE(largestDifference(solution.field, denseReference(mesh, weights, c)), 1e-8);
+  }
 }
 
 TEST(HarmonicField, RefusesMissingConstraints)
@@ -1004,6 +1088,12 @@ TEST(HarmonicField, RefusesBadSoftConstraints)
   expectKerfError([&] { solver.solve(grid, weights, soft(0, 1.0, -2.0)); }, "weight");
   expectKerfError(
     [&] { solver.solve(grid, weights, soft(0, 1.0, std::numeric_limits<double>::quiet_NaN())); }, "weight");
+  FieldConstraints unknown = soft(0, 1.0, 1.0);
+  unknown.formulation = static_cast<SoftConstraintFormulation>(7);
+  expectKerfError([&] { solver.solve(grid, weights, unknown); }, "formulation");
+  // The solver still works after every refusal.
+  EXPECT_EQ(solver.solve(grid, weights, soft(0, 1.0, 1.0)).relativeResidual,
+    freshSolve(grid, weights, soft(0, 1.0, 1.0)).relativeResidual);
 }
 
 // ---------------------------------------------------------------------------------------------

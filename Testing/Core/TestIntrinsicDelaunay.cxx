@@ -1,6 +1,7 @@
 // The intrinsic Delaunay Laplacian: Delaunay flips, nonnegative weights, linear precision and the maximum principle.
 #include "Error.h"
 #include "Geodesic/IntrinsicTriangulation.h"
+#include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <random>
 #include <vector>
 
@@ -16,24 +18,6 @@ using namespace kerf;
 
 namespace
 {
-// makeGrid over [0, cells]^2 with every interior point moved by up to `jitter` cells in x and y.
-TriangleMesh jitteredGrid(int cells, double jitter, unsigned seed)
-{
-  const TriangleMesh grid = makeGrid(cells, cells, cells, cells);
-  std::vector<Vector3> points = grid.points();
-  std::mt19937 random(seed);
-  std::uniform_real_distribution<double> offset(-jitter, jitter);
-  for (int v = 0; v < grid.vertexCount(); ++v)
-  {
-    if (!grid.isBoundaryVertex(v))
-    {
-      points[v].x() += offset(random);
-      points[v].y() += offset(random);
-    }
-  }
-  return TriangleMesh(points, grid.triangles());
-}
-
 // A triangular lattice (rows offset by half a cell) squashed in y by `squash`: every interior
 // vertex sits in a fan of obtuse triangles (apex angles near 180 degrees for a small squash).
 TriangleMesh squashedLattice(int columns, int rows, double squash)
@@ -113,7 +97,7 @@ double linearPrecisionError(const TriangleMesh& mesh, const std::vector<double>&
 
 TEST(IntrinsicDelaunay, JitteredGridIsLinearlyPrecise)
 {
-  const TriangleMesh mesh = jitteredGrid(24, 0.25, 7);
+  const TriangleMesh mesh = makeJitteredGrid(24, 0.25, 7);
   const IntrinsicDelaunayLaplacian laplacian = intrinsicDelaunayLaplacian(mesh);
   EXPECT_GT(laplacian.flips, 0);
   EXPECT_GE(*std::min_element(laplacian.weights.begin(), laplacian.weights.end()), 0.0);
@@ -214,5 +198,62 @@ TEST(IntrinsicDelaunay, WeightingNameAndRefusal)
   options.weighting = LaplacianWeighting::IntrinsicDelaunay;
   EXPECT_NE(cacheKey(options), cacheKey(LaplacianWeightOptions()));
   // The jittered grid needs flips that join new vertex pairs: no weights on its own edges.
-  EXPECT_THROW(computeLaplacianWeights(jitteredGrid(8, 0.25, 7), options), Error);
+  EXPECT_THROW(computeLaplacianWeights(makeJitteredGrid(8, 0.25, 7), options), Error);
+}
+
+TEST(IntrinsicDelaunay, HarmonicCutSessionSolvesOnTheIntrinsicTriangles)
+{
+  // Hard values of a linear function on the jittered grid's boundary and soft constraints of
+  // the same function inside its interior triangles: the session solves on the intrinsic
+  // triangles and reads the constraints in the input's triangles, so the linear function is
+  // the exact solution.
+  const auto surface = std::make_shared<Surface>(makeJitteredGrid(24, 0.25, 7));
+  const TriangleMesh& mesh = surface->mesh();
+  HarmonicCutSession session(surface);
+  FieldConstraints constraints;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (mesh.isBoundaryVertex(v))
+    {
+      constraints.dirichletVertices.push_back(v);
+      constraints.dirichletValues.push_back(linear(mesh.point(v)));
+    }
+  }
+  for (int f = 0; f < mesh.faceCount(); f += 41)
+  {
+    const Vector3 barycentric(0.2, 0.5, 0.3);
+    Vector3 point = Vector3::Zero();
+    for (int k = 0; k < 3; ++k)
+    {
+      point += barycentric[k] * mesh.point(mesh.triangle(f)[k]);
+    }
+    constraints.soft.push_back({ f, barycentric, linear(point) });
+  }
+  HarmonicFieldOptions options;
+  options.weights.weighting = LaplacianWeighting::IntrinsicDelaunay;
+  for (const bool soft : { false, true })
+  {
+    FieldConstraints used = constraints;
+    if (!soft)
+    {
+      used.soft.clear();
+    }
+    const HarmonicFieldSolution solution = session.solve(used, options);
+    double error = 0.0;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      error = std::max(error, std::abs(solution.field[v] - linear(mesh.point(v))));
+    }
+    EXPECT_LE(error, 1e-9) << (soft ? "with soft constraints" : "hard values only");
+    EXPECT_LE(solution.relativeResidual, 1e-10);
+  }
+  // The cotangent weights miss it (negative weights clamped).
+  HarmonicFieldOptions cotangent;
+  const std::vector<double> field = session.solve(constraints, cotangent).field;
+  double error = 0.0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    error = std::max(error, std::abs(field[v] - linear(mesh.point(v))));
+  }
+  EXPECT_GE(error, 1e-3);
 }

@@ -177,3 +177,51 @@ TEST(RoiScissor, RefusesBadInput)
   const auto two = std::make_shared<Surface>(TriangleMesh(points, triangles));
   EXPECT_THROW(roiScissor(*two, { { top, 2.6 }, { Vector3(4.5, 0.0, 0.0), 0.3 } }), Error);
 }
+
+TEST(RoiScissor, ClickDistancesAreKeptPerClick)
+{
+  const std::shared_ptr<Surface> surface = dumbbell();
+  ClickDistances distances(surface);
+  const RoiClick top{ onDumbbell(HalfLength - 0.05, 0.0), 2.6 };
+  const RoiClick side{ onDumbbell(1.2, 3.14), 0.3 };
+  const GeodesicDiscRegion alone = geodesicDiscRegion(*surface, { top }, {}, RoiScissorOptions(), &distances);
+  EXPECT_EQ(distances.computations(), 1);
+  // A second click computes only its own field; the first radius changed computes none.
+  const GeodesicDiscRegion less = geodesicDiscRegion(*surface, { top }, { side }, RoiScissorOptions(), &distances);
+  EXPECT_EQ(distances.computations(), 2);
+  const GeodesicDiscRegion wider =
+    geodesicDiscRegion(*surface, { { top.position, 2.8 } }, { side }, RoiScissorOptions(), &distances);
+  EXPECT_EQ(distances.computations(), 2);
+  // The same regions as without the cache, and faces follow their vertices.
+  EXPECT_EQ(alone.candidate, geodesicDiscRegion(*surface, { top }, {}).candidate);
+  EXPECT_EQ(less.candidate, geodesicDiscRegion(*surface, { top }, { side }).candidate);
+  const TriangleMesh& mesh = surface->mesh();
+  int wholeFacesInside = 0, candidateFaces = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    const int corners = alone.candidate[t[0]] + alone.candidate[t[1]] + alone.candidate[t[2]];
+    candidateFaces += alone.candidateFaces[f];
+    wholeFacesInside += corners == 3 ? 1 : 0;
+    if (corners == 3)
+    {
+      EXPECT_EQ(alone.candidateFaces[f], 1);
+    }
+    if (corners == 0)
+    {
+      EXPECT_EQ(alone.candidateFaces[f], 0);
+    }
+  }
+  EXPECT_GE(candidateFaces, wholeFacesInside);
+  int grown = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    EXPECT_GE(wider.candidate[v], less.candidate[v]);
+    grown += wider.candidate[v] - less.candidate[v];
+  }
+  EXPECT_GT(grown, 0);
+  // The ROI Scissor selection through the cache equals the one without it.
+  const RoiScissorResult cached = roiScissor(*surface, { top }, {}, RoiScissorOptions(), &distances);
+  EXPECT_EQ(distances.computations(), 2);
+  EXPECT_EQ(cached.faceLabels, roiScissor(*surface, { top }).faceLabels);
+}

@@ -129,3 +129,59 @@ TEST(Seams, RefusesBadInput)
   bad.face = -3;
   EXPECT_THROW(field.seam(bad), Error);
 }
+
+TEST(Seams, SessionKeepsTheFieldOfTheSameLine)
+{
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 3));
+  SeamSession session(surface);
+  const std::vector<SurfaceCurve> lines{ equator(surface->mesh()) };
+  SeamOptions options;
+  options.metric.gamma = 1.0;
+  bool reused = true;
+  const SeamField* first = &session.field(lines, options, &reused);
+  EXPECT_FALSE(reused);
+  const std::vector<double> distance = first->distance();
+  EXPECT_EQ(&session.field(lines, options, &reused), first);
+  EXPECT_TRUE(reused);
+  // New options or a new line compute a new field.
+  options.metric.gamma = 2.0;
+  session.field(lines, options, &reused);
+  EXPECT_FALSE(reused);
+  std::vector<SurfaceCurve> moved = lines;
+  moved[0].points[0] = 0.5 * (moved[0].points[0] + moved[0].points[1]);
+  const SeamField& other = session.field(moved, options, &reused);
+  EXPECT_FALSE(reused);
+  EXPECT_EQ(other.sourceLines()[0].points[0], moved[0].points[0]);
+  // Back to the first line and options: the same distances, bit for bit.
+  options.metric.gamma = 1.0;
+  EXPECT_EQ(session.field(lines, options, &reused).distance(), distance);
+  EXPECT_FALSE(reused);
+  // A bad line is refused and the session stays usable.
+  std::vector<SurfaceCurve> offSurface = lines;
+  offSurface[0].points[0] += Vector3(0.0, 0.0, 0.5);
+  EXPECT_THROW(session.field(offSurface, options), Error);
+  EXPECT_EQ(session.field(lines, options).distance(), distance);
+}
+
+TEST(Seams, SeveralLinesOnOneComponent)
+{
+  // The two boundary-free halves of a cut: latitudes +-30 degrees as two source lines; a seam
+  // from the north pole ends on the northern one.
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 4));
+  const TriangleMesh& mesh = surface->mesh();
+  std::vector<double> height(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    height[v] = mesh.point(v).z();
+  }
+  std::vector<SurfaceCurve> lines;
+  for (double z : { -0.5, 0.5 })
+  {
+    const Isoline isoline = extractIsolines(mesh, height, z).at(0);
+    lines.push_back({ isoline.points, isoline.faces, isoline.closed });
+  }
+  const SeamField field(*surface, lines);
+  const SurfacePath seam = field.seam(pointNear(*surface, Vector3(0.1, 0.0, 0.995)));
+  EXPECT_NEAR(seam.curve.points.front().z(), 0.5, 1e-9);
+  EXPECT_NEAR(seam.length, std::asin(0.995) - std::asin(0.5), 0.02);
+}

@@ -1,5 +1,5 @@
-// Sparse Cholesky: solves and low-rank corrections against dense references, and results that
-// do not depend on earlier calls or on the order of the low-rank columns.
+// Sparse Cholesky against dense references for both orderings and every low-rank route; results
+// that do not depend on earlier calls or on the order of the low-rank columns.
 #include "Error.h"
 #include "Harmonic/SparseCholesky.h"
 
@@ -255,4 +255,40 @@ TEST(SparseCholesky, RefusesIndefiniteMatrix)
   SparseCholesky cholesky;
   const Eigen::SparseMatrix<double> negative = -f.A;
   EXPECT_FALSE(cholesky.factor(negative));
+}
+
+TEST(SparseCholesky, OrderingsAndLowRankRoutesAgree)
+{
+  const Fixture f;
+  const int n = static_cast<int>(f.A.rows());
+  const Eigen::SparseMatrix<double> U = lowRankColumns(n, 21, 41);
+  const Eigen::MatrixXd inverseU = f.reference.solve(Eigen::MatrixXd(U));
+  const Eigen::MatrixXd gramReference = Eigen::MatrixXd(U.transpose()) * inverseU;
+  const Eigen::VectorXd s = Eigen::VectorXd::LinSpaced(21, 0.5, -1.0);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  for (const SparseCholesky::Ordering ordering : { SparseCholesky::Ordering::AMD, SparseCholesky::Ordering::METIS })
+  {
+    SparseCholesky cholesky;
+    ASSERT_TRUE(cholesky.factor(f.A, ordering));
+    EXPECT_GT(cholesky.factorNonZeros(), static_cast<std::size_t>(n));
+    EXPECT_LT(relativeError(cholesky.solve(b), f.reference.solve(b)), 1e-9);
+    for (const SparseCholesky::LowRankRoute route : { SparseCholesky::LowRankRoute::SupernodalSweep,
+           SparseCholesky::LowRankRoute::CholmodSolve2, SparseCholesky::LowRankRoute::CholmodSpsolve })
+    {
+      const SparseCholesky::LowRank lowRank = cholesky.prepare(U, route);
+      EXPECT_LT(relativeError(lowRank.gram, gramReference), 1e-9) << static_cast<int>(route);
+      EXPECT_TRUE(bitwiseEqual(lowRank.gram, lowRank.gram.transpose())) << static_cast<int>(route);
+      EXPECT_LT(relativeError(cholesky.apply(lowRank, s), inverseU * s), 1e-9) << static_cast<int>(route);
+      EXPECT_GT(lowRank.reachRows, 0u);
+      EXPECT_LE(lowRank.reachRows, static_cast<std::size_t>(n));
+    }
+    // The reference routes forget nothing the sweep relies on: after them, the sweep still
+    // reuses its own last columns and gives the same bits as afresh.
+    SparseCholesky fresh;
+    ASSERT_TRUE(fresh.factor(f.A, ordering));
+    const SparseCholesky::LowRank afresh = fresh.prepare(U);
+    const SparseCholesky::LowRank again = cholesky.prepare(U);
+    EXPECT_TRUE(bitwiseEqual(again.gram, afresh.gram));
+    EXPECT_TRUE(bitwiseEqual(cholesky.apply(again, s), fresh.apply(afresh, s)));
+  }
 }

@@ -12,6 +12,7 @@
 #include <vtkPolyData.h>
 #include <vtkTestUtilities.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
@@ -20,6 +21,24 @@ namespace kerf
 {
 namespace test
 {
+
+vtkSmartPointer<vtkPolyData> CirclePolyline(double r, double z, int points)
+{
+  const double pi = 3.14159265358979323846;
+  auto line = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> pts;
+  vtkNew<vtkCellArray> cells;
+  cells->InsertNextCell(points + 1);
+  for (int i = 0; i < points; ++i)
+  {
+    const double a = 2.0 * pi * i / points;
+    cells->InsertCellPoint(pts->InsertNextPoint(r * std::cos(a), r * std::sin(a), z));
+  }
+  cells->InsertCellPoint(0);
+  line->SetPoints(pts);
+  line->SetLines(cells);
+  return line;
+}
 
 vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh)
 {

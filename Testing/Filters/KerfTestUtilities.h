@@ -18,6 +18,10 @@ namespace test
 /// A vtkPolyData with the mesh's points (double) and triangles.
 vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh);
 
+/// A circle of radius r at height z around the z axis, as one closed polyline of `points`
+/// points (the last repeats the first).
+vtkSmartPointer<vtkPolyData> CirclePolyline(double r, double z, int points);
+
 /// The path of a file in the source tree, given the -D argument of the test driver.
 std::string SourcePath(int argc, char* argv[], const std::string& relative);
 

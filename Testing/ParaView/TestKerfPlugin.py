@@ -46,6 +46,47 @@ class KerfPluginTest(unittest.TestCase):
             self.assertEqual(information.GetNumberOfPoints(), 9770)
             self.assertEqual(information.GetNumberOfCells(), 19536)
 
+    def test_cut_from_stroke_applies_at_once(self):
+        """A first-time user adds Cut From Stroke to the camel and presses Apply: the stroke
+        starts across the middle of the surface, so a cut comes out without any error."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        cut = simple.CutFromStroke(Input=camel)
+        points = list(cut.StrokePoints)
+        bounds = camel.GetDataInformation().GetBounds()
+        self.assertEqual(len(points), 6)
+        self.assertEqual(points[0], bounds[0])
+        self.assertEqual(points[3], bounds[1])
+        cut.UpdatePipeline()  # an error would print "ERROR:", which fails the test
+        segments = vtk_to_numpy(servermanager.Fetch(cut).GetCellData().GetArray("Segment"))
+        self.assertEqual(len(segments), 19536)
+        self.assertGreaterEqual(segments.max(), 1)
+        self.assertGreaterEqual(servermanager.Fetch(cut, idx=1).GetNumberOfLines(), 1)
+
+    def test_geodesic_distance_on_a_sphere(self):
+        """From the north pole of a sphere of radius 2 the farthest point, the south pole, is
+        half a great circle away: 2 pi."""
+        sphere = simple.Sphere(Radius=RADIUS, ThetaResolution=64, PhiResolution=64)
+        distance = simple.GeodesicDistance(Input=sphere, SourcePoint=[0.0, 0.0, RADIUS])
+        distance.UpdatePipeline()
+        low, high = distance.PointData["GeodesicDistance"].GetRange()
+        self.assertAlmostEqual(low, 0.0, delta=1e-9)
+        self.assertAlmostEqual(high, 3.141592653589793 * RADIUS, delta=0.02 * 3.141592653589793 * RADIUS)
+
+    def test_roi_scissor_selects_a_hoof(self):
+        """One click on the camel's front hoof: the hoof, cut at the fetlock, as in the image test."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        points = vtk_to_numpy(servermanager.Fetch(camel).GetPoints().GetData())
+        hoof = points[points[:, 1].argmin()]
+        roi = simple.ROIScissor(Input=camel, ClickPoint=list(map(float, hoof)), Radius=0.2)
+        roi.UpdatePipeline()
+        region = vtk_to_numpy(servermanager.Fetch(roi).GetCellData().GetArray("RoiRegion"))
+        self.assertEqual(len(region), 19536)
+        self.assertTrue(0 < region.sum() < 0.1 * len(region))
+        boundary = servermanager.Fetch(roi, idx=1)
+        self.assertEqual(boundary.GetNumberOfLines(), 1)
+
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}
         for name, definition in proxy_definitions("filters"):

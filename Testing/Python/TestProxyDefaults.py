@@ -51,6 +51,9 @@ class ProxyDefaults(unittest.TestCase):
 
     def check_repeated(self, obj, element):
         # A repeated property (a list of points): the number of values per command times the count.
+        # Points whose defaults come from the input's bounds (a BoundsDomain) have none of their own.
+        if element.find("BoundsDomain") is not None:
+            return
         count = getattr(obj, "Get" + element.get("set_number_command")[3:])()
         expected = defaults(element) or []
         self.assertEqual(count * int(element.get("number_of_elements_per_command")), len(expected))

@@ -556,6 +556,27 @@ const AnisotropicMetric& anisotropicMetric(const Surface& surface, const Anisotr
   });
 }
 
+GeodesicDistance geodesicDistance(const Surface& surface, const GeodesicSource& source,
+  const GeodesicPathOptions& options, const std::vector<int>& targets)
+{
+  if (!(options.metric.gamma >= 0.0) || !std::isfinite(options.metric.gamma))
+  {
+    throw Error("the anisotropy gamma must be a finite number >= 0, got " + std::to_string(options.metric.gamma));
+  }
+  if (options.metric.gamma == 0.0 && !options.vectorDijkstra)
+  {
+    return HeatGeodesics::of(surface, options.heat).compute(source);
+  }
+  const TriangleMesh& mesh = surface.mesh();
+  VectorDijkstraOptions dijkstra;
+  dijkstra.depth = options.depth;
+  dijkstra.targets = targets;
+  GeodesicDistance result;
+  result.distance = shortTermVectorDijkstra(mesh, anisotropicMetric(surface, options.metric), source, dijkstra).distance;
+  result.faceGradients = computeFaceGradients(mesh, result.distance);
+  return result;
+}
+
 namespace
 {
 // The corners of a surface point's triangle.
@@ -569,19 +590,10 @@ std::vector<int> cornersOf(const TriangleMesh& mesh, const SurfacePoint& p)
 std::vector<Vector3> descentFrom(const Surface& surface, const SurfacePoint& from, const SurfacePoint& to,
   const GeodesicPathOptions& options, const AnisotropicMetric& metric)
 {
-  const TriangleMesh& mesh = surface.mesh();
   GeodesicSource source;
   source.points = { from };
-  if (options.metric.gamma == 0.0 && !options.vectorDijkstra)
-  {
-    const GeodesicDistance distance = HeatGeodesics::of(surface, options.heat).compute(source);
-    return descentDirections(mesh, distance.faceGradients, metric);
-  }
-  VectorDijkstraOptions dijkstra;
-  dijkstra.depth = options.depth;
-  dijkstra.targets = cornersOf(mesh, to);
-  const VectorDijkstraResult distance = shortTermVectorDijkstra(mesh, metric, source, dijkstra);
-  return descentDirections(mesh, computeFaceGradients(mesh, distance.distance), metric);
+  const GeodesicDistance distance = geodesicDistance(surface, source, options, cornersOf(surface.mesh(), to));
+  return descentDirections(surface.mesh(), distance.faceGradients, metric);
 }
 } // namespace
 

@@ -59,6 +59,14 @@ struct GeodesicPathOptions
 /// The metric of a surface for these options, cached on it (Surface::derived).
 const AnisotropicMetric& anisotropicMetric(const Surface& surface, const AnisotropicMetricOptions& options);
 
+/// The distance from a source under the options' metric, with its gradient per triangle: the
+/// heat method (set-up cached on the surface) for gamma = 0 unless `vectorDijkstra`, else
+/// Short-Term Vector Dijkstra (the metric cached on the surface), which stops once `targets` are
+/// settled (VectorDijkstraOptions::targets; empty: the whole component). Throws kerf::Error for
+/// a bad source (checkGeodesicSource), a depth below 1 and a negative or NaN gamma.
+GeodesicDistance geodesicDistance(const Surface& surface, const GeodesicSource& source,
+  const GeodesicPathOptions& options, const std::vector<int>& targets = {});
+
 /// The shortest path from `from` to `to` under the options' metric: the distance field from
 /// `from`, then the streamline traced back from `to`, reversed so that it runs from `from` to
 /// `to` and ends exactly on both. Throws kerf::Error for points off the surface or on different

@@ -1,8 +1,9 @@
 // ROI Scissor's candidate discs, boundary constraints, field on the region, feature points and geodesic boundary.
 #include "Geodesic/RoiScissor.h"
 
+#include "CacheKey.h"
 #include "Error.h"
-#include "Geometry/ClosestPoint.h"
+#include "Geodesic/SurfaceLocation.h"
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deque>
+#include <functional>
 #include <limits>
 #include <map>
 #include <string>
@@ -20,23 +22,7 @@ namespace kerf
 
 SurfacePoint projectClick(const Surface& surface, const Vector3& position, double tolerance)
 {
-  if (!position.allFinite())
-  {
-    throw Error("a click has non-finite coordinates");
-  }
-  const ClosestPointLocator::Hit hit = surface.locator().closest(position);
-  if (hit.face < 0)
-  {
-    throw Error("a click needs a mesh with triangles");
-  }
-  if (hit.distance > tolerance * surface.mesh().boundingBoxDiagonal())
-  {
-    throw Error("a click lies off the surface (" + std::to_string(hit.distance) + " from its nearest point)");
-  }
-  SurfacePoint point;
-  point.face = hit.face;
-  point.barycentric = hit.barycentric;
-  return point;
+  return projectOntoSurface(surface, position, tolerance * surface.mesh().boundingBoxDiagonal(), "a click");
 }
 
 namespace
@@ -193,24 +179,57 @@ void checkRadius(double radius)
 }
 } // namespace
 
-RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options)
+ClickDistances::ClickDistances(std::shared_ptr<const Surface> surface)
+  : SurfacePointer(std::move(surface))
+{
+  if (!this->SurfacePointer)
+  {
+    throw Error("click distances need a surface");
+  }
+}
+
+std::shared_ptr<const std::vector<double>> ClickDistances::from(
+  const SurfacePoint& point, const HeatGeodesicOptions& options)
+{
+  const std::string key = cacheKey(options);
+  for (const Field& field : this->Fields)
+  {
+    if (field.point.face == point.face && field.point.barycentric == point.barycentric && field.options == key)
+    {
+      return field.distance;
+    }
+  }
+  GeodesicSource source;
+  source.points = { point };
+  auto distance =
+    std::make_shared<const std::vector<double>>(HeatGeodesics::of(this->surface(), options).compute(source).distance);
+  ++this->Computations;
+  this->Fields.push_back({ point, key, distance });
+  if (this->Fields.size() > MaximumFields)
+  {
+    this->Fields.pop_front();
+  }
+  return distance;
+}
+
+GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options, ClickDistances* cache)
 {
   const TriangleMesh& mesh = surface.mesh();
   if (added.empty())
   {
     throw Error("ROI Scissor needs at least one click that adds a region");
   }
-  if (!(options.innerFraction > 0.0 && options.innerFraction < 1.0) || options.isolineCount < 1 ||
-    !(options.segmentFraction > 0.0))
+  if (!(options.innerFraction > 0.0 && options.innerFraction < 1.0))
   {
-    throw Error("ROI Scissor's inner fraction must be in (0, 1), and its isoline count and segment fraction positive");
+    throw Error("ROI Scissor's inner fraction must be in (0, 1)");
   }
-  RoiScissorResult result;
+  GeodesicDiscRegion region;
   const int n = mesh.vertexCount();
 
   // Section 4.1: the candidate region from geodesic discs.
-  std::vector<std::vector<double>> distances;
+  std::vector<std::shared_ptr<const std::vector<double>>> distances;
+  std::vector<double> radii;
   int component = -1;
   for (const std::vector<RoiClick>* clicks : { &added, &subtracted })
   {
@@ -224,35 +243,61 @@ RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>&
         throw Error("ROI Scissor's clicks lie on different connected components of the mesh");
       }
       component = c;
-      result.clicks.push_back(point);
-      GeodesicSource source;
-      source.points = { point };
-      distances.push_back(HeatGeodesics::of(surface, options.paths.heat).compute(source).distance);
+      region.clicks.push_back(point);
+      radii.push_back(click.radius);
+      if (cache)
+      {
+        distances.push_back(cache->from(point, options.paths.heat));
+      }
+      else
+      {
+        GeodesicSource source;
+        source.points = { point };
+        distances.push_back(std::make_shared<const std::vector<double>>(
+          HeatGeodesics::of(surface, options.paths.heat).compute(source).distance));
+      }
     }
   }
-  result.candidate.assign(n, 0);
+  // Inside the union of the added discs and outside every subtracted one, at distances d.
+  const std::size_t addedCount = added.size();
+  const auto inside = [&](const std::function<double(std::size_t)>& d) {
+    bool in = false;
+    for (std::size_t i = 0; i < addedCount; ++i)
+    {
+      in = in || d(i) < radii[i];
+    }
+    for (std::size_t j = addedCount; j < radii.size(); ++j)
+    {
+      in = in && !(d(j) < radii[j]);
+    }
+    return in;
+  };
+  region.candidate.assign(n, 0);
   std::vector<char> one(n, 0), zero(n, 0);
   for (int v = 0; v < n; ++v)
   {
-    bool inside = false;
-    for (std::size_t i = 0; i < added.size(); ++i)
+    region.candidate[v] = inside([&](std::size_t i) { return (*distances[i])[v]; }) ? 1 : 0;
+    for (std::size_t i = 0; i < addedCount; ++i)
     {
-      inside = inside || distances[i][v] < added[i].radius;
-      if (distances[i][v] < options.innerFraction * added[i].radius)
+      if ((*distances[i])[v] < options.innerFraction * radii[i])
       {
         one[v] = 1;
       }
     }
-    for (std::size_t j = 0; j < subtracted.size(); ++j)
-    {
-      inside = inside && !(distances[added.size() + j][v] < subtracted[j].radius);
-    }
-    result.candidate[v] = inside ? 1 : 0;
   }
-  for (std::size_t i = 0; i < added.size(); ++i)
+  region.candidateFaces.assign(mesh.faceCount(), 0);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    region.candidateFaces[f] = inside([&](std::size_t i) {
+      const std::vector<double>& d = *distances[i];
+      return (d[t[0]] + d[t[1]] + d[t[2]]) / 3.0;
+    }) ? 1 : 0;
+  }
+  for (std::size_t i = 0; i < addedCount; ++i)
   {
     // At least the corner nearest to the click.
-    const SurfacePoint& p = result.clicks[i];
+    const SurfacePoint& p = region.clicks[i];
     int nearest = 0;
     p.barycentric.maxCoeff(&nearest);
     one[mesh.triangle(p.face)[nearest]] = 1;
@@ -260,14 +305,14 @@ RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>&
   for (int e = 0; e < mesh.edgeCount(); ++e)
   {
     const std::array<int, 2>& ev = mesh.edgeVertices(e);
-    if (result.candidate[ev[0]] != result.candidate[ev[1]])
+    if (region.candidate[ev[0]] != region.candidate[ev[1]])
     {
       zero[ev[0]] = zero[ev[1]] = 1;
     }
   }
   for (int v = 0; v < n; ++v)
   {
-    if (one[v] && !result.candidate[v])
+    if (one[v] && !region.candidate[v])
     {
       one[v] = 0; // a click inside a subtracted disc
     }
@@ -277,21 +322,39 @@ RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>&
     }
     if (one[v])
     {
-      result.oneVertices.push_back(v);
+      region.oneVertices.push_back(v);
     }
     if (zero[v])
     {
-      result.zeroVertices.push_back(v);
+      region.zeroVertices.push_back(v);
     }
   }
-  if (result.zeroVertices.empty())
+  if (region.zeroVertices.empty())
   {
     throw Error("the clicks' discs cover their whole component: the radius is larger than the mesh");
   }
-  if (result.oneVertices.empty())
+  if (region.oneVertices.empty())
   {
     throw Error("every added click lies inside a subtracted disc");
   }
+  return region;
+}
+
+RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options, ClickDistances* distances)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  if (options.isolineCount < 1 || !(options.segmentFraction > 0.0))
+  {
+    throw Error("ROI Scissor's isoline count and segment fraction must be positive");
+  }
+  RoiScissorResult result;
+  const int n = mesh.vertexCount();
+  GeodesicDiscRegion region = geodesicDiscRegion(surface, added, subtracted, options, distances);
+  result.clicks = std::move(region.clicks);
+  result.candidate = std::move(region.candidate);
+  result.oneVertices = std::move(region.oneVertices);
+  result.zeroVertices = std::move(region.zeroVertices);
 
   // The field on the region's faces only (a submesh), weights from the whole surface.
   for (int f = 0; f < mesh.faceCount(); ++f)

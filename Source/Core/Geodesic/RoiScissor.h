@@ -5,6 +5,9 @@
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
 
+#include <deque>
+#include <memory>
+#include <string>
 #include <vector>
 
 namespace kerf
@@ -38,6 +41,58 @@ struct RoiScissorOptions
   double clickTolerance = 1e-3;
 };
 
+/// Distance fields from click points by the heat method, kept per point and heat options, so
+/// that a selection that gains a click (or changes a radius) computes only the new click's
+/// field. A session for filters (SurfaceInput::SessionFor); keeps the last MaximumFields
+/// fields. Not thread-safe.
+class ClickDistances
+{
+public:
+  explicit ClickDistances(std::shared_ptr<const Surface> surface);
+
+  const Surface& surface() const { return *this->SurfacePointer; }
+  /// The distance from `point` per vertex, computed unless kept.
+  std::shared_ptr<const std::vector<double>> from(const SurfacePoint& point, const HeatGeodesicOptions& options);
+  /// Fields computed so far.
+  int computations() const { return this->Computations; }
+
+  static constexpr std::size_t MaximumFields = 16;
+
+private:
+  struct Field
+  {
+    SurfacePoint point;
+    std::string options;
+    std::shared_ptr<const std::vector<double>> distance;
+  };
+  std::shared_ptr<const Surface> SurfacePointer;
+  std::deque<Field> Fields; // oldest first
+  int Computations = 0;
+};
+
+/// ROI Scissor's candidate region (section 4.1) and its boundary constraints.
+struct GeodesicDiscRegion
+{
+  std::vector<SurfacePoint> clicks;  ///< the clicks on the surface (added, then subtracted)
+  std::vector<char> candidate;       ///< per vertex: inside the union minus the difference of discs
+  std::vector<char> candidateFaces;  ///< per face: the same rule at its centroid (distances interpolated)
+  std::vector<int> oneVertices;      ///< constraints 1 (near an added click)
+  std::vector<int> zeroVertices;     ///< constraints 0 (ends of edges crossing the region's border)
+};
+
+/// The union of the geodesic discs C(r) = {i | d_g(i, s) < r} of `added` minus those of
+/// `subtracted` (distances by the heat method from each click's surface point, through
+/// `distances` when given), and the constraints of section 4.1: vertices within innerFraction r
+/// of an added click get 1 (at least the corner nearest to it), both ends of every edge crossing
+/// the region's border get 0. Throws kerf::Error for no added click, a click farther than
+/// clickTolerance from the surface, a radius that is not positive and finite, clicks on
+/// different connected components, a region that covers its whole component (radius larger
+/// than the mesh), added clicks all inside subtracted discs, and inner vertices that meet the
+/// border (radius too small).
+GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options = RoiScissorOptions(),
+  ClickDistances* distances = nullptr);
+
 /// What one ROI Scissor selection produced.
 struct RoiScissorResult
 {
@@ -55,11 +110,8 @@ struct RoiScissorResult
   std::vector<int> faceLabels;           ///< per face: 1 inside the region, 0 outside
 };
 
-/// ROI Scissor (sections 4.1-4.3). The candidate region is the union of the geodesic discs
-/// C(r) = {i | d_g(i, s) < r} of `added` minus those of `subtracted` (distances by the heat
-/// method from each click's surface point). Vertices within innerFraction r of an added click
-/// get 1 (at least the corner nearest to it), both ends of every edge crossing the region's
-/// border get 0. The concavity-aware harmonic field is solved on the submesh of the faces
+/// ROI Scissor (sections 4.1-4.3). The candidate region and its constraints are those of
+/// geodesicDiscRegion (click distances through `distances` when given). The concavity-aware harmonic field is solved on the submesh of the faces
 /// touching the region, with weights computed on the whole surface (their curvature is not cut
 /// short at the submesh's border). The isoline with the highest score among isolineCount uniform
 /// samples is split into k parts of equal length, k = segmentFraction of the triangles it
@@ -68,12 +120,11 @@ struct RoiScissorResult
 /// point; the feature points are joined by anisotropic geodesics into a closed loop. Faces are
 /// labelled by the side of the loops they are on, the first added click's face inside.
 ///
-/// Throws kerf::Error for: no added click, a click farther than clickTolerance from the surface,
-/// a radius that is not positive and finite, a radius larger than the mesh (the region has no
-/// border on its component), clicks on different connected components, a region whose inner
-/// vertices meet its border (radius too small), and a field without a closed isoline.
+/// Throws kerf::Error for geodesicDiscRegion's errors, options out of range, and a field without
+/// a closed isoline.
 RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted = {}, const RoiScissorOptions& options = RoiScissorOptions());
+  const std::vector<RoiClick>& subtracted = {}, const RoiScissorOptions& options = RoiScissorOptions(),
+  ClickDistances* distances = nullptr);
 
 /// The surface point nearest to `position`; throws kerf::Error if it is farther than
 /// tolerance times the bounding-box diagonal.

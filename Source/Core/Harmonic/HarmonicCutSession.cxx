@@ -2,6 +2,7 @@
 #include "Harmonic/HarmonicCutSession.h"
 
 #include "Error.h"
+#include "Geodesic/IntrinsicTriangulation.h"
 #include "Geometry/ClosestPoint.h"
 #include "Harmonic/FieldGradient.h"
 #include "Mesh/MeshValidation.h"
@@ -94,8 +95,35 @@ StrokeConstraintSet HarmonicCutSession::strokeConstraints(
     this->mesh(), this->surface().locator(), this->surface().vertexNormals(), strokes, options);
 }
 
+namespace
+{
+// The intrinsic Delaunay Laplacian of a surface and the scale of its soft constraints.
+struct IntrinsicLaplacianSet
+{
+  IntrinsicDelaunayLaplacian laplacian;
+  double meanDiagonal = 1.0;
+};
+} // namespace
+
 HarmonicFieldSolution HarmonicCutSession::solve(FieldConstraints constraints, const HarmonicFieldOptions& options)
 {
+  constraints.formulation = options.formulation;
+  if (options.weights.weighting == LaplacianWeighting::IntrinsicDelaunay)
+  {
+    // Its edges join vertex pairs the mesh may not join: the field is solved on the intrinsic
+    // triangles (the same points), while soft constraints stay inside the mesh's own triangles,
+    // where the field is read and its isolines extracted.
+    const IntrinsicLaplacianSet& intrinsic =
+      this->surface().derived<IntrinsicLaplacianSet>("intrinsic-delaunay-laplacian", [this] {
+        IntrinsicLaplacianSet set;
+        set.laplacian = intrinsicDelaunayLaplacian(this->mesh());
+        set.meanDiagonal = laplacianMeanDiagonal(set.laplacian.mesh, set.laplacian.weights);
+        return set;
+      });
+    constraints.softWeight = options.softWeight * intrinsic.meanDiagonal;
+    constraints.softTriangles = &this->mesh().triangles();
+    return this->Solver.solve(intrinsic.laplacian.mesh, intrinsic.laplacian.weights, constraints);
+  }
   const LaplacianWeightSet& weights = this->surface().laplacianWeights(options.weights);
   constraints.softWeight = options.softWeight * weights.meanDiagonal;
   return this->Solver.solve(this->mesh(), weights.weights, constraints);

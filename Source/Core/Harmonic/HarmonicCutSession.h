@@ -29,6 +29,8 @@ struct HarmonicFieldOptions
   LaplacianWeightOptions weights;
   /// Weight w of the soft constraints, relative to the Laplacian's mean diagonal entry.
   double softWeight = 1.0;
+  /// How the soft constraints shape the field.
+  SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
 };
 
 /// How the cut is chosen among the field's isolines.
@@ -88,7 +90,9 @@ public:
     const std::vector<std::vector<Vector3>>& strokes, const StrokeOptions& options) const;
 
   /// Solves the field; the factorization is kept while the weights, the hard vertices and the
-  /// kind of constraints stay the same (see HarmonicFieldSolver).
+  /// kind of constraints stay the same (see HarmonicFieldSolver). The intrinsic Delaunay
+  /// weighting is solved on the intrinsic triangulation's edges (intrinsicDelaunayLaplacian,
+  /// cached on the surface), on the same vertices; soft constraints stay in the mesh's triangles.
   HarmonicFieldSolution solve(FieldConstraints constraints, const HarmonicFieldOptions& options);
 
   /// Chooses the cut on a field (one value per mesh vertex). Throws kerf::Error for NaN field

@@ -29,6 +29,17 @@ bool sameSoftLocations(const std::vector<SoftConstraint>& a, const std::vector<S
   return true;
 }
 
+// The corners a soft constraint interpolates between, and its connected component.
+const Triangle& softCorners(const TriangleMesh& mesh, const FieldConstraints& constraints, const SoftConstraint& s)
+{
+  return constraints.softTriangles ? (*constraints.softTriangles)[s.face] : mesh.triangle(s.face);
+}
+
+int softComponent(const TriangleMesh& mesh, const FieldConstraints& constraints, const SoftConstraint& s)
+{
+  return mesh.vertexComponent(softCorners(mesh, constraints, s)[0]);
+}
+
 // Hard values sorted by vertex, with conflicting duplicates refused.
 std::vector<std::pair<int, double>> sortedDirichlet(const FieldConstraints& c, int vertexCount)
 {
@@ -74,6 +85,48 @@ const std::pair<int, double>* findHard(const std::vector<std::pair<int, double>>
   const auto found = std::lower_bound(dirichlet.begin(), dirichlet.end(), std::make_pair(v, -HUGE_VAL));
   return found != dirichlet.end() && found->first == v ? &*found : nullptr;
 }
+
+// The rows and columns of a compressed column-major matrix mapped to new indices (-1: dropped),
+// both maps increasing where defined, so the entries come out in order: one pass, no sorting.
+Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& row,
+  int rows, const std::vector<int>& column, int columns)
+{
+  Eigen::SparseMatrix<double> out(rows, columns);
+  std::vector<int> starts(1, 0);
+  std::vector<int> indices;
+  std::vector<double> values;
+  for (int c = 0; c < static_cast<int>(matrix.outerSize()); ++c)
+  {
+    if (column[c] < 0)
+    {
+      continue;
+    }
+    for (Eigen::SparseMatrix<double>::InnerIterator it(matrix, c); it; ++it)
+    {
+      const int r = row[static_cast<int>(it.row())];
+      if (r >= 0)
+      {
+        indices.push_back(r);
+        values.push_back(it.value());
+      }
+    }
+    starts.push_back(static_cast<int>(indices.size()));
+  }
+  out.resizeNonZeros(static_cast<Eigen::Index>(indices.size()));
+  std::copy(starts.begin(), starts.end(), out.outerIndexPtr());
+  std::copy(indices.begin(), indices.end(), out.innerIndexPtr());
+  std::copy(values.begin(), values.end(), out.valuePtr());
+  return out;
+}
+
+// The weight w of the constraint term w^2 sum_i (C_i f - c_i)^2.
+double penaltyWeight(const FieldConstraints& constraints)
+{
+  return constraints.formulation == SoftConstraintFormulation::PointValues
+    ? std::sqrt(HarmonicFieldSolver::PointValueStiffness * constraints.softWeight)
+    : constraints.softWeight;
+}
+
 } // namespace
 
 /// One call's constraints, checked: the hard values sorted by vertex, and which components have
@@ -85,6 +138,7 @@ struct HarmonicFieldSolver::Problem
   std::vector<double> hardValues;
   std::vector<char> hasHard; // per component
   bool softMode = false;
+  bool squared = false; // least squares: the squared Laplacian is factored
 };
 
 struct HarmonicFieldSolver::Cache
@@ -95,19 +149,20 @@ struct HarmonicFieldSolver::Cache
   std::vector<double> weights;
   std::vector<int> dirichlet; // sorted vertices
   bool softMode = false;
+  bool squared = false;
   bool factored = false;
 
   // Unknowns: `column[v]` indexes vertex v among the free columns, or is -1 for hard and pinned
-  // vertices and points used by no triangle. In soft mode the rows are all non-hard vertices and
-  // one vertex per component without hard values is pinned; its component's offset is a separate
-  // unknown (one entry of `offsetIndex`).
+  // vertices and points used by no triangle. In soft mode one vertex per component without hard
+  // values is pinned; its component's offset is a separate unknown (one entry of `offsetIndex`).
+  // The rows are the columns' vertices, and in least squares also the pins.
   std::vector<int> column;
   std::vector<int> columnVertices;
   std::vector<int> offsetIndex; // component -> offset unknown, or -1
   int offsets = 0;
   Eigen::SparseMatrix<double> laplacian;
   Eigen::SparseMatrix<double> rowsFree, rowsHard; // L_RF and L_RD
-  Eigen::SparseMatrix<double> base;               // L_FF, or L_RF^T L_RF
+  Eigen::SparseMatrix<double> base;               // L_FF, or L_RF^T L_RF (least squares)
   SparseCholesky cholesky;
 
   // Hard-value part, for the current hard values.
@@ -117,7 +172,9 @@ struct HarmonicFieldSolver::Cache
 
   // Soft part, for the current constraint locations and weight.
   std::vector<SoftConstraint> softLocations; // values ignored
+  std::vector<Triangle> softCornerList;       // the corners each one interpolates
   double softWeight = 0.0;
+  SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
   bool prepared = false;
   bool direct = false;           // the prepared form: Woodbury (false) or the direct factor
   Eigen::SparseMatrix<double> u; // w C_F^T
@@ -152,6 +209,12 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   }
   problem.dirichlet = sortedDirichlet(constraints, mesh.vertexCount());
   problem.softMode = !constraints.soft.empty();
+  if (constraints.formulation != SoftConstraintFormulation::PointValues &&
+    constraints.formulation != SoftConstraintFormulation::LeastSquares)
+  {
+    throw Error("unknown soft constraint formulation");
+  }
+  problem.squared = problem.softMode && constraints.formulation == SoftConstraintFormulation::LeastSquares;
   if (problem.dirichlet.empty() && !problem.softMode)
   {
     throw Error("the field has no constraint");
@@ -163,10 +226,19 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   for (std::size_t i = 0; i < constraints.soft.size(); ++i)
   {
     const SoftConstraint& s = constraints.soft[i];
-    if (s.face < 0 || s.face >= mesh.faceCount())
+    const int faces = constraints.softTriangles ? static_cast<int>(constraints.softTriangles->size()) : mesh.faceCount();
+    if (s.face < 0 || s.face >= faces)
     {
       throw Error("soft constraint " + std::to_string(i) + " lies on face " + std::to_string(s.face) +
         ", which is not a face of the mesh");
+    }
+    for (int corner : softCorners(mesh, constraints, s))
+    {
+      if (corner < 0 || corner >= mesh.vertexCount() || mesh.vertexComponent(corner) < 0)
+      {
+        throw Error("soft constraint " + std::to_string(i) + " lies on a triangle whose corner " +
+          std::to_string(corner) + " is not a vertex of the solver's triangles");
+      }
     }
     if (!s.barycentric.allFinite() || !std::isfinite(s.value))
     {
@@ -187,7 +259,7 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   }
   for (const SoftConstraint& s : constraints.soft)
   {
-    constrained[mesh.faceComponent(s.face)] = 1;
+    constrained[softComponent(mesh, constraints, s)] = 1;
   }
   for (int c = 0; c < mesh.componentCount(); ++c)
   {
@@ -219,7 +291,7 @@ bool HarmonicFieldSolver::factorIfChanged(
   const bool operatorChanged = cache.vertexCount != n || cache.triangles != mesh.triangles() ||
     cache.weights != edgeWeights;
   if (!operatorChanged && cache.factored && cache.dirichlet == problem.dirichletVertices &&
-    cache.softMode == problem.softMode)
+    cache.softMode == problem.softMode && cache.squared == problem.squared)
   {
     return false;
   }
@@ -235,6 +307,7 @@ bool HarmonicFieldSolver::factorIfChanged(
   }
   cache.dirichlet = problem.dirichletVertices;
   cache.softMode = problem.softMode;
+  cache.squared = problem.squared;
   std::vector<char> isHard(n, 0);
   for (int v : problem.dirichletVertices)
   {
@@ -253,13 +326,17 @@ bool HarmonicFieldSolver::factorIfChanged(
     {
       continue;
     }
-    row[v] = rows++;
     const int c = mesh.vertexComponent(v);
     if (problem.softMode && !problem.hasHard[c] && cache.offsetIndex[c] < 0)
     {
       cache.offsetIndex[c] = cache.offsets++; // v is the component's pin
+      if (problem.squared)
+      {
+        row[v] = rows++;
+      }
       continue;
     }
+    row[v] = rows++;
     cache.column[v] = static_cast<int>(cache.columnVertices.size());
     cache.columnVertices.push_back(v);
   }
@@ -268,32 +345,10 @@ bool HarmonicFieldSolver::factorIfChanged(
   {
     hardIndex[problem.dirichletVertices[i]] = static_cast<int>(i);
   }
-  std::vector<Eigen::Triplet<double>> free, hard;
-  for (int v = 0; v < n; ++v)
-  {
-    for (Eigen::SparseMatrix<double>::InnerIterator it(cache.laplacian, v); it; ++it)
-    {
-      const int r = row[static_cast<int>(it.row())];
-      if (r < 0)
-      {
-        continue;
-      }
-      if (cache.column[v] >= 0)
-      {
-        free.emplace_back(r, cache.column[v], it.value());
-      }
-      else if (hardIndex[v] >= 0)
-      {
-        hard.emplace_back(r, hardIndex[v], it.value());
-      }
-    }
-  }
   const int columns = cache.columns();
-  cache.rowsFree.resize(rows, columns);
-  cache.rowsFree.setFromTriplets(free.begin(), free.end());
-  cache.rowsHard.resize(rows, static_cast<int>(problem.dirichletVertices.size()));
-  cache.rowsHard.setFromTriplets(hard.begin(), hard.end());
-  if (problem.softMode)
+  cache.rowsFree = submatrix(cache.laplacian, row, rows, cache.column, columns);
+  cache.rowsHard = submatrix(cache.laplacian, row, rows, hardIndex, static_cast<int>(problem.dirichletVertices.size()));
+  if (problem.squared)
   {
     // SeamCut, Eq. 1: the squared Laplacian of the non-hard rows.
     cache.base = Eigen::SparseMatrix<double>(cache.rowsFree.transpose()) * cache.rowsFree;
@@ -303,7 +358,8 @@ bool HarmonicFieldSolver::factorIfChanged(
     cache.base = cache.rowsFree; // square: rows and columns are the free vertices
   }
   cache.base.makeCompressed();
-  if (columns > 0 && !cache.cholesky.factor(cache.base))
+  // AMD: its ordering costs less than the fill it leaves (see SparseCholesky::Ordering).
+  if (columns > 0 && !cache.cholesky.factor(cache.base, SparseCholesky::Ordering::AMD))
   {
     throw Error("the Laplacian system could not be factored (it is not positive definite)");
   }
@@ -322,7 +378,7 @@ Eigen::VectorXd HarmonicFieldSolver::solveHardValues(const Problem& problem)
   if (!problem.dirichlet.empty() && columns > 0)
   {
     const Eigen::VectorXd flux = cache.rowsHard * hard;
-    hardRhs = problem.softMode ? Eigen::VectorXd(-(cache.rowsFree.transpose() * flux)) : Eigen::VectorXd(-flux);
+    hardRhs = problem.squared ? Eigen::VectorXd(-(cache.rowsFree.transpose() * flux)) : Eigen::VectorXd(-flux);
   }
   if (!cache.hardSolved || cache.hardValues != problem.hardValues)
   {
@@ -338,8 +394,14 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
   const TriangleMesh& mesh, const FieldConstraints& constraints, bool direct)
 {
   Cache& cache = *this->State;
+  std::vector<Triangle> corners;
+  for (const SoftConstraint& s : constraints.soft)
+  {
+    corners.push_back(softCorners(mesh, constraints, s));
+  }
   if (cache.prepared && cache.direct == direct && sameSoftLocations(cache.softLocations, constraints.soft) &&
-    cache.softWeight == constraints.softWeight)
+    cache.softCornerList == corners && cache.softWeight == constraints.softWeight &&
+    cache.formulation == constraints.formulation)
   {
     return false;
   }
@@ -353,10 +415,10 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
     const SoftConstraint& s = constraints.soft[i];
     for (int j = 0; j < 3; ++j)
     {
-      const int c = cache.column[mesh.triangle(s.face)[j]];
+      const int c = cache.column[softCorners(mesh, constraints, s)[j]];
       if (c >= 0 && s.barycentric[j] != 0.0)
       {
-        entries.emplace_back(c, i, constraints.softWeight * s.barycentric[j]);
+        entries.emplace_back(c, i, penaltyWeight(constraints) * s.barycentric[j]);
       }
     }
   }
@@ -393,7 +455,9 @@ bool HarmonicFieldSolver::prepareSoftConstraints(
   cache.lowRank = std::move(lowRank);
   cache.direct = direct;
   cache.softLocations = std::move(locations);
+  cache.softCornerList = std::move(corners);
   cache.softWeight = constraints.softWeight;
+  cache.formulation = constraints.formulation;
   cache.prepared = true;
   return true;
 }
@@ -409,10 +473,10 @@ void HarmonicFieldSolver::factorWithConstraints(
   std::vector<double> counts(cache.offsets, 0.0);
   for (int i = 0; i < k; ++i)
   {
-    const int c = cache.offsetIndex[mesh.faceComponent(constraints.soft[i].face)];
+    const int c = cache.offsetIndex[softComponent(mesh, constraints, constraints.soft[i])];
     if (c >= 0)
     {
-      byComponent.emplace_back(i, c, constraints.softWeight);
+      byComponent.emplace_back(i, c, penaltyWeight(constraints));
       counts[c] += 1.0;
     }
   }
@@ -439,7 +503,7 @@ void HarmonicFieldSolver::factorWithConstraints(
   }
   for (int c = 0; c < cache.offsets; ++c)
   {
-    whole.emplace_back(columns + c, columns + c, constraints.softWeight * constraints.softWeight * counts[c]);
+    whole.emplace_back(columns + c, columns + c, penaltyWeight(constraints) * penaltyWeight(constraints) * counts[c]);
   }
   Eigen::SparseMatrix<double> system(columns + cache.offsets, columns + cache.offsets);
   system.setFromTriplets(whole.begin(), whole.end());
@@ -465,13 +529,13 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
     double known = 0.0;
     for (int j = 0; j < 3; ++j)
     {
-      if (const auto* hard = findHard(problem.dirichlet, mesh.triangle(s.face)[j]))
+      if (const auto* hard = findHard(problem.dirichlet, softCorners(mesh, constraints, s)[j]))
       {
         known += s.barycentric[j] * hard->second;
       }
     }
-    q[i] = constraints.softWeight * (s.value - known);
-    const int c = cache.offsetIndex[mesh.faceComponent(s.face)];
+    q[i] = penaltyWeight(constraints) * (s.value - known);
+    const int c = cache.offsetIndex[softComponent(mesh, constraints, s)];
     if (c >= 0)
     {
       E(i, c) = 1.0;
@@ -482,7 +546,7 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
     // The normal equations of ||R x - r||^2 + ||U^T x + w E alpha - q||^2, as a whole.
     Eigen::VectorXd rhs(columns + cache.offsets);
     rhs.head(columns) = hardRhs + cache.u * q;
-    rhs.tail(cache.offsets) = constraints.softWeight * (E.transpose() * q);
+    rhs.tail(cache.offsets) = penaltyWeight(constraints) * (E.transpose() * q);
     const Eigen::VectorXd whole = cache.directCholesky.solve(rhs);
     x = whole.head(columns);
     for (int c = 0; c < cache.offsets; ++c)
@@ -500,10 +564,10 @@ void HarmonicFieldSolver::solveSoftConstraints(const TriangleMesh& mesh, const F
   if (cache.offsets > 0)
   {
     const Eigen::MatrixXd KE = cache.capacitance.solve(E);
-    alpha = (constraints.softWeight * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
+    alpha = (penaltyWeight(constraints) * (E.transpose() * KE)).ldlt().solve(KE.transpose() * q);
   }
   // The free values: x = x_D + A^-1 U s with s = K (q - w E alpha).
-  const Eigen::VectorXd shift = cache.capacitance.solve(q - constraints.softWeight * (E * alpha));
+  const Eigen::VectorXd shift = cache.capacitance.solve(q - penaltyWeight(constraints) * (E * alpha));
   if (columns > 0)
   {
     x += cache.cholesky.apply(cache.lowRank, shift);
@@ -538,14 +602,14 @@ double HarmonicFieldSolver::relativeResidual(const TriangleMesh& mesh, const Fie
       double value = 0.0;
       for (int j = 0; j < 3; ++j)
       {
-        const int v = mesh.triangle(s.face)[j];
+        const int v = softCorners(mesh, constraints, s)[j];
         const int c = cache.column[v];
-        const int o = cache.offsetIndex[mesh.faceComponent(s.face)];
+        const int o = cache.offsetIndex[softComponent(mesh, constraints, s)];
         const auto* hard = findHard(problem.dirichlet, v);
         const double hardValue = hard ? hard->second : 0.0;
         value += s.barycentric[j] * ((c >= 0 ? x[c] : hardValue) + (o >= 0 ? offset[o] : 0.0));
       }
-      misfit[i] = constraints.softWeight * (value - s.value);
+      misfit[i] = penaltyWeight(constraints) * (value - s.value);
     }
     residual += cache.u * misfit;
     scale += (cache.u * Eigen::VectorXd::Ones(k)).norm();

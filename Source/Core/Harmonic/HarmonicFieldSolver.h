@@ -11,12 +11,27 @@ namespace kerf
 {
 
 /// A point inside triangle `face` (barycentric coordinates w.r.t. its corners 0, 1, 2) whose field
-/// value should be `value`, in the least-squares sense.
+/// value should be `value` (how strictly: see SoftConstraintFormulation).
 struct SoftConstraint
 {
   int face = -1;
   Vector3 barycentric = Vector3::Zero();
   double value = 0.0;
+};
+
+/// How soft constraints shape the field (see HarmonicFieldSolver).
+enum class SoftConstraintFormulation
+{
+  /// f is harmonic away from the constraint points and takes their values there: it minimises
+  /// f^T L f + K w sum_i (C_i f - c_i)^2 with the stiff K = HarmonicFieldSolver::
+  /// PointValueStiffness. The plain Laplacian is factored: a first cut costs about a third, a new
+  /// stroke about half of LeastSquares' (Documentation/filters/HarmonicCuts.md). Its cuts follow
+  /// the least-squares ones within half the stroke offset on the benchmark meshes, but bend
+  /// between the points on coarse, stretched triangles.
+  PointValues,
+  /// SeamCut's least squares, ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2; the squared Laplacian is
+  /// factored. Smoother fields and straighter cuts on coarse meshes, at a higher cost.
+  LeastSquares
 };
 
 /// The constraints of one field: any combination of hard Dirichlet values on vertices and soft
@@ -27,6 +42,12 @@ struct FieldConstraints
   std::vector<double> dirichletValues;
   std::vector<SoftConstraint> soft;
   double softWeight = 1.0;
+  /// The triangles the soft constraints' faces index, when they are not the solver mesh's own:
+  /// the intrinsic Delaunay Laplacian is solved on the intrinsic triangles over the same points,
+  /// while constraints stay inside the input's triangles, where the field is read. Null: the
+  /// solver mesh's triangles.
+  const std::vector<Triangle>* softTriangles = nullptr;
+  SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
 };
 
 /// A solved field and how it was obtained.
@@ -45,22 +66,24 @@ struct HarmonicFieldSolution
   Work work = Work::Factorization;
 };
 
-/// Solves for the field f, reusing its factorization while the mesh, the weights and the
-/// constraint locations stay the same.
+/// Solves for the field f, reusing its factorization while the mesh, the weights, the hard
+/// vertices and the formulation stay the same, and its low-rank term while the constraint
+/// locations do.
 ///
 /// With hard constraints only, f is harmonic: L_FF f_F = -L_FD f_D (ROI Scissor, Eq. 1),
-/// free boundaries getting the natural (zero-flux) condition. With soft constraints (SeamCut,
-/// Eq. 1), f minimises ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2 over the free values, where L_F are
-/// the Laplacian rows of the free vertices and C_i interpolates f at the constraint's point with
-/// its barycentric weights: (L_FF^T L_FF + w^2 C_F^T C_F) f_F = -L_FF^T L_FD f_D +
-/// w^2 C_F^T (c - C_D f_D). The first term is factored once per surface, weighting and hard set;
-/// the constraint term is the low-rank correction w^2 C_F^T C_F, applied through the Woodbury
-/// identity (SparseCholesky::prepare/apply), so new strokes cost a sparse forward solve over the
-/// strokes' elimination-tree reach and a k x k solve, and new values only the k x k solve and one
-/// back-substitution. In a component without hard values the Laplacian term annihilates
-/// constants: one vertex of it is fixed at 0 in the factored term and the component's constant
-/// offset becomes a separate unknown fitted to the constraints, so the solution is that of the
-/// system itself, without regularization.
+/// free boundaries getting the natural (zero-flux) condition. With soft constraints C_i (each
+/// interpolates f at the constraint's point with its barycentric weights):
+/// - PointValues: (L_FF + K w C_F^T C_F) f_F = -L_FD f_D + K w C_F^T (c - C_D f_D);
+/// - LeastSquares (SeamCut, Eq. 1): f minimises ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2 over the
+///   free values, L_F the Laplacian rows of the free vertices: (L_F^T L_F + w^2 C_F^T C_F) f_F =
+///   -L_F^T L_FD f_D + w^2 C_F^T (c - C_D f_D).
+/// The first term is factored once per surface, weighting and hard set (AMD ordering); the
+/// constraint term is the low-rank correction U U^T, applied through the Woodbury identity
+/// (SparseCholesky::prepare/apply), so new strokes cost a sparse forward solve over the strokes'
+/// elimination-tree reach and a k x k solve, and new values only the k x k solve and one
+/// back-substitution. In a component without hard values the Laplacian term annihilates constants: one vertex of it is fixed at 0 in the factored term and the
+/// component's constant offset becomes a separate unknown fitted to the constraints, so the
+/// solution is that of the system itself, without regularization.
 ///
 /// Throws kerf::Error for: no constraint, a component without any constraint (its field would
 /// be undefined), indices out of range, NaN values or weights, a vertex given two different
@@ -81,6 +104,11 @@ public:
   /// factored together with the Laplacian term instead of through the Woodbury identity, whose
   /// dense k x k capacitance matrix grows as k^3.
   static constexpr int DirectConstraintCount = 1024;
+
+  /// PointValues: the constraint term is PointValueStiffness w sum_i (C_i f - c_i)^2. Stiff enough
+  /// that the field meets the values within 0.5% on the benchmark meshes; finite, so that
+  /// coincident points with different values average instead of making the system singular.
+  static constexpr double PointValueStiffness = 1e3;
 
 private:
   struct Problem;

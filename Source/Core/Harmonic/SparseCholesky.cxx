@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdint>
 #include <map>
+#include <memory>
+#include <vector>
 
 #ifdef KERF_HAVE_CHOLMOD
 #include <cholmod.h>
@@ -71,11 +73,29 @@ cholmod_dense cholmodView(const double* values, std::size_t n)
   return d;
 }
 
-// Dense kernels of the supernodal forward solve and of the Gram matrix, on row-major blocks of
-// right-hand sides padded to a multiple of ColumnChunk columns. Every right-hand side sees the
-// same arithmetic in the same order whatever the others are, so a column's values do not depend
-// on which columns are solved with it. Each kernel is compiled for AVX-512, AVX2 with FMA and
-// the x86-64 baseline; the processor picks one when the library loads.
+// A pattern-only cholmod_sparse column over `rows` (no copy).
+cholmod_sparse cholmodPattern(std::size_t n, std::vector<int>& rows, int (&pointers)[2])
+{
+  pointers[0] = 0;
+  pointers[1] = static_cast<int>(rows.size());
+  cholmod_sparse s{};
+  s.nrow = n;
+  s.ncol = 1;
+  s.nzmax = std::max<std::size_t>(1, rows.size());
+  s.p = pointers;
+  s.i = rows.data();
+  s.itype = CHOLMOD_INT;
+  s.xtype = CHOLMOD_PATTERN;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.packed = 1;
+  return s;
+}
+
+// Dense kernels of the supernodal forward solve, on row-major blocks of right-hand sides padded
+// to a multiple of ColumnChunk columns. Every right-hand side sees the same arithmetic in the
+// same order whatever the others are, so a column's values do not depend on which columns are
+// solved with it. Compiled for AVX-512, AVX2 with FMA and the x86-64 baseline; the processor
+// picks one when the library loads (the factor's own BLAS kernels are chosen per processor too).
 constexpr int ColumnChunk = 8;
 constexpr int TileRows = 8;
 typedef double Chunk __attribute__((vector_size(ColumnChunk * sizeof(double))));
@@ -165,138 +185,6 @@ void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys
   }
 }
 
-// One supernode of the backward solve L^T x = z: with x already known on the rows below the
-// diagonal block (gathered into g[columns .. rows)) and g[0 .. columns) = z on the block's rows,
-// x_t = (z_t - sum_{i>t} L(i,t) x_i) / L(t,t) for t = columns-1 .. 0, left in g. L is the
-// supernode's column-major block with leading dimension ld. Columns go in blocks of TileRows,
-// whose dot products with the rows below the block stream their columns together.
-KERF_VECTOR_CLONES
-void backwardSupernode(const double* L, int ld, int columns, int rows, double* g)
-{
-  const std::size_t stride = static_cast<std::size_t>(ld);
-  for (int end = columns; end > 0; end -= TileRows)
-  {
-    const int t0 = std::max(0, end - TileRows);
-    const int depth = end - t0;
-    // sums[t] = sum_{i >= end} L(i, t0 + t) x_i: ColumnChunk-wide partial sums, reduced lane by
-    // lane, then the remaining rows.
-    Chunk acc[TileRows];
-    for (int t = 0; t < TileRows; ++t)
-    {
-      acc[t] = Chunk{};
-    }
-    int i = end;
-    for (; i + ColumnChunk <= rows; i += ColumnChunk)
-    {
-      const Chunk x = loadChunk(g + i);
-      for (int t = 0; t < depth; ++t)
-      {
-        acc[t] += loadChunk(L + (t0 + t) * stride + i) * x;
-      }
-    }
-    double sums[TileRows];
-    for (int t = 0; t < depth; ++t)
-    {
-      double sum = 0.0;
-      for (int c = 0; c < ColumnChunk; ++c)
-      {
-        sum += acc[t][c];
-      }
-      for (int j = i; j < rows; ++j)
-      {
-        sum += L[(t0 + t) * stride + j] * g[j];
-      }
-      sums[t] = sum;
-    }
-    // The block's own triangle.
-    for (int t = end - 1; t >= t0; --t)
-    {
-      const double* column = L + t * stride;
-      double value = g[t] - sums[t - t0];
-      for (int j = t + 1; j < end; ++j)
-      {
-        value -= column[j] * g[j];
-      }
-      g[t] = value / column[t];
-    }
-  }
-}
-
-// gram(c + q, j) += sum_{r in [r0, r1)} Y(r, c + q) Y(r, j) for q < 4 and the `Chunks` chunks
-// of columns from j0, continuing each entry's sum in ascending r.
-template <int Chunks>
-KERF_INLINE void gramTile(const double* Y, std::size_t r0, std::size_t r1, int width, int c, int j0, double* gram)
-{
-  constexpr int Columns = 4;
-  Chunk acc[Columns][Chunks];
-  for (int q = 0; q < Columns; ++q)
-  {
-    for (int h = 0; h < Chunks; ++h)
-    {
-      acc[q][h] = loadChunk(gram + static_cast<std::size_t>(c + q) * width + j0 + h * ColumnChunk);
-    }
-  }
-  for (std::size_t r = r0; r < r1; ++r)
-  {
-    const double* yr = Y + r * width;
-    Chunk y[Chunks];
-    for (int h = 0; h < Chunks; ++h)
-    {
-      y[h] = loadChunk(yr + j0 + h * ColumnChunk);
-    }
-    for (int q = 0; q < Columns; ++q)
-    {
-      for (int h = 0; h < Chunks; ++h)
-      {
-        acc[q][h] += yr[c + q] * y[h];
-      }
-    }
-  }
-  for (int q = 0; q < Columns; ++q)
-  {
-    for (int h = 0; h < Chunks; ++h)
-    {
-      storeChunk(gram + static_cast<std::size_t>(c + q) * width + j0 + h * ColumnChunk, acc[q][h]);
-    }
-  }
-}
-
-// The upper triangle (by chunks) of Y^T Y: gram(c, j) = sum_r Y(r,c) Y(r,j), each entry summed
-// in ascending r, for the `width` columns of Y (a multiple of ColumnChunk); gram (width x width)
-// starts at zero. Row blocks keep Y in cache; a block where four columns are all zero only adds
-// exact zeros to their rows and is skipped.
-KERF_VECTOR_CLONES
-void upperGram(const double* Y, std::size_t rows, int width, double* gram)
-{
-  constexpr std::size_t BlockRows = 32;
-  for (std::size_t r0 = 0; r0 < rows; r0 += BlockRows)
-  {
-    const std::size_t r1 = std::min(rows, r0 + BlockRows);
-    for (int c = 0; c < width; c += 4)
-    {
-      bool zero = true;
-      for (std::size_t r = r0; r < r1 && zero; ++r)
-      {
-        const double* yr = Y + r * width + c;
-        zero = yr[0] == 0.0 && yr[1] == 0.0 && yr[2] == 0.0 && yr[3] == 0.0;
-      }
-      if (zero)
-      {
-        continue;
-      }
-      int j0 = c / ColumnChunk * ColumnChunk;
-      for (; j0 + 2 * ColumnChunk <= width; j0 += 2 * ColumnChunk)
-      {
-        gramTile<2>(Y, r0, r1, width, c, j0, gram);
-      }
-      if (j0 < width)
-      {
-        gramTile<1>(Y, r0, r1, width, c, j0, gram);
-      }
-    }
-  }
-}
-
 // CHOLMOD's supernodal factorization runs a few memory copies in OpenMP parallel regions with a
 // fixed team size. On small machines their synchronisation costs more than it saves (a
 // 100k-triangle factorization takes twice as long on two cores), so while one is alive the
@@ -359,20 +247,39 @@ int paddedWidth(int k)
 {
   return std::max(ColumnChunk, (k + ColumnChunk - 1) / ColumnChunk * ColumnChunk);
 }
+
+using ColumnKey = std::vector<std::pair<int, double>>; // a column's entries
+
+/// U's distinct columns, sorted by their entries, and where the sweep computes each: the ones
+/// the last prepare() computed keep their values and come first; the new ones follow from a
+/// whole chunk on.
+struct ColumnPlan
+{
+  std::vector<ColumnKey> keys; // the distinct columns
+  std::vector<int> distinct;   // U's column -> its distinct column
+  std::vector<int> kept, fresh; // distinct columns computed before / not
+  std::vector<int> source;     // each kept column's distinct column in the last call
+  std::vector<int> slot;       // distinct column -> its column in the sweep's rows
+  int freshBase = 0;
+  int width = 0; // values per row in the sweep (a multiple of ColumnChunk)
+};
+
+// C = A^T A (lower triangle) for a row-major A (k x n): BLAS's syrk on the column-major A^T.
+extern "C" void dsyrk_(const char* uplo, const char* trans, const int* n, const int* k, const double* alpha,
+  const double* a, const int* lda, const double* beta, double* c, const int* ldc);
 } // namespace
 
 /// Y = L^-1 P U on its reach, for apply() and for the next prepare().
 struct SparseCholesky::LowRankFactor
 {
-  using Key = std::vector<std::pair<int, double>>; ///< a column's entries
-  std::vector<std::pair<Key, int>> keys; ///< each column of U and its column in y
-  std::vector<int> column;               ///< U's column -> its column in y
-  std::vector<int> supernodes;           ///< the reach, ascending
-  std::vector<int> firstRow;             ///< each reach supernode's first row in y
-  std::vector<int> rows;                 ///< the permuted row of each row of y
-  int width = 0;                         ///< values per row of y (a multiple of ColumnChunk)
-  std::vector<double> y;                 ///< row-major
-  std::uint64_t generation = 0;          ///< the factorization it belongs to
+  std::vector<ColumnKey> keys;  ///< U's distinct columns, sorted
+  std::vector<int> distinct;    ///< U's column -> its distinct column
+  std::vector<int> supernodes;  ///< the reach, ascending
+  std::vector<int> firstRow;    ///< each reach supernode's first row in y
+  std::vector<int> rows;        ///< the permuted row of each row of y
+  std::vector<double> y;        ///< row-major, one value per distinct column
+  std::uint64_t generation = 0; ///< the factorization it belongs to
+  int count() const { return static_cast<int>(this->keys.size()); }
 };
 
 struct SparseCholesky::Implementation
@@ -384,11 +291,18 @@ struct SparseCholesky::Implementation
   std::vector<int> superParent;        // supernodal elimination tree
   mutable std::vector<int> offset;     // workspace: supernode -> first row in a reach, or -1
   mutable std::vector<int> lastOffset; // workspace: supernode -> first row in last's reach, or -1
-  // The last prepare()'s Y: a U that keeps some of its columns (a refined cut) only solves for
-  // the new ones. Each column's values do not depend on the others solved with it, so reuse
-  // gives the same bits as solving afresh.
+  // The last supernodal sweep's Y: a U that keeps some of its columns (a refined cut) only
+  // solves for the new ones. Each column's values do not depend on the others solved with it, so
+  // reuse gives the same bits as solving afresh.
   mutable std::shared_ptr<const LowRankFactor> last;
   std::uint64_t generation = 0; // counts factorizations, so a LowRank knows which it belongs to
+  // A simplicial copy of the factor for cholmod_solve2 with sparse right-hand sides (made on
+  // first use), and cholmod_solve2's reusable workspace.
+  mutable cholmod_factor* simplicial = nullptr;
+  mutable cholmod_dense* solveX = nullptr;
+  mutable cholmod_dense* solveY = nullptr;
+  mutable cholmod_dense* solveE = nullptr;
+  mutable cholmod_sparse* solveXset = nullptr;
 
   Implementation()
   {
@@ -398,12 +312,30 @@ struct SparseCholesky::Implementation
   }
   ~Implementation()
   {
+    this->freeFactors();
+    cholmod_free_dense(&this->solveX, &this->common);
+    cholmod_free_dense(&this->solveY, &this->common);
+    cholmod_free_dense(&this->solveE, &this->common);
+    cholmod_free_sparse(&this->solveXset, &this->common);
+    cholmod_finish(&this->common);
+  }
+  Implementation(const Implementation&) = delete;
+  Implementation& operator=(const Implementation&) = delete;
+
+  void freeFactors()
+  {
     if (this->factor)
     {
       cholmod_free_factor(&this->factor, &this->common);
     }
-    cholmod_finish(&this->common);
+    if (this->simplicial)
+    {
+      cholmod_free_factor(&this->simplicial, &this->common);
+    }
   }
+  // CHOLMOD's calls take a non-const common for its statistics and workspace; the const methods
+  // share it (one thread at a time).
+  cholmod_common* mutableCommon() const { return const_cast<cholmod_common*>(&this->common); }
 
   const int* super() const { return static_cast<const int*>(this->factor->super); }
   const int* pi() const { return static_cast<const int*>(this->factor->pi); }
@@ -453,6 +385,19 @@ struct SparseCholesky::Implementation
     }
     return out;
   }
+
+  // The steps of prepare(), in order; `work` holds the sweep's rows (plan.width values each).
+  static ColumnPlan planColumns(const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous);
+  void reachOfColumns(const ColumnPlan& plan, LowRankFactor& out) const;
+  void copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous, const LowRankFactor& out,
+    std::vector<double>& work) const;
+  void scatterFreshColumns(const ColumnPlan& plan, std::vector<double>& work) const;
+  void sweepFreshColumns(const ColumnPlan& plan, const LowRankFactor& out, std::vector<double>& work) const;
+  void solveFreshColumnsOneByOne(const ColumnPlan& plan, std::vector<double>& work) const;
+  void solveFreshColumnsTogether(const ColumnPlan& plan, std::vector<double>& work) const;
+  static void keepDistinctColumns(const ColumnPlan& plan, const std::vector<double>& work, LowRankFactor& out);
+  static Eigen::MatrixXd gramOf(const LowRankFactor& out);
+  cholmod_factor* simplicialFactor() const;
 };
 
 SparseCholesky::SparseCholesky()
@@ -467,21 +412,27 @@ std::string SparseCholesky::backend()
   return "CHOLMOD";
 }
 
-bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
+std::size_t SparseCholesky::factorNonZeros() const
+{
+  const Implementation& m = *this->Impl;
+  return m.factor ? static_cast<std::size_t>(m.factor->xsize) : 0;
+}
+
+bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering ordering)
 {
   Implementation& m = *this->Impl;
-  if (m.factor)
-  {
-    cholmod_free_factor(&m.factor, &m.common);
-  }
+  m.freeFactors();
   m.last.reset();
   ++m.generation;
-  Eigen::SparseMatrix<double> compressed = A;
-  compressed.makeCompressed();
-  cholmod_sparse s = cholmodView(compressed, -1);
-  // Nested dissection (METIS): less fill than AMD on surface meshes, so shorter reaches.
+  Eigen::SparseMatrix<double> compressed;
+  if (!A.isCompressed())
+  {
+    compressed = A;
+    compressed.makeCompressed();
+  }
+  cholmod_sparse s = cholmodView(A.isCompressed() ? A : compressed, -1);
   m.common.nmethods = 1;
-  m.common.method[0].ordering = CHOLMOD_METIS;
+  m.common.method[0].ordering = ordering == Ordering::AMD ? CHOLMOD_AMD : CHOLMOD_METIS;
   m.common.supernodal = CHOLMOD_SUPERNODAL;
   m.factor = cholmod_analyze(&s, &m.common);
   if (!m.factor)
@@ -534,199 +485,360 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 {
-  Implementation& m = *this->Impl;
+  const Implementation& m = *this->Impl;
   if (!m.factor)
   {
     throw Error("no factorization to solve with");
   }
   cholmod_dense rhs = cholmodView(b.data(), static_cast<std::size_t>(b.size()));
-  cholmod_dense* x = cholmod_solve(CHOLMOD_A, m.factor, &rhs, &m.common);
-  if (!x)
+  if (!cholmod_solve2(CHOLMOD_A, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
   {
     throw Error("the sparse solve failed");
   }
-  Eigen::VectorXd out = Eigen::Map<const Eigen::VectorXd>(static_cast<double*>(x->x), b.size());
-  cholmod_free_dense(&x, &m.common);
-  return out;
+  return Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(m.solveX->x), b.size());
 }
 
-SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U) const
+ColumnPlan SparseCholesky::Implementation::planColumns(
+  const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous)
 {
-  const Implementation& m = *this->Impl;
-  if (!m.factor || U.rows() != static_cast<Eigen::Index>(m.factor->n))
-  {
-    throw Error("the low-rank term does not match the factored matrix");
-  }
   const int k = static_cast<int>(U.cols());
-  checkFinite(U);
-  auto factor = std::make_shared<LowRankFactor>();
-  LowRankFactor& out = *factor;
-  out.generation = m.generation;
-  const std::shared_ptr<const LowRankFactor> previous = m.last;
-
-  // Each column's key is its entries. Columns of the last call keep their values and come first;
-  // the new ones follow from a whole chunk on, so the sweep touches only theirs.
-  std::map<LowRankFactor::Key, int> lastColumn;
-  if (previous)
-  {
-    for (const auto& keyed : previous->keys)
-    {
-      lastColumn.emplace(keyed.first, keyed.second);
-    }
-  }
-  std::vector<LowRankFactor::Key> keys(k);
-  std::vector<int> kept, fresh, source; // source: the kept columns' places in the last Y
+  std::vector<ColumnKey> keys(k);
   for (int c = 0; c < k; ++c)
   {
     for (Eigen::SparseMatrix<double>::InnerIterator it(U, c); it; ++it)
     {
       keys[c].emplace_back(static_cast<int>(it.row()), it.value());
     }
-    const auto found = lastColumn.find(keys[c]);
-    if (found != lastColumn.end())
+  }
+  ColumnPlan plan;
+  plan.keys = keys;
+  std::sort(plan.keys.begin(), plan.keys.end());
+  plan.keys.erase(std::unique(plan.keys.begin(), plan.keys.end()), plan.keys.end());
+  plan.distinct.resize(k);
+  for (int c = 0; c < k; ++c)
+  {
+    plan.distinct[c] =
+      static_cast<int>(std::lower_bound(plan.keys.begin(), plan.keys.end(), keys[c]) - plan.keys.begin());
+  }
+  for (int d = 0; d < static_cast<int>(plan.keys.size()); ++d)
+  {
+    const auto found = previous
+      ? std::lower_bound(previous->keys.begin(), previous->keys.end(), plan.keys[d])
+      : std::vector<ColumnKey>::const_iterator();
+    if (previous && found != previous->keys.end() && *found == plan.keys[d])
     {
-      kept.push_back(c);
-      source.push_back(found->second);
+      plan.kept.push_back(d);
+      plan.source.push_back(static_cast<int>(found - previous->keys.begin()));
     }
     else
     {
-      fresh.push_back(c);
+      plan.fresh.push_back(d);
     }
   }
-  const int keptCount = static_cast<int>(kept.size());
-  const int freshBase = keptCount == 0 || fresh.empty() ? keptCount : paddedWidth(keptCount);
-  out.width = paddedWidth(freshBase + static_cast<int>(fresh.size()));
-  out.column.assign(k, 0);
+  const int keptCount = static_cast<int>(plan.kept.size());
+  plan.freshBase = keptCount == 0 || plan.fresh.empty() ? keptCount : paddedWidth(keptCount);
+  plan.width = paddedWidth(plan.freshBase + static_cast<int>(plan.fresh.size()));
+  plan.slot.assign(plan.keys.size(), 0);
   for (int q = 0; q < keptCount; ++q)
   {
-    out.column[kept[q]] = q;
+    plan.slot[plan.kept[q]] = q;
   }
-  for (std::size_t f = 0; f < fresh.size(); ++f)
+  for (std::size_t f = 0; f < plan.fresh.size(); ++f)
   {
-    out.column[fresh[f]] = freshBase + static_cast<int>(f);
+    plan.slot[plan.fresh[f]] = plan.freshBase + static_cast<int>(f);
   }
-  for (int c = 0; c < k; ++c)
-  {
-    out.keys.emplace_back(keys[c], out.column[c]);
-  }
+  return plan;
+}
 
-  // The reach: L^-1 P u is nonzero only on the ancestors of u's rows.
+void SparseCholesky::Implementation::reachOfColumns(const ColumnPlan& plan, LowRankFactor& out) const
+{
+  // L^-1 P u is nonzero only on the ancestors of u's rows. Leaves `offset` marked for the
+  // reach's supernodes (the caller's Marks guard over out.supernodes clears them).
   std::vector<int> starts;
-  for (const LowRankFactor::Key& key : keys)
+  for (const ColumnKey& key : plan.keys)
   {
     for (const auto& entry : key)
     {
-      starts.push_back(m.supernodeOf[m.inversePermutation[entry.first]]);
+      starts.push_back(this->supernodeOf[this->inversePermutation[entry.first]]);
     }
   }
   std::size_t rowCount = 0;
-  const Marks reachMarks(m.offset, out.supernodes);
-  m.reachOf(starts, out.supernodes, rowCount);
-  out.rows = m.rowsOf(out.supernodes, rowCount);
+  this->reachOf(starts, out.supernodes, rowCount);
+  out.rows = this->rowsOf(out.supernodes, rowCount);
   for (int node : out.supernodes)
   {
-    out.firstRow.push_back(m.offset[node]);
+    out.firstRow.push_back(this->offset[node]);
   }
-  const std::vector<int>& reach = out.supernodes;
-  const std::size_t width = static_cast<std::size_t>(out.width);
+}
 
-  // Y row by row: the kept columns from the last Y where a row is in its reach, else zero.
-  out.y.resize(rowCount * width);
+void SparseCholesky::Implementation::copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous,
+  const LowRankFactor& out, std::vector<double>& work) const
+{
+  // The sweep's rows: the kept columns from the last Y where a row is in its reach, else zero.
+  const std::size_t width = static_cast<std::size_t>(plan.width);
+  work.assign(out.rows.size() * width, 0.0);
+  if (plan.kept.empty())
   {
-    static const std::vector<int> none;
-    const Marks lastMarks(m.lastOffset, previous ? previous->supernodes : none);
-    if (previous)
-    {
-      for (std::size_t i = 0; i < previous->supernodes.size(); ++i)
-      {
-        m.lastOffset[previous->supernodes[i]] = previous->firstRow[i];
-      }
-    }
-    for (std::size_t r = 0; r < rowCount; ++r)
-    {
-      double* row = out.y.data() + r * width;
-      std::fill(row, row + width, 0.0);
-      const int j = out.rows[r];
-      const int node = m.supernodeOf[j];
-      if (keptCount > 0 && m.lastOffset[node] >= 0)
-      {
-        const double* from = previous->y.data() +
-          static_cast<std::size_t>(m.lastOffset[node] + j - m.super()[node]) * static_cast<std::size_t>(previous->width);
-        for (int q = 0; q < keptCount; ++q)
-        {
-          row[q] = from[source[q]];
-        }
-      }
-    }
+    return;
   }
-
-  // New columns: Y = L^-1 P U, supernode by supernode in ascending (topological) order: a dense
-  // triangular solve with the diagonal block, then the update of the rows below it.
-  if (!fresh.empty())
+  const Marks lastMarks(this->lastOffset, previous->supernodes);
+  for (std::size_t i = 0; i < previous->supernodes.size(); ++i)
   {
-    for (int c : fresh)
+    this->lastOffset[previous->supernodes[i]] = previous->firstRow[i];
+  }
+  const std::size_t count = static_cast<std::size_t>(previous->count());
+  for (std::size_t r = 0; r < out.rows.size(); ++r)
+  {
+    const int j = out.rows[r];
+    const int node = this->supernodeOf[j];
+    if (this->lastOffset[node] >= 0)
     {
-      for (const auto& entry : keys[c])
+      const double* from =
+        previous->y.data() + static_cast<std::size_t>(this->lastOffset[node] + j - this->super()[node]) * count;
+      double* row = work.data() + r * width;
+      for (std::size_t q = 0; q < plan.kept.size(); ++q)
       {
-        out.y[static_cast<std::size_t>(m.position(m.inversePermutation[entry.first])) * width + out.column[c]] += entry.second;
+        row[q] = from[plan.source[q]];
       }
-    }
-    std::vector<double*> targets;
-    std::vector<int> chunks; // the chunks of new columns not zero on the supernode
-    for (int node : reach)
-    {
-      const int columns = m.super()[node + 1] - m.super()[node];
-      const int rows = m.pi()[node + 1] - m.pi()[node];
-      double* ys = out.y.data() + static_cast<std::size_t>(m.offset[node]) * width;
-      // A chunk that is zero on the supernode's rows stays zero and changes nothing below:
-      // skipping it is exact.
-      chunks.clear();
-      for (int c0 = freshBase; c0 < out.width; c0 += ColumnChunk)
-      {
-        bool zero = true;
-        for (int t = 0; t < columns && zero; ++t)
-        {
-          for (int c = 0; c < ColumnChunk; ++c)
-          {
-            zero = zero && ys[static_cast<std::size_t>(t) * width + c0 + c] == 0.0;
-          }
-        }
-        if (!zero)
-        {
-          chunks.push_back(c0);
-        }
-      }
-      if (chunks.empty())
-      {
-        continue;
-      }
-      targets.resize(static_cast<std::size_t>(rows - columns));
-      for (int i = columns; i < rows; ++i)
-      {
-        targets[i - columns] = out.y.data() + static_cast<std::size_t>(m.position(m.rows()[m.pi()[node] + i])) * width;
-      }
-      forwardSupernode(m.values() + m.px()[node], rows, columns, rows, ys, targets.data(), out.width,
-        chunks.data(), static_cast<int>(chunks.size()));
     }
   }
+}
 
-  // U^T A^-1 U = Y^T Y, in U's column order (+ 0.0 makes every zero positive, so skipped zero
-  // blocks cannot show in the sign of a zero).
-  std::vector<double> gram(width * width, 0.0);
-  upperGram(out.y.data(), rowCount, out.width, gram.data());
-  LowRank result;
-  result.gram.resize(k, k);
+void SparseCholesky::Implementation::scatterFreshColumns(const ColumnPlan& plan, std::vector<double>& work) const
+{
+  // P U's new columns into the sweep's rows.
+  for (int d : plan.fresh)
+  {
+    for (const auto& entry : plan.keys[d])
+    {
+      work[static_cast<std::size_t>(this->position(this->inversePermutation[entry.first])) * plan.width +
+        plan.slot[d]] += entry.second;
+    }
+  }
+}
+
+void SparseCholesky::Implementation::sweepFreshColumns(
+  const ColumnPlan& plan, const LowRankFactor& out, std::vector<double>& work) const
+{
+  // Y = L^-1 P U on the new columns, supernode by supernode in ascending (topological) order: a
+  // dense triangular solve with the diagonal block, then the update of the rows below it.
+  this->scatterFreshColumns(plan, work);
+  const std::size_t width = static_cast<std::size_t>(plan.width);
+  std::vector<double*> targets;
+  std::vector<int> chunks; // the chunks of new columns not zero on the supernode
+  for (int node : out.supernodes)
+  {
+    const int columns = this->super()[node + 1] - this->super()[node];
+    const int rows = this->pi()[node + 1] - this->pi()[node];
+    double* ys = work.data() + static_cast<std::size_t>(this->offset[node]) * width;
+    // A chunk that is zero on the supernode's rows stays zero and changes nothing below:
+    // skipping it is exact.
+    chunks.clear();
+    for (int c0 = plan.freshBase; c0 < plan.width; c0 += ColumnChunk)
+    {
+      bool zero = true;
+      for (int t = 0; t < columns && zero; ++t)
+      {
+        for (int c = 0; c < ColumnChunk; ++c)
+        {
+          zero = zero && ys[static_cast<std::size_t>(t) * width + c0 + c] == 0.0;
+        }
+      }
+      if (!zero)
+      {
+        chunks.push_back(c0);
+      }
+    }
+    if (chunks.empty())
+    {
+      continue;
+    }
+    targets.resize(static_cast<std::size_t>(rows - columns));
+    for (int i = columns; i < rows; ++i)
+    {
+      targets[i - columns] = work.data() + static_cast<std::size_t>(this->position(this->rows()[this->pi()[node] + i])) * width;
+    }
+    forwardSupernode(this->values() + this->px()[node], rows, columns, rows, ys, targets.data(), plan.width,
+      chunks.data(), static_cast<int>(chunks.size()));
+  }
+}
+
+cholmod_factor* SparseCholesky::Implementation::simplicialFactor() const
+{
+  if (!this->simplicial)
+  {
+    this->simplicial = cholmod_copy_factor(this->factor, this->mutableCommon());
+    if (!this->simplicial ||
+      !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 0, this->simplicial, this->mutableCommon()))
+    {
+      throw Error("the factor could not be converted to simplicial form");
+    }
+  }
+  return this->simplicial;
+}
+
+void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan& plan, std::vector<double>& work) const
+{
+  // One cholmod_solve2 per new column with its entries as the sparse right-hand side (Bset): L x
+  // = P u over x's pattern, on a simplicial copy of the factor (Bset needs one).
+  cholmod_factor* simplicial = this->simplicialFactor();
+  const std::size_t n = this->factor->n;
+  std::vector<double> rhs(n, 0.0);
+  std::vector<int> setRows;
+  int setPointers[2];
+  for (int d : plan.fresh)
+  {
+    setRows.clear();
+    for (const auto& entry : plan.keys[d])
+    {
+      const int j = this->inversePermutation[entry.first];
+      rhs[j] += entry.second;
+      setRows.push_back(j);
+    }
+    cholmod_sparse set = cholmodPattern(n, setRows, setPointers);
+    cholmod_dense b = cholmodView(rhs.data(), n);
+    if (!cholmod_solve2(CHOLMOD_L, simplicial, &b, &set, &this->solveX, &this->solveXset, &this->solveY,
+          &this->solveE, this->mutableCommon()))
+    {
+      throw Error("the sparse solve failed");
+    }
+    const int* pattern = static_cast<const int*>(this->solveXset->i);
+    const int count = static_cast<const int*>(this->solveXset->p)[1];
+    const double* x = static_cast<const double*>(this->solveX->x);
+    for (int e = 0; e < count; ++e)
+    {
+      work[static_cast<std::size_t>(this->position(pattern[e])) * plan.width + plan.slot[d]] = x[pattern[e]];
+    }
+    for (int j : setRows)
+    {
+      rhs[j] = 0.0;
+    }
+  }
+}
+
+void SparseCholesky::Implementation::solveFreshColumnsTogether(const ColumnPlan& plan, std::vector<double>& work) const
+{
+  // cholmod_spsolve on all new columns: it solves dense blocks of four and keeps the nonzeros.
+  std::vector<Eigen::Triplet<double>> entries;
+  for (std::size_t f = 0; f < plan.fresh.size(); ++f)
+  {
+    for (const auto& entry : plan.keys[plan.fresh[f]])
+    {
+      entries.emplace_back(this->inversePermutation[entry.first], static_cast<int>(f), entry.second);
+    }
+  }
+  Eigen::SparseMatrix<double> permuted(
+    static_cast<Eigen::Index>(this->factor->n), static_cast<Eigen::Index>(plan.fresh.size()));
+  permuted.setFromTriplets(entries.begin(), entries.end());
+  permuted.makeCompressed();
+  cholmod_sparse b = cholmodView(permuted, 0);
+  cholmod_sparse* x = cholmod_spsolve(CHOLMOD_L, this->factor, &b, this->mutableCommon());
+  if (!x)
+  {
+    throw Error("the sparse solve failed");
+  }
+  const int* xp = static_cast<const int*>(x->p);
+  const int* xi = static_cast<const int*>(x->i);
+  const double* xx = static_cast<const double*>(x->x);
+  for (std::size_t f = 0; f < plan.fresh.size(); ++f)
+  {
+    for (int e = xp[f]; e < xp[f + 1]; ++e)
+    {
+      work[static_cast<std::size_t>(this->position(xi[e])) * plan.width + plan.slot[plan.fresh[f]]] = xx[e];
+    }
+  }
+  cholmod_free_sparse(&x, this->mutableCommon());
+}
+
+void SparseCholesky::Implementation::keepDistinctColumns(
+  const ColumnPlan& plan, const std::vector<double>& work, LowRankFactor& out)
+{
+  // Y row by row in the distinct columns' order, whatever the sweep's layout was (+ 0.0 makes
+  // every zero positive).
+  out.keys = plan.keys;
+  out.distinct = plan.distinct;
+  const std::size_t count = plan.keys.size();
+  out.y.resize(out.rows.size() * count);
+  for (std::size_t r = 0; r < out.rows.size(); ++r)
+  {
+    const double* from = work.data() + r * static_cast<std::size_t>(plan.width);
+    double* to = out.y.data() + r * count;
+    for (std::size_t d = 0; d < count; ++d)
+    {
+      to[d] = from[plan.slot[d]] + 0.0;
+    }
+  }
+}
+
+Eigen::MatrixXd SparseCholesky::Implementation::gramOf(const LowRankFactor& out)
+{
+  // U^T A^-1 U = Y^T Y by the BLAS (syrk) on the distinct columns in their sorted order: every U
+  // with the same columns, in any order and whatever the last prepare() kept, gives it the same
+  // matrix, so the entries depend only on U.
+  const int count = out.count();
+  const int rows = static_cast<int>(out.rows.size());
+  Eigen::MatrixXd product = Eigen::MatrixXd::Zero(count, count);
+  if (count > 0 && rows > 0)
+  {
+    const char lower = 'L', plain = 'N';
+    const double one = 1.0, zero = 0.0;
+    dsyrk_(&lower, &plain, &count, &rows, &one, out.y.data(), &count, &zero, product.data(), &count);
+  }
+  const int k = static_cast<int>(out.distinct.size());
+  Eigen::MatrixXd gram(k, k);
   for (int a = 0; a < k; ++a)
   {
     for (int b = 0; b < k; ++b)
     {
-      const int i = std::min(out.column[a], out.column[b]);
-      const int j = std::max(out.column[a], out.column[b]);
-      result.gram(a, b) = gram[static_cast<std::size_t>(i) * width + j] + 0.0;
+      const int i = out.distinct[a], j = out.distinct[b];
+      gram(a, b) = product(std::max(i, j), std::min(i, j)) + 0.0;
     }
   }
-  m.last = factor;
+  return gram;
+}
+
+SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U, LowRankRoute route) const
+{
+  const Implementation& m = *this->Impl;
+  if (!m.factor || U.rows() != static_cast<Eigen::Index>(m.factor->n))
+  {
+    throw Error("the low-rank term does not match the factored matrix");
+  }
+  checkFinite(U);
+  const bool sweep = route == LowRankRoute::SupernodalSweep;
+  const std::shared_ptr<const LowRankFactor> previous = sweep ? m.last : nullptr;
+  const ColumnPlan plan = Implementation::planColumns(U, previous.get());
+  auto factor = std::make_shared<LowRankFactor>();
+  LowRankFactor& out = *factor;
+  out.generation = m.generation;
+  const Marks reachMarks(m.offset, out.supernodes);
+  m.reachOfColumns(plan, out);
+  std::vector<double> work;
+  m.copyKeptColumns(plan, previous.get(), out, work);
+  if (!plan.fresh.empty())
+  {
+    switch (route)
+    {
+      case LowRankRoute::SupernodalSweep:
+        m.sweepFreshColumns(plan, out, work);
+        break;
+      case LowRankRoute::CholmodSolve2:
+        m.solveFreshColumnsOneByOne(plan, work);
+        break;
+      case LowRankRoute::CholmodSpsolve:
+        m.solveFreshColumnsTogether(plan, work);
+        break;
+    }
+  }
+  Implementation::keepDistinctColumns(plan, work, out);
+  LowRank result;
+  result.gram = Implementation::gramOf(out);
+  result.reachRows = out.rows.size();
   result.factor = factor;
+  if (sweep)
+  {
+    m.last = factor;
+  }
   return result;
 }
 
@@ -734,50 +846,38 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
 {
   const Implementation& m = *this->Impl;
   if (!m.factor || !lowRank.factor || lowRank.factor->generation != m.generation ||
-    s.size() != static_cast<Eigen::Index>(lowRank.factor->column.size()))
+    s.size() != static_cast<Eigen::Index>(lowRank.factor->distinct.size()))
   {
     throw Error("the low-rank term does not belong to this factorization or has another size");
   }
   const LowRankFactor& f = *lowRank.factor;
   const int n = static_cast<int>(m.factor->n);
-  // z = Y s on the reach (summed in U's column order, wherever a column sits in y), then
-  // P^T L^-T z.
+  // z = Y s on the reach (s summed over equal columns in U's order), then P^T L^-T z with
+  // CHOLMOD's supernodal backward solve.
+  Eigen::VectorXd t = Eigen::VectorXd::Zero(f.count());
+  for (Eigen::Index c = 0; c < s.size(); ++c)
+  {
+    t[f.distinct[c]] += s[c];
+  }
+  const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> y(
+    f.y.data(), static_cast<Eigen::Index>(f.rows.size()), f.count());
+  const Eigen::VectorXd reach = y * t;
   Eigen::VectorXd z = Eigen::VectorXd::Zero(n);
-  const int k = static_cast<int>(f.column.size());
   for (std::size_t r = 0; r < f.rows.size(); ++r)
   {
-    const double* row = f.y.data() + r * static_cast<std::size_t>(f.width);
-    double value = 0.0;
-    for (int c = 0; c < k; ++c)
-    {
-      value += row[f.column[c]] * s[c];
-    }
-    z[f.rows[r]] = value;
+    z[f.rows[r]] = reach[static_cast<Eigen::Index>(r)];
   }
-  // Supernodes from the root down: each one's rows below its diagonal block are solved.
-  std::vector<double> g;
-  for (int node = static_cast<int>(m.factor->nsuper) - 1; node >= 0; --node)
+  cholmod_dense rhs = cholmodView(z.data(), static_cast<std::size_t>(n));
+  if (!cholmod_solve2(CHOLMOD_Lt, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
   {
-    const int first = m.super()[node];
-    const int columns = m.super()[node + 1] - first;
-    const int rows = m.pi()[node + 1] - m.pi()[node];
-    const int* pattern = m.rows() + m.pi()[node];
-    g.resize(static_cast<std::size_t>(rows));
-    for (int i = 0; i < rows; ++i)
-    {
-      g[i] = z[pattern[i]];
-    }
-    backwardSupernode(m.values() + m.px()[node], rows, columns, rows, g.data());
-    for (int t = 0; t < columns; ++t)
-    {
-      z[first + t] = g[t];
-    }
+    throw Error("the sparse solve failed");
   }
+  const double* x = static_cast<const double*>(m.solveX->x);
   const int* perm = static_cast<const int*>(m.factor->Perm);
   Eigen::VectorXd out(n);
   for (int r = 0; r < n; ++r)
   {
-    out[perm[r]] = z[r] + 0.0;
+    out[perm[r]] = x[r] + 0.0;
   }
   return out;
 }
@@ -810,7 +910,12 @@ std::string SparseCholesky::backend()
   return "Eigen SimplicialLDLT";
 }
 
-bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A)
+std::size_t SparseCholesky::factorNonZeros() const
+{
+  return this->Impl->ready ? static_cast<std::size_t>(this->Impl->solver.matrixL().nestedExpression().nonZeros()) : 0;
+}
+
+bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering)
 {
   Implementation& m = *this->Impl;
   ++m.generation;
@@ -828,7 +933,7 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
   return this->Impl->solver.solve(b);
 }
 
-SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U) const
+SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U, LowRankRoute) const
 {
   const Implementation& m = *this->Impl;
   if (!m.ready || U.rows() != m.solver.rows())

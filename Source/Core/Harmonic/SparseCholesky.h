@@ -15,15 +15,19 @@ namespace kerf
 /// A + U U^T for any sparse U (n x k) through the Woodbury identity without touching the factor:
 /// (A + U U^T)^-1 = A^-1 - G (I + U^T G)^-1 G^T, G = A^-1 U.
 ///
-/// With CHOLMOD the factor is a supernodal L L^T with a fill-reducing (METIS) permutation P. For
-/// a sparse U, Y = L^-1 P U is nonzero only on the supernodes on the paths from U's rows to the
-/// root of the elimination tree (the "reach"), which constraints confined to a region of the
-/// surface keep short: one sweep over the reach computes all k columns together with dense
-/// kernels, U^T A^-1 U is Y^T Y, and A^-1 U s is one backward solve P^T L^-T Y s. The last
-/// prepare()'s Y is kept, so a U that adds columns to the previous one only sweeps the new
-/// ones. Each column's arithmetic is the same whatever the others are, so every result depends
-/// only on A and U, never on earlier calls. Without CHOLMOD, G is formed by k solves. One object
-/// serves one thread at a time (its const methods share workspace).
+/// With CHOLMOD the factor is a supernodal L L^T with a fill-reducing permutation P. For a sparse
+/// U, Y = L^-1 P U is nonzero only on the supernodes on the paths from U's rows to the root of the
+/// elimination tree (the "reach"), which constraints confined to a region of the surface keep
+/// short: one sweep over the reach computes all k columns together with dense vector kernels
+/// (3 to 11 times faster than CHOLMOD's sparse solves, see Documentation/filters/
+/// HarmonicCuts.md), U^T A^-1 U is Y^T Y (Eigen's product), and A^-1 U s is one backward solve
+/// P^T L^-T Y s (CHOLMOD's). The last prepare()'s Y is kept, so a U that adds columns to the
+/// previous one only sweeps the new ones. Each column's arithmetic in the sweep is the same
+/// whatever the others are, and the Gram matrix is formed from U's distinct columns in a fixed
+/// order, so every result depends only on A and U, never on earlier calls or on the order of U's
+/// columns (bit for bit on one machine: the BLAS and the sweep pick their kernels per
+/// processor). Without CHOLMOD, G is formed by k solves. One object serves one thread at a time
+/// (its const methods share workspace).
 class SparseCholesky
 {
 public:
@@ -32,8 +36,20 @@ public:
   SparseCholesky(const SparseCholesky&) = delete;
   SparseCholesky& operator=(const SparseCholesky&) = delete;
 
-  /// Factors A (only its lower triangle is read). False if A is not positive definite.
-  bool factor(const Eigen::SparseMatrix<double>& A);
+  /// Fill-reducing orderings of the factorization. On the cotangent Laplacians of surface meshes
+  /// AMD's ordering costs far less than the flops METIS' nested dissection saves, on one core.
+  enum class Ordering
+  {
+    AMD,  ///< approximate minimum degree: fast to compute, more fill
+    METIS ///< nested dissection: less fill, slower to compute
+  };
+
+  /// Factors the symmetric matrix A (only its lower triangle is read). False if A is not
+  /// positive definite. Without CHOLMOD the ordering is Eigen's AMD.
+  bool factor(const Eigen::SparseMatrix<double>& A, Ordering ordering = Ordering::AMD);
+
+  /// Nonzeros of the factor L (0 before the first factorization).
+  std::size_t factorNonZeros() const;
 
   /// A^-1 b.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
@@ -44,11 +60,23 @@ public:
   {
     Eigen::MatrixXd gram; ///< U^T A^-1 U (k x k)
     std::shared_ptr<const LowRankFactor> factor; ///< what apply() reads
+    std::size_t reachRows = 0; ///< rows of L^-1 P U that can be nonzero
+  };
+
+  /// How prepare() computes Y = L^-1 P U. The CHOLMOD routes are the references the sweep is
+  /// measured and tested against; they do not reuse the last call's columns. Without CHOLMOD
+  /// every route is Eigen's solve.
+  enum class LowRankRoute
+  {
+    SupernodalSweep, ///< one sweep over the supernodes of the reach with dense vector kernels
+    CholmodSolve2,   ///< one cholmod_solve2 per column with its entries as sparse right-hand side
+                     ///< (Bset), on a simplicial copy of the factor made on first use
+    CholmodSpsolve   ///< cholmod_spsolve on all columns (dense blocks of four)
   };
 
   /// Prepares A^-1 U for a sparse U with A's number of rows. Throws kerf::Error for another
   /// number of rows, no factorization, or NaN or infinite entries.
-  LowRank prepare(const Eigen::SparseMatrix<double>& U) const;
+  LowRank prepare(const Eigen::SparseMatrix<double>& U, LowRankRoute route = LowRankRoute::SupernodalSweep) const;
 
   /// A^-1 U s. Throws kerf::Error if lowRank came from an earlier factorization or s has
   /// another size than U's number of columns.

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 #include <utility>
 
 namespace kerf
@@ -161,6 +162,23 @@ TriangleMesh makeGrid(double width, double height, int columns, int rows)
     }
   }
   return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed)
+{
+  const TriangleMesh grid = makeGrid(cells, cells, cells, cells);
+  std::vector<Vector3> points = grid.points();
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> offset(-jitter, jitter);
+  for (int v = 0; v < grid.vertexCount(); ++v)
+  {
+    if (!grid.isBoundaryVertex(v))
+    {
+      points[v].x() += offset(random);
+      points[v].y() += offset(random);
+    }
+  }
+  return TriangleMesh(points, grid.triangles());
 }
 
 double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& lobeRadii,

@@ -23,6 +23,11 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings);
 /// each quad split along its diagonal. Vertex (i, j) has index j * (columns + 1) + i.
 TriangleMesh makeGrid(double width, double height, int columns, int rows);
 
+/// makeGrid over [0, cells]^2 with every interior point moved by up to `jitter` cells in x and y
+/// (uniformly, from a std::mt19937 seeded with `seed`): obtuse triangles whose cotangent
+/// Laplacian is not linearly precise, for the intrinsic Delaunay weighting's tests.
+TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed);
+
 /// Two lobes joined by a neck: an icosphere (`levels` subdivisions) stretched along z to
 /// [-halfLength, halfLength], with radius `lobeRadii[0]` below the neck and `lobeRadii[1]` above
 /// it (blended smoothly), pinched by the factor (1 - neckDepth) around z = neckHeight. A surface

@@ -9,6 +9,15 @@ exactly as the command-line program does: both call the same runner, vtkSegmenta
 
 Rendering needs a display: run it under `xvfb-run -a` on a headless machine, or pass
 --no-pictures.
+
+On many machines, the same runner under ParaView's MPI build spreads the models over the ranks
+and gathers the results on rank 0, which writes the same results.csv and summary.csv as a
+serial run::
+
+    mpirun -np 4 pvbatch --symmetric -- "$(python3 -c 'import kerf.benchmark as b; print(b.__file__)')" \
+        --data ../shared/data/psb-dev --method harmonic-cuts --no-pictures -o out
+
+(with the build's kerf package on PYTHONPATH and its libraries on LD_LIBRARY_PATH).
 """
 
 import argparse
@@ -35,6 +44,42 @@ def run(algorithm, what):
     algorithm.GetExecutive().AddObserver(vtkCommand.ErrorEvent, collect)
     if not algorithm.GetExecutive().Update() or messages:
         raise BenchmarkError("%s: %s" % (what, messages[0] if messages else "failed"))
+
+
+def mpi_controller():
+    """The MPI controller when running on several ranks (pvbatch --symmetric under mpirun), else None."""
+    try:
+        from vtkmodules.vtkParallelCore import vtkMultiProcessController
+    except ImportError:
+        return None
+    controller = vtkMultiProcessController.GetGlobalController()
+    if controller is None or controller.GetNumberOfProcesses() < 2:
+        return None
+    return controller
+
+
+def gather_tables(controller, table):
+    """Rank 0 receives every rank's table and returns them all appended; the others return None."""
+    from vtkmodules.vtkCommonDataModel import vtkTable
+    tag = 8031
+    if controller.GetLocalProcessId() != 0:
+        controller.Send(table, 0, tag)
+        return None
+    parts = [table]
+    for rank in range(1, controller.GetNumberOfProcesses()):
+        part = vtkTable()
+        controller.Receive(part, rank, tag)
+        parts.append(part)
+    whole = vtkTable()
+    for part in parts:
+        if part.GetNumberOfColumns() == 0:
+            continue  # a rank with no model
+        if whole.GetNumberOfColumns() == 0:
+            whole.DeepCopy(part)
+            continue
+        for row in range(part.GetNumberOfRows()):
+            whole.InsertNextRow(part.GetRow(row))
+    return whole
 
 
 def parse_models(text):
@@ -77,21 +122,49 @@ def main(argv=None):
                 raise BenchmarkError(str(error) or "%s holds no models" % args.data)
         for model in models if args.models else []:
             benchmark.AddModel(model)
-        benchmark.SetOutputDirectory(args.output)
+        controller = mpi_controller()
+        rank = controller.GetLocalProcessId() if controller else 0
+        ranks = controller.GetNumberOfProcesses() if controller else 1
+        if controller:
+            # Every rank runs its share of the models; rank 0 writes the files of them all.
+            mine = models[rank::ranks]
+            benchmark.ClearModels()
+            for model in mine:
+                benchmark.AddModel(model)
+            if not args.no_pictures:
+                benchmark.SetOutputDirectory(os.path.join(args.output, "rank-%d" % rank))
+        else:
+            benchmark.SetOutputDirectory(args.output)
         benchmark.SetWritePictures(not args.no_pictures)
         if not args.no_pictures:
             import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the pictures' rendering back end)
             import vtkmodules.vtkRenderingFreeType  # noqa: F401 (their captions)
         benchmark.PrintProgressOn()
-        print("Kerf benchmark: method %s on %d models of %s with %d process%s"
-              % (args.method, len(models), args.data, args.jobs, "" if args.jobs == 1 else "es"), flush=True)
+        if rank == 0:
+            print("Kerf benchmark: method %s on %d models of %s with %d %s"
+                  % (args.method, len(models), args.data, ranks if controller else args.jobs,
+                     ("MPI ranks" if controller else "process" if args.jobs == 1 else "processes")), flush=True)
         started = time.perf_counter()
-        run(benchmark, "benchmark")
-        print("\n" + benchmark.GetSummary(), end="")
+        if not controller or mine:
+            run(benchmark, "benchmark")
+        if controller:
+            from vtkmodules.vtkCommonDataModel import vtkTable
+            table = benchmark.GetOutput() if mine else vtkTable()
+            whole = gather_tables(controller, table)
+            if rank != 0:
+                return 0
+            from vtkmodules.vtkCommonCore import reference
+            error = reference("")
+            summary = kerf.vtkSegmentationBenchmark.WriteResults(whole, args.output, error)
+            if not summary:
+                raise BenchmarkError(str(error))
+        else:
+            summary = benchmark.GetSummary()
+        print("\n" + summary, end="")
         print("\nresults:  %s\nsummary:  %s" % (os.path.abspath(os.path.join(args.output, "results.csv")),
                                                 os.path.abspath(os.path.join(args.output, "summary.csv"))))
         if not args.no_pictures:
-            print("pictures: %s" % os.path.abspath(os.path.join(args.output, "pictures")))
+            print("pictures: %s" % os.path.abspath(os.path.join(args.output, "rank-*" if controller else "pictures")))
         print("time:     %.1f s" % (time.perf_counter() - started))
         return 0
     except BenchmarkError as error:

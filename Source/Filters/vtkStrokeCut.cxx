@@ -1,0 +1,138 @@
+// vtkStrokeCut: the stroke, the field and the cut in one filter, through the surface's HarmonicCutSession.
+#include "vtkStrokeCut.h"
+
+#include "Error.h"
+#include "Harmonic/HarmonicCutSession.h"
+#include "KerfFilterUtilities.h"
+#include "KerfSurfaceInput.h"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <string>
+
+vtkStandardNewMacro(vtkStrokeCut);
+
+struct vtkStrokeCut::Internals
+{
+  kerf::SurfaceInput surface;
+  std::unique_ptr<kerf::HarmonicCutSession> session;
+  kerf::StrokePointList strokePoints;
+};
+
+vtkStrokeCut::vtkStrokeCut()
+  : State(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+}
+
+vtkStrokeCut::~vtkStrokeCut() = default;
+
+vtkPolyData* vtkStrokeCut::GetCut()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+void vtkStrokeCut::SetNumberOfStrokePoints(int count)
+{
+  kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
+    if (this->State->strokePoints.SetCount(count))
+    {
+      this->Modified();
+    }
+  });
+}
+
+int vtkStrokeCut::GetNumberOfStrokePoints() const
+{
+  return this->State->strokePoints.Count();
+}
+
+void vtkStrokeCut::SetStrokePoint(int index, double x, double y, double z)
+{
+  kerf::GuardSetter(this, "Cannot set a stroke point", [&]() {
+    if (this->State->strokePoints.Set(index, kerf::Vector3(x, y, z)))
+    {
+      this->Modified();
+    }
+  });
+}
+
+int vtkStrokeCut::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
+}
+
+int vtkStrokeCut::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return kerf::RunGuarded(this, "Cannot cut along the stroke", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    kerf::StrokeIsoValue(this->IsoValue);
+    kerf::MeshRequirements requirements;
+    requirements.manifold = true;
+    requirements.consistentOrientation = true;
+    kerf::LoadSurface(this->State->surface, input, requirements);
+    kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
+    const double diagonal = session.mesh().boundingBoxDiagonal();
+    const std::vector<std::vector<kerf::Vector3>> strokes =
+      kerf::ReadStrokes(vtkPolyData::GetData(inputVector[1], 0), this->State->strokePoints, session.surface());
+    this->UpdateProgress(0.1);
+
+    kerf::StrokeOptions strokeOptions;
+    strokeOptions.samplesPerSegment = this->SamplesPerSegment;
+    strokeOptions.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
+    strokeOptions.isoValue = this->IsoValue;
+    strokeOptions.maximumDistance =
+      kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
+    kerf::FieldConstraints constraints;
+    constraints.soft = session.strokeConstraints(strokes, strokeOptions).constraints;
+    kerf::HarmonicFieldOptions fieldOptions;
+    fieldOptions.weights.weighting = static_cast<kerf::LaplacianWeighting>(this->Weighting);
+    fieldOptions.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
+    fieldOptions.formulation = static_cast<kerf::SoftConstraintFormulation>(this->Formulation);
+    const kerf::HarmonicFieldSolution solution = session.solve(constraints, fieldOptions);
+    this->UpdateProgress(0.8);
+
+    kerf::CutOptions cutOptions;
+    cutOptions.mode = kerf::CutMode::NearStroke;
+    cutOptions.isoValue = this->IsoValue;
+    for (const std::vector<kerf::Vector3>& stroke : strokes)
+    {
+      cutOptions.stroke.insert(cutOptions.stroke.end(), stroke.begin(), stroke.end());
+    }
+    const kerf::CutResult cut = session.chooseCut(solution.field, cutOptions);
+
+    this->State->surface.MakeOutput(input, output);
+    kerf::WriteField(this->State->surface, solution, "HarmonicField", output);
+    output->GetCellData()->AddArray(kerf::MakeIntArray("Segment", cut.labels));
+    kerf::WriteCutLines(cut, vtkPolyData::GetData(outputVector, 1));
+  });
+}
+
+void vtkStrokeCut::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Weighting: " << this->Weighting << "\n";
+  os << indent << "Formulation: " << this->Formulation << "\n";
+  os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
+  os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
+  os << indent << "Offset: " << this->Offset << "\n";
+  os << indent << "IsoValue: " << this->IsoValue << "\n";
+  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
+  os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";
+}

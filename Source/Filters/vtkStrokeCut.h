@@ -1,0 +1,117 @@
+/**
+ * @class vtkStrokeCut
+ * @brief Cut From Stroke: a mesh cut along a stroke in one filter (SeamCut, section 2.1): the
+ * stroke's constraints, the harmonic field, the isoline nearest the stroke and the segments it
+ * bounds.
+ *
+ * The common case of the three-filter pipeline vtkStrokeConstraints -> vtkHarmonicField ->
+ * vtkIsolineScoring (which stays available for every other case), with the same Core
+ * (kerf::HarmonicCutSession) and the same results. The stroke is the polylines of input 1 or,
+ * without it, the points set with SetStrokePoint (in ParaView an interactive polyline: point at
+ * the surface and press P to place a point, Ctrl+P to add one). Moving the stroke re-solves
+ * with the kept factorization (an update); changing IsoValue only re-extracts the cut.
+ *
+ * Output 0: the surface with the point array "HarmonicField" (its active scalars), the cell
+ * array "Segment" (the two sides of the cut, split further into connected components) and the
+ * field data "SolverWork" and "RelativeResidual". Output 1: the cut as polylines (IsoValue,
+ * Score, Length, Closed).
+ *
+ * Errors (vtkErrorMacro, return 0): no stroke, a stroke with fewer than two distinct points or
+ * farther from the surface than MaximumProjectionDistance, surfaces refused by validation (the
+ * field needs an edge-manifold, consistently oriented surface), NaN parameters.
+ */
+#ifndef vtkStrokeCut_h
+#define vtkStrokeCut_h
+
+#include "KerfFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory>
+
+class KERFFILTERS_EXPORT vtkStrokeCut : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkStrokeCut* New();
+  vtkTypeMacro(vtkStrokeCut, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The Laplacian's weights, as vtkHarmonicField's Weighting. Default 1 (cotangent).
+  vtkSetClampMacro(Weighting, int, 0, 3);
+  vtkGetMacro(Weighting, int);
+  ///@}
+
+  ///@{
+  /// How the stroke's constraints shape the field, as vtkHarmonicField's Formulation.
+  /// Default 1 (least squares, the most faithful cut); 0 (point values) is faster.
+  vtkSetClampMacro(Formulation, int, 0, 1);
+  vtkGetMacro(Formulation, int);
+  ///@}
+
+  ///@{
+  /// Weight of the stroke's soft constraints, relative to the Laplacian's mean diagonal. Default 1.
+  vtkSetClampMacro(SoftConstraintWeight, double, 1e-6, 1e6);
+  vtkGetMacro(SoftConstraintWeight, double);
+  ///@}
+
+  ///@{
+  /// Samples per stroke segment (N_S). Default 4.
+  vtkSetClampMacro(SamplesPerSegment, int, 1, 1000);
+  vtkGetMacro(SamplesPerSegment, int);
+  ///@}
+
+  ///@{
+  /// Offset of the constraint points from the stroke (eps_C), a fraction of the bounding-box
+  /// diagonal. Default 0.01.
+  vtkSetClampMacro(Offset, double, 1e-6, 0.5);
+  vtkGetMacro(Offset, double);
+  ///@}
+
+  ///@{
+  /// The iso-value of the cut; the constraints are IsoValue +- 1. Default 0.
+  vtkSetMacro(IsoValue, double);
+  vtkGetMacro(IsoValue, double);
+  ///@}
+
+  ///@{
+  /// Stroke points farther from the surface than this fraction of the diagonal are refused; 0
+  /// means no limit. Default 0.05.
+  vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
+  vtkGetMacro(MaximumProjectionDistance, double);
+  ///@}
+
+  ///@{
+  /// The stroke's points when input 1 is not connected (one stroke).
+  void SetNumberOfStrokePoints(int count);
+  int GetNumberOfStrokePoints() const;
+  void SetStrokePoint(int index, double x, double y, double z);
+  ///@}
+
+  /// The cut polylines (output 1).
+  vtkPolyData* GetCut();
+
+protected:
+  vtkStrokeCut();
+  ~vtkStrokeCut() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  int Weighting = 1;
+  int Formulation = 1;
+  double SoftConstraintWeight = 1.0;
+  int SamplesPerSegment = 4;
+  double Offset = 0.01;
+  double IsoValue = 0.0;
+  double MaximumProjectionDistance = 0.05;
+
+private:
+  vtkStrokeCut(const vtkStrokeCut&) = delete;
+  void operator=(const vtkStrokeCut&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> State;
+};
+
+#endif

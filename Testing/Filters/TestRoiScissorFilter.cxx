@@ -1,0 +1,140 @@
+// ROI Scissor (vtkRoiScissor): the protrusion of a dumbbell against its known part (Rand index), the boundary in the crease, clicks as an input, kept click distances, errors.
+#include "Evaluation/SegmentationMetrics.h"
+#include "KerfTestUtilities.h"
+#include "Mesh/MeshGenerators.h"
+#include "vtkRoiScissor.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+// The dumbbell of the Core's ROI Scissor tests: lobes of radii 1 (below) and 0.8 (above, the
+// protrusion), the neck at z = 0.3 pinched by 0.65.
+const double HalfLength = 2.2, NeckHeight = 0.3, NeckDepth = 0.65;
+const std::array<double, 2> Radii{ { 1.0, 0.8 } };
+
+// Height of the crease: where the profile is narrowest near the neck.
+double creaseHeight()
+{
+  double best = NeckHeight, narrowest = 1e9;
+  for (double z = NeckHeight - 0.5; z <= NeckHeight + 0.5; z += 1e-4)
+  {
+    const double r = kerf::dumbbellRadius(z, HalfLength, Radii, NeckHeight, NeckDepth);
+    if (r < narrowest)
+    {
+      narrowest = r;
+      best = z;
+    }
+  }
+  return best;
+}
+
+double fieldValue(vtkPolyData* output, const char* name)
+{
+  return output->GetFieldData()->GetArray(name)->GetComponent(0, 0);
+}
+
+std::vector<int> labelsOf(vtkPolyData* output)
+{
+  vtkDataArray* region = output->GetCellData()->GetArray("RoiRegion");
+  std::vector<int> labels(static_cast<std::size_t>(output->GetNumberOfCells()));
+  for (vtkIdType c = 0; region && c < output->GetNumberOfCells(); ++c)
+  {
+    labels[static_cast<std::size_t>(c)] = static_cast<int>(region->GetComponent(c, 0));
+  }
+  return labels;
+}
+} // namespace
+
+int TestRoiScissorFilter(int, char*[])
+{
+  bool ok = true;
+  const kerf::TriangleMesh mesh = kerf::makeDumbbell(HalfLength, Radii, NeckHeight, NeckDepth, 5);
+  vtkSmartPointer<vtkPolyData> dumbbell = kerf::test::ToPolyData(mesh);
+  const vtkMTimeType inputTime = dumbbell->GetMTime();
+  const double crease = creaseHeight();
+  std::vector<int> protrusion(static_cast<std::size_t>(mesh.faceCount()));
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const kerf::Triangle& t = mesh.triangle(f);
+    protrusion[f] = (mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0 > crease ? 1 : 0;
+  }
+
+  // One click at the protrusion's tip, radius half the diagonal (2.6): the region is the
+  // protrusion.
+  vtkNew<vtkRoiScissor> roi;
+  roi->SetInputData(0, dumbbell);
+  const double tip = HalfLength - 0.05;
+  roi->SetClickPoint(kerf::dumbbellRadius(tip, HalfLength, Radii, NeckHeight, NeckDepth), 0.0, tip);
+  roi->SetRadius(0.5);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  vtkPolyData* output = roi->GetOutput();
+  const std::vector<int> labels = labelsOf(output);
+  ok &= KERF_CHECK(static_cast<int>(labels.size()) == mesh.faceCount());
+  const kerf::SegmentationScores scores = kerf::compareSegmentations(mesh, labels, protrusion);
+  std::cout << "Rand index " << 1.0 - scores.randIndexError << ", Hamming distance " << scores.hammingDistance
+            << " (" << mesh.faceCount() << " triangles)" << std::endl;
+  ok &= KERF_CHECK(1.0 - scores.randIndexError >= 0.97);
+  ok &= KERF_CHECK(output->GetCellData()->GetScalars() == output->GetCellData()->GetArray("RoiRegion"));
+  ok &= KERF_CHECK(output->GetPointData()->GetArray("RoiField") && output->GetPointData()->GetArray("RoiCandidate"));
+  ok &= KERF_CHECK(fieldValue(output, "ClickDistanceFields") == 1.0);
+
+  // The boundary: one closed loop without self-crossings, in the crease.
+  vtkPolyData* boundary = roi->GetBoundary();
+  ok &= KERF_CHECK(boundary->GetNumberOfCells() == 1);
+  ok &= KERF_CHECK(boundary->GetCellData()->GetArray("Closed")->GetComponent(0, 0) == 1.0);
+  ok &= KERF_CHECK(boundary->GetCellData()->GetArray("SelfCrossings")->GetComponent(0, 0) == 0.0);
+  double farthest = 0.0;
+  for (vtkIdType i = 0; i < boundary->GetNumberOfPoints(); ++i)
+  {
+    farthest = std::max(farthest, std::abs(boundary->GetPoint(i)[2] - crease));
+  }
+  std::cout << "boundary within " << farthest << " of the crease's height " << crease << std::endl;
+  ok &= KERF_CHECK(farthest <= 0.1);
+
+  // A wider disc reuses the click's distance and finds the same protrusion.
+  roi->SetRadius(0.55);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  ok &= KERF_CHECK(fieldValue(roi->GetOutput(), "ClickDistanceFields") == 1.0);
+  ok &= KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
+
+  // The click as input 1 gives the same region as the Click Point.
+  roi->SetRadius(0.5);
+  vtkNew<vtkPolyData> clicks;
+  vtkNew<vtkPoints> clickPoints;
+  clickPoints->InsertNextPoint(roi->GetClickPoint());
+  clicks->SetPoints(clickPoints);
+  roi->SetInputData(1, clicks);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  ok &= KERF_CHECK(labelsOf(roi->GetOutput()) == labels);
+  ok &= KERF_CHECK(dumbbell->GetMTime() == inputTime && dumbbell->GetPointData()->GetNumberOfArrays() == 0);
+
+  // Errors: a click off the surface, a disc covering the whole surface.
+  clickPoints->SetPoint(0, 0.0, 0.0, 5.0);
+  clickPoints->Modified();
+  std::string error = kerf::test::UpdateAndCaptureError(roi);
+  std::cout << error << std::endl;
+  ok &= KERF_CHECK(error.find("a click lies off the surface") != std::string::npos);
+  ok &= KERF_CHECK(roi->GetOutput()->GetNumberOfPoints() == 0 && roi->GetBoundary()->GetNumberOfPoints() == 0);
+  roi->SetInputData(1, nullptr);
+  roi->SetRadius(5.0);
+  error = kerf::test::UpdateAndCaptureError(roi);
+  std::cout << error << std::endl;
+  ok &= KERF_CHECK(!error.empty());
+  roi->SetInputData(1, vtkSmartPointer<vtkPolyData>::New());
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).find("holds no point") != std::string::npos);
+  return ok ? 0 : 1;
+}
