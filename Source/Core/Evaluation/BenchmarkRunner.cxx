@@ -8,8 +8,7 @@
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/SurfaceConversion.h"
-#include "Segmentation/RegionGrowing.h"
-#include "Segmentation/SnakeRefinement.h"
+#include "Segmentation/EasyMeshCut.h"
 
 #include <poll.h>
 #include <sys/wait.h>
@@ -292,38 +291,68 @@ MethodOutput segmentWithHarmonicCuts(
   return output;
 }
 
-// Easy Mesh Cutting (Ji et al. 2006): one stroke per segment of the input human through its
-// innermost faces, region growing under the isophotic metric, and optionally the snakes.
+// Easy Mesh Cutting (Ji et al. 2006) with a simulated user: one stroke per segment of the input
+// human through its innermost faces, then `corrections` rounds in which a stroke is added inside
+// the wrongly labelled faces of each segment (through their innermost ones), as a user corrects
+// what the growing got wrong; the boundaries are refined as snakes at the end when asked.
 MethodOutput segmentWithRegionGrowing(
   const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters, bool snakes)
 {
+  EasyMeshCutOptions options;
+  IsophoticMetricOptions& metric = options.growing.metric;
+  metric.normalWeight = parameters.positive("normal-weight", metric.normalWeight);
+  metric.curvatureWeight = parameters.positive("curvature-weight", metric.curvatureWeight);
+  metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
+  metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
+  const int faces = static_cast<int>(parameters.positive("faces", 5));
+  const std::string correctionText = parameters.text("corrections", "3");
+  const int corrections = correctionText.find_first_not_of("0123456789") == std::string::npos &&
+      !correctionText.empty() && correctionText.size() < 4
+    ? std::stoi(correctionText)
+    : throw Error("the method parameter 'corrections' must be a whole number below 1000, not '" + correctionText + "'");
   const TriangleMesh& mesh = c.surface->mesh();
-  RegionGrowingOptions options;
-  options.metric.normalWeight = parameters.positive("normal-weight", options.metric.normalWeight);
-  options.metric.curvatureWeight = parameters.positive("curvature-weight", options.metric.curvatureWeight);
-  options.metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
-  options.metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
-  const std::vector<SegmentStroke> simulated =
-    innermostStrokes(mesh, *input, static_cast<int>(parameters.positive("faces", 5)));
+  std::vector<LabelledStroke> strokes;
+  auto addStrokes = [&strokes](const std::vector<SegmentStroke>& simulated) {
+    for (const SegmentStroke& stroke : simulated)
+    {
+      strokes.push_back({ stroke.label, stroke.points });
+    }
+  };
+  addStrokes(innermostStrokes(mesh, *input, faces));
   MethodOutput output;
-  output.inputs = static_cast<int>(simulated.size());
-  if (simulated.size() < 2)
+  if (strokes.size() < 2)
   {
+    output.inputs = static_cast<int>(strokes.size());
     output.labels = *input; // one segment: nothing to cut
     return output;
   }
-  std::vector<LabelledStroke> strokes;
-  for (const SegmentStroke& stroke : simulated)
+  options.refine = false;
+  output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
+  for (int round = 0; round < corrections; ++round)
   {
-    strokes.push_back({ stroke.label, stroke.points });
+    std::vector<int> wrong(input->size(), -1);
+    bool anyWrong = false;
+    for (std::size_t f = 0; f < wrong.size(); ++f)
+    {
+      if ((*input)[f] >= 0 && output.labels[f] != (*input)[f])
+      {
+        wrong[f] = (*input)[f];
+        anyWrong = true;
+      }
+    }
+    if (!anyWrong)
+    {
+      break;
+    }
+    addStrokes(innermostStrokes(mesh, wrong, faces));
+    output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
   }
-  output.labels = growRegions(*c.surface, strokes, options).faceLabels;
   if (snakes)
   {
-    BoundarySnake snake(c.surface, output.labels);
-    snake.refine({});
-    output.labels = snake.faceLabels();
+    options.refine = true;
+    output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
   }
+  output.inputs = static_cast<int>(strokes.size());
   return output;
 }
 
@@ -383,14 +412,14 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "weighting", "samples", "offset", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
       segmentWithHarmonicCuts },
     { "region-growing",
-      "Easy Mesh Cutting's region growing from one simulated stroke per segment through its innermost faces",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces" },
+      "Easy Mesh Cutting's region growing from one simulated stroke per segment through its innermost faces, then strokes inside the wrongly labelled faces",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, false);
       } },
     { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces" },
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, true);
