@@ -3,9 +3,11 @@
 
 #include "vtkSegmentationBenchmark.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -101,9 +103,15 @@ int main(int argc, char* argv[])
         std::cout << "Usage: " << c.usage << "\n\n" << c.help << "\n";
         if (name == "benchmark")
         {
-          for (const std::string& method : vtkSegmentationBenchmark::GetMethodNames())
+          const std::vector<std::string> methods = vtkSegmentationBenchmark::GetMethodNames();
+          std::size_t width = 0;
+          for (const std::string& method : methods)
           {
-            std::cout << "  " << std::left << std::setw(23) << method
+            width = std::max(width, method.size() + 2);
+          }
+          for (const std::string& method : methods)
+          {
+            std::cout << "  " << std::left << std::setw(static_cast<int>(width)) << method
                       << vtkSegmentationBenchmark::GetMethodDescription(method) << "\n";
           }
         }

@@ -10,6 +10,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkFieldData.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
@@ -20,10 +22,12 @@
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
+#include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <new>
@@ -362,6 +366,33 @@ void CheckFinite(std::initializer_list<const std::vector<double>*> vectors, doub
   {
     throw Error(message);
   }
+}
+
+void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
+  const char* arrayName, const MeshRequirements& requirements,
+  const std::function<std::vector<int>(const Surface&, vtkFieldData*)>& segment)
+{
+  CheckOutputNames({ arrayName });
+  LoadSurface(surface, input, requirements);
+  algorithm->UpdateProgress(0.1);
+  // The figures are kept aside so that a failed segmentation leaves the output empty.
+  vtkNew<vtkFieldData> figures;
+  const std::vector<int> labels = segment(surface.GetSurface(), figures);
+  algorithm->UpdateProgress(0.9);
+  surface.MakeOutput(input, output);
+  for (int a = 0; a < figures->GetNumberOfArrays(); ++a)
+  {
+    output->GetFieldData()->AddArray(figures->GetAbstractArray(a));
+  }
+  std::vector<int> perCell(static_cast<std::size_t>(output->GetNumberOfCells()), -1);
+  const std::vector<vtkIdType>& source = surface.SourceCells();
+  for (std::size_t t = 0; t < labels.size(); ++t)
+  {
+    perCell[surface.Rebuilt() ? t : static_cast<std::size_t>(source[t])] = labels[t];
+  }
+  output->GetCellData()->AddArray(MakeIntArray(arrayName, perCell));
+  const int count = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
+  output->GetFieldData()->AddArray(MakeFieldValue("SegmentCount", count));
 }
 
 vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value)

@@ -18,6 +18,7 @@
 class vtkAbstractArray;
 class vtkAlgorithm;
 class vtkDataArray;
+class vtkFieldData;
 class vtkInformation;
 class vtkInformationVector;
 class vtkPointSet;
@@ -113,6 +114,14 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value)
 vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::string& value);
 /// A named int array holding `values`.
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
+
+/// The body of an automatic-segmentation filter: checks `arrayName`, loads `input` into `surface`
+/// (validated against `requirements`), copies it to `output` with its arrays, runs `segment` (which
+/// returns one label per triangle and may add its figures to the output's field data) and writes
+/// the labels as the int cell array `arrayName` and their count as the field value SegmentCount.
+void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
+  const char* arrayName, const MeshRequirements& requirements,
+  const std::function<std::vector<int>(const Surface&, vtkFieldData*)>& segment);
 
 /// One polyline to write: its points, whether it closes, its length.
 struct PolylineToWrite

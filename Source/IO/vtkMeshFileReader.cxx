@@ -1,11 +1,17 @@
-// vtkMeshFileReader: dispatches on the extension and turns the inner reader's errors into its own.
+// vtkMeshFileReader: reads every supported format safely, by Kerf's own parser or after a check.
 #include "vtkMeshFileReader.h"
 
+#include "KerfErrorCollector.h"
+#include "KerfMeshFileData.h"
 #include "vtkOFFReader.h"
 
-#include "KerfErrorCollector.h"
-
-#include "IO/PLYValidation.h"
+#include "Error.h"
+#include "IO/LegacyVTKValidation.h"
+#include "IO/MeshFormats.h"
+#include "IO/OBJFormat.h"
+#include "IO/PLYFormat.h"
+#include "IO/STLFormat.h"
+#include "IO/VTPValidation.h"
 
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
@@ -13,66 +19,185 @@
 #include <vtkExecutive.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
-#include <vtkOBJReader.h>
+#include <vtkLZ4DataCompressor.h>
+#include <vtkLZMADataCompressor.h>
 #include <vtkObjectFactory.h>
-#include <vtkPLYReader.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
-#include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkZLibDataCompressor.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <limits>
+#include <new>
+#include <sstream>
 #include <string>
 
 vtkStandardNewMacro(vtkMeshFileReader);
 
 namespace
 {
+const char* const Extensions[] = { ".off", ".ply", ".obj", ".stl", ".vtp", ".vtk" };
+
 std::string lowerExtension(const char* fileName)
 {
   return vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(fileName));
 }
 
-vtkSmartPointer<vtkAlgorithm> makeReader(const std::string& extension, const char* fileName)
+// Decompresses a block of a VTK XML file with VTK's own compressor of that name, quietly.
+bool decompressBlock(const std::string& compressorName, std::string_view compressed,
+  std::size_t uncompressedSize, std::string& uncompressed)
+{
+  vtkSmartPointer<vtkDataCompressor> compressor;
+  if (compressorName == "vtkZLibDataCompressor")
+  {
+    compressor = vtkSmartPointer<vtkZLibDataCompressor>::New();
+  }
+  else if (compressorName == "vtkLZ4DataCompressor")
+  {
+    compressor = vtkSmartPointer<vtkLZ4DataCompressor>::New();
+  }
+  else if (compressorName == "vtkLZMADataCompressor")
+  {
+    compressor = vtkSmartPointer<vtkLZMADataCompressor>::New();
+  }
+  else
+  {
+    return false;
+  }
+  auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
+  compressor->AddObserver(vtkCommand::ErrorEvent, errors);
+  uncompressed.assign(uncompressedSize, '\0');
+  const std::size_t size = compressor->Uncompress(reinterpret_cast<const unsigned char*>(compressed.data()),
+    compressed.size(), reinterpret_cast<unsigned char*>(&uncompressed[0]), uncompressedSize);
+  return size == uncompressedSize && errors->Message.empty();
+}
+
+// Runs a VTK reader on bytes already checked, turning its errors into an exception.
+vtkSmartPointer<vtkPolyData> runVTKReader(vtkAlgorithm* reader, const char* hint)
+{
+  auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
+  auto warnings = vtkSmartPointer<kerf::ErrorCollector>::New();
+  reader->AddObserver(vtkCommand::ErrorEvent, errors);
+  reader->AddObserver(vtkCommand::WarningEvent, warnings);
+  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, warnings);
+  const int ok = reader->GetExecutive()->Update();
+  vtkPolyData* result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!ok || !errors->Message.empty() || !result)
+  {
+    throw kerf::Error((errors->Message.empty() ? std::string("the reader failed") : errors->Message) + hint);
+  }
+  return result;
+}
+
+// The polydata a file holds, read by Kerf's parser or by VTK's reader after Kerf's check.
+vtkSmartPointer<vtkPolyData> readFile(const std::string& extension, const char* fileName)
 {
   if (extension == ".off")
   {
-    auto reader = vtkSmartPointer<vtkOFFReader>::New();
+    vtkNew<vtkOFFReader> reader;
     reader->SetFileName(fileName);
-    return reader;
+    return runVTKReader(reader, "");
   }
+  const std::string bytes = kerf::readTextFile(fileName);
   if (extension == ".ply")
   {
-    auto reader = vtkSmartPointer<vtkPLYReader>::New();
-    reader->SetFileName(fileName);
-    return reader;
-  }
-  if (extension == ".obj")
-  {
-    auto reader = vtkSmartPointer<vtkOBJReader>::New();
-    reader->SetFileName(fileName);
-    return reader;
+    return kerf::MeshFileDataToPolyData(kerf::parsePLY(bytes));
   }
   if (extension == ".stl")
   {
-    auto reader = vtkSmartPointer<vtkSTLReader>::New();
-    reader->SetFileName(fileName);
-    return reader;
+    return kerf::MeshFileDataToPolyData(kerf::parseSTL(bytes));
   }
-  if (extension == ".vtp")
+  if (extension == ".obj")
   {
-    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    reader->SetFileName(fileName);
-    return reader;
+    return kerf::MeshFileDataToPolyData(kerf::parseOBJ(bytes));
   }
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+  {
+    throw kerf::Error("the file is larger than 2 GiB, more than VTK's " + extension + " reader reads");
+  }
+  // VTK reads the very bytes that were checked, not the file again.
   if (extension == ".vtk")
   {
-    auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
-    reader->SetFileName(fileName);
-    return reader;
+    kerf::checkLegacyVTK(bytes);
+    vtkNew<vtkPolyDataReader> reader;
+    reader->ReadFromInputStringOn();
+    reader->SetBinaryInputString(bytes.data(), static_cast<int>(bytes.size()));
+    return runVTKReader(reader, "");
   }
-  return nullptr;
+  kerf::checkVTP(bytes, decompressBlock);
+  vtkNew<vtkXMLPolyDataReader> reader;
+  reader->ReadFromInputStringOn();
+  reader->SetInputString(bytes);
+  // Debian 12's expat security update (reparse deferral) breaks VTK 9.2's parsing of VTP files
+  // with appended data, the format ParaView writes by default.
+  const bool appended = bytes.find("<AppendedData") != std::string::npos;
+  return runVTKReader(reader,
+    appended ? " (this VTK cannot read appended data with the system's expat: save the file again "
+               "with binary or ASCII data mode)"
+             : "");
+}
+
+// A sentence naming the first problem of a cell array's offsets (they start at 0, never decrease
+// and end at the number of point ids) or point ids (each names a point), or "".
+template <typename Offset>
+std::string checkCellArray(const Offset* offsets, vtkIdType offsetCount, const Offset* ids,
+  vtkIdType idCount, vtkIdType points, const char* kind)
+{
+  std::ostringstream out;
+  for (vtkIdType i = 0; i < offsetCount; ++i)
+  {
+    if ((i == 0 && offsets[0] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) || offsets[i] > idCount)
+    {
+      out << kind << " offset " << i << " is " << offsets[i] << ", out of order or past the "
+          << idCount << " point ids";
+      return out.str();
+    }
+  }
+  if (offsetCount > 0 && offsets[offsetCount - 1] != idCount)
+  {
+    out << "the " << kind << " offsets end at " << offsets[offsetCount - 1] << ", not at the "
+        << idCount << " point ids";
+    return out.str();
+  }
+  for (vtkIdType i = 0; i < idCount; ++i)
+  {
+    if (ids[i] < 0 || ids[i] >= points)
+    {
+      out << "a cell uses point " << ids[i] << ", but the file has " << points << " points";
+      return out.str();
+    }
+  }
+  return "";
+}
+
+// The first problem of the mesh's cell arrays, or "". Cells like these would crash whatever
+// reads them next.
+std::string checkCells(vtkPolyData* mesh)
+{
+  const char* kinds[] = { "vertex", "line", "polygon", "triangle strip" };
+  vtkCellArray* cellArrays[] = { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() };
+  for (int k = 0; k < 4; ++k)
+  {
+    vtkCellArray* cells = cellArrays[k];
+    if (!cells)
+    {
+      continue;
+    }
+    const std::string problem = cells->IsStorage64Bit()
+      ? checkCellArray(cells->GetOffsetsArray64()->GetPointer(0), cells->GetOffsetsArray64()->GetNumberOfValues(),
+          cells->GetConnectivityArray64()->GetPointer(0), cells->GetConnectivityArray64()->GetNumberOfValues(),
+          mesh->GetNumberOfPoints(), kinds[k])
+      : checkCellArray(cells->GetOffsetsArray32()->GetPointer(0), cells->GetOffsetsArray32()->GetNumberOfValues(),
+          cells->GetConnectivityArray32()->GetPointer(0), cells->GetConnectivityArray32()->GetNumberOfValues(),
+          mesh->GetNumberOfPoints(), kinds[k]);
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  return "";
 }
 } // namespace
 
@@ -88,7 +213,19 @@ vtkMeshFileReader::~vtkMeshFileReader()
 
 int vtkMeshFileReader::IsSupportedExtension(const char* fileName)
 {
-  return fileName && makeReader(lowerExtension(fileName), fileName) ? 1 : 0;
+  if (!fileName)
+  {
+    return 0;
+  }
+  const std::string extension = lowerExtension(fileName);
+  for (const char* e : Extensions)
+  {
+    if (extension == e)
+    {
+      return 1;
+    }
+  }
+  return 0;
 }
 
 int vtkMeshFileReader::RequestData(
@@ -105,48 +242,42 @@ int vtkMeshFileReader::RequestData(
     vtkErrorMacro("The file " << this->FileName << " does not exist.");
     return 0;
   }
-  const std::string extension = lowerExtension(this->FileName);
-  vtkSmartPointer<vtkAlgorithm> reader = makeReader(extension, this->FileName);
-  if (!reader)
+  if (!IsSupportedExtension(this->FileName))
   {
-    vtkErrorMacro("Unsupported mesh file extension '"
-      << extension << "' (" << this->FileName << "); use .off, .ply, .obj, .stl, .vtp or .vtk.");
+    vtkErrorMacro("Unsupported mesh file extension '" << lowerExtension(this->FileName) << "' ("
+                                                     << this->FileName
+                                                     << "); use .off, .ply, .obj, .stl, .vtp or .vtk.");
     return 0;
   }
-  if (extension == ".ply")
+  vtkSmartPointer<vtkPolyData> result;
+  std::string problem;
+  try
   {
-    // VTK's PLY reader crashes on truncated files: check the structure first.
-    const std::string problem = kerf::checkPLYStructure(this->FileName);
-    if (!problem.empty())
-    {
-      vtkErrorMacro("Cannot read " << this->FileName << ": " << problem);
-      return 0;
-    }
+    result = readFile(lowerExtension(this->FileName), this->FileName);
+    problem = checkCells(result);
   }
-  auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
-  auto warnings = vtkSmartPointer<kerf::ErrorCollector>::New();
-  reader->AddObserver(vtkCommand::ErrorEvent, errors);
-  reader->AddObserver(vtkCommand::WarningEvent, warnings);
-  reader->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, warnings);
-  const int ok = reader->GetExecutive()->Update();
-  vtkPolyData* result = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!ok || !errors->Message.empty() || !result)
+  catch (const kerf::Error& e)
   {
-    // Debian 12's expat security update (reparse deferral) breaks VTK 9.2's parsing of VTP files
-    // with appended data, the format ParaView writes by default.
-    const char* hint = extension == ".vtp"
-      ? " (if the file uses appended data, this VTK cannot read it with the system's expat: "
-        "save it again with binary or ASCII data mode)"
-      : "";
+    problem = e.what();
+  }
+  catch (const std::bad_alloc&)
+  {
+    problem = "out of memory";
+  }
+  catch (const std::exception& e)
+  {
+    problem = e.what();
+  }
+  if (!problem.empty())
+  {
     const std::string prefix = std::string("Cannot read ") + this->FileName;
-    if (errors->Message.compare(0, prefix.size(), prefix) == 0)
+    if (problem.compare(0, prefix.size(), prefix) == 0)
     {
-      vtkErrorMacro(<< errors->Message << hint);
+      vtkErrorMacro(<< problem);
     }
     else
     {
-      vtkErrorMacro(<< prefix << ": "
-                    << (errors->Message.empty() ? "the reader failed" : errors->Message) << hint);
+      vtkErrorMacro(<< prefix << ": " << problem);
     }
     return 0;
   }
@@ -154,26 +285,6 @@ int vtkMeshFileReader::RequestData(
   {
     vtkErrorMacro("The file " << this->FileName << " holds no points.");
     return 0;
-  }
-  // Some VTK readers pass face indices through unchecked (a PLY or OBJ face naming a point the
-  // file does not have); such cells would crash whatever reads them next.
-  vtkCellArray* cellArrays[] = { result->GetVerts(), result->GetLines(), result->GetPolys(),
-    result->GetStrips() };
-  for (vtkCellArray* cells : cellArrays)
-  {
-    vtkDataArray* ids = cells ? cells->GetConnectivityArray() : nullptr;
-    if (ids && ids->GetNumberOfTuples() > 0)
-    {
-      double range[2];
-      ids->GetRange(range, 0);
-      if (range[0] < 0 || range[1] >= static_cast<double>(result->GetNumberOfPoints()))
-      {
-        vtkErrorMacro("Cannot read " << this->FileName << ": a cell uses point "
-                                     << (range[0] < 0 ? range[0] : range[1]) << ", but the file has "
-                                     << result->GetNumberOfPoints() << " points.");
-        return 0;
-      }
-    }
   }
   output->ShallowCopy(result);
   return 1;

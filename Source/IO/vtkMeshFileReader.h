@@ -2,12 +2,15 @@
  * @class vtkMeshFileReader
  * @brief Reads a surface mesh from any format Kerf supports, chosen by the file extension.
  *
- * .off (vtkOFFReader), .ply (vtkPLYReader), .obj (vtkOBJReader), .stl (vtkSTLReader),
- * .vtp (vtkXMLPolyDataReader) and legacy .vtk (vtkPolyDataReader); extensions are compared
- * without regard to case. An unknown extension, a missing file, a reader error or a file with no
- * points is reported with vtkErrorMacro and fails the update, so scripts and the command-line
- * program can rely on the result. PLY files are checked for completeness before VTK's PLY reader
- * sees them, since it crashes on truncated files.
+ * .off (vtkOFFReader), .ply, .obj and .stl (Kerf's own parsers, which check every count and
+ * index against the file before allocating anything), .vtp (vtkXMLPolyDataReader) and legacy .vtk
+ * (vtkPolyDataReader), the last two after a check of the file's declared counts and structure
+ * against its data (kerf::checkVTP, kerf::checkLegacyVTK); extensions are compared without regard
+ * to case. Any byte sequence gives either a mesh or an error: an unknown extension, a missing
+ * file, a malformed file (the message names the line or byte offset and the problem), cells whose
+ * offsets or point ids are out of range, or a file with no points is reported with vtkErrorMacro
+ * and fails the update, so scripts and the command-line program can rely on the result.
+ * Non-finite coordinates are read as such (Kerf's filters refuse them with their own message).
  */
 #ifndef vtkMeshFileReader_h
 #define vtkMeshFileReader_h

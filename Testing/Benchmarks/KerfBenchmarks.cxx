@@ -8,6 +8,7 @@
 //                                       orderings, low-rank routes (/22k /100k /1M)
 //   SegmentationEvaluationBenchmark.cxx segmentation metrics (/50k) and the human baseline over
 //                                       psb-dev (/1model /all; only when the folder exists)
+//   MeshReaderBenchmark.cxx             reading each file format, Kerf beside VTK (/10k /100k /1M)
 // Run from the build directory with OPENBLAS_NUM_THREADS=1 (CHOLMOD's BLAS on one thread, like
 // everything else), for example:
 //   bin/KerfBenchmarks
@@ -72,6 +73,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicSolverBenchmarks();
   kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterMeshReaderBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

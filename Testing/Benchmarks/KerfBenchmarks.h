@@ -44,6 +44,7 @@ void RegisterSurfaceDescriptorsBenchmarks(bool useSizeMinimumTimes);
 void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes);
 void RegisterHarmonicSolverBenchmarks();
 void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes);
+void RegisterMeshReaderBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks

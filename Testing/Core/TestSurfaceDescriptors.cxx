@@ -257,3 +257,22 @@ TEST(SurfaceDescriptors, DegenerateAndUnusedVerticesGiveFiniteZeros)
   EXPECT_NEAR(d.normals[0].z(), 1.0, 1e-12);
   EXPECT_NEAR(d.maximumCurvature[2], 0.0, 1e-12);
 }
+
+TEST(SurfaceDescriptors, RightAngleBesideAHugeEdgeGivesFiniteCurvature)
+{
+  // A right angle at point 1 next to an edge 10^8 long: rounding the squared edge lengths makes
+  // the corner at point 0 look obtuse, and the obtuse-corner area formula then divides by the
+  // right angle's zero cosine (a triangle a fuzzed file produced).
+  const TriangleMesh mesh({ { 0.30901700258255005, -0.42797544598579407, 5.2411874220866593e-17 },
+                            { -0.30901700258255005, -0.42797544598579407, 5.2411874220866593e-17 },
+                            { -0.30901700258255005, -0.21398772299289703, 99492272 },
+                            { 0.30901700258255005, -0.21398772299289703, 0.5 } },
+    { { 0, 1, 2 }, { 0, 2, 3 } });
+  const SurfaceDescriptors d = computeSurfaceDescriptors(mesh);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    EXPECT_TRUE(std::isfinite(d.maximumCurvature[v])) << "point " << v;
+    EXPECT_TRUE(std::isfinite(d.minimumCurvature[v])) << "point " << v;
+    EXPECT_TRUE(d.maximumDirections[v].allFinite()) << "point " << v;
+  }
+}

@@ -216,7 +216,7 @@ int TestBadInput(int argc, char* argv[])
     { input + "truncated-ascii.ply", "vertex row 1 is incomplete" },
     { input + "truncated-binary.ply", "the file ends inside the vertex element" },
     { input + "no-faces.ply", "no face element" },
-    { input + "empty.stl", "Premature EOF" },
+    { input + "empty.stl", "the file is empty" },
     { input + "not-a-mesh.txt", "Unsupported mesh file extension" },
   };
   for (const auto& bad : badFiles)
@@ -230,15 +230,14 @@ int TestBadInput(int argc, char* argv[])
     ok &= KERF_CHECK(error.find(bad.second) != std::string::npos);
   }
 
-  // VTK's OBJ reader passes a face with an index past the last vertex through; Kerf's reader
-  // refuses it (the filters refuse such cells too: "point id out of range" above).
+  // A face with an index past the last vertex is refused, naming the line.
   {
     vtkNew<vtkMeshFileReader> reader;
     reader->SetFileName((input + "bad-index.obj").c_str());
     int succeeded = 1;
     const std::string error = kerf::test::UpdateAndCaptureError(reader, &succeeded);
     std::cout << "vtkMeshFileReader on bad-index.obj: " << error << std::endl;
-    ok &= KERF_CHECK(succeeded == 0 && error.find("a cell uses point 8, but the file has 2 points") != std::string::npos);
+    ok &= KERF_CHECK(succeeded == 0 && error.find("OBJ line 3: vertex index 9 is out of range: the file has 2 vertices") != std::string::npos);
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -8,20 +8,42 @@
 #include "vtkSegmentationWriter.h"
 
 #include <vtkCellData.h>
+#include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkOBJReader.h>
 #include <vtkOBJWriter.h>
+#include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
+#include <vtkSTLReader.h>
 #include <vtkSTLWriter.h>
 #include <vtkTestUtilities.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtksys/SystemTools.hxx>
 
 #include <fstream>
 #include <iostream>
+#include <vector>
+
+namespace
+{
+template <typename Reader>
+vtkSmartPointer<vtkPolyData> readWithVTK(const std::string& file)
+{
+  vtkNew<Reader> reader;
+  reader->SetFileName(file.c_str());
+  reader->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutput());
+  return mesh;
+}
+} // namespace
 
 int TestMeshIO(int argc, char* argv[])
 {
@@ -150,6 +172,118 @@ int TestMeshIO(int argc, char* argv[])
     ok &= KERF_CHECK(reader->GetOutput()->GetNumberOfPolys() == torus->GetNumberOfPolys());
     // STL stores each facet separately; its reader merges points back.
     ok &= KERF_CHECK(reader->GetOutput()->GetNumberOfPoints() == torus->GetNumberOfPoints());
+  }
+
+  // Kerf's PLY, STL and OBJ parsers and its checks before VTK's legacy and XML readers give what
+  // VTK's own readers give on every flavour VTK writes: the same points in the same order and the
+  // same cells.
+  struct Flavour
+  {
+    std::string file;
+    vtkSmartPointer<vtkPolyData> (*readWithVTK)(const std::string&);
+  };
+  std::vector<Flavour> flavours;
+  auto add = [&](auto writer, const std::string& name,
+               vtkSmartPointer<vtkPolyData> (*reader)(const std::string&)) {
+    const std::string file = temp + "/kerf-io-flavour-" + name;
+    writer->SetInputData(torus);
+    writer->SetFileName(file.c_str());
+    ok &= KERF_CHECK(writer->Write() == 1);
+    flavours.push_back({ file, reader });
+  };
+  for (int order : { 0, 1, 2 })
+  {
+    auto plyWriter = vtkSmartPointer<vtkPLYWriter>::New();
+    if (order == 0)
+    {
+      plyWriter->SetFileTypeToASCII();
+    }
+    else
+    {
+      plyWriter->SetFileTypeToBinary();
+      plyWriter->SetDataByteOrder(order == 1 ? VTK_LITTLE_ENDIAN : VTK_BIG_ENDIAN);
+    }
+    add(plyWriter, "order" + std::to_string(order) + ".ply", readWithVTK<vtkPLYReader>);
+  }
+  for (bool binary : { false, true })
+  {
+    auto stlWriter = vtkSmartPointer<vtkSTLWriter>::New();
+    binary ? stlWriter->SetFileTypeToBinary() : stlWriter->SetFileTypeToASCII();
+    add(stlWriter, std::string(binary ? "binary" : "ascii") + ".stl", readWithVTK<vtkSTLReader>);
+    auto legacyWriter = vtkSmartPointer<vtkPolyDataWriter>::New();
+    binary ? legacyWriter->SetFileTypeToBinary() : legacyWriter->SetFileTypeToASCII();
+    add(legacyWriter, std::string(binary ? "binary" : "ascii") + ".vtk", readWithVTK<vtkPolyDataReader>);
+  }
+  add(vtkSmartPointer<vtkOBJWriter>::New(), "text.obj", readWithVTK<vtkOBJReader>);
+  for (int mode : { 0, 1, 2, 3, 4 })
+  {
+    auto vtpWriter = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    mode == 0 ? vtpWriter->SetDataModeToAscii() : vtpWriter->SetDataModeToBinary();
+    vtpWriter->SetHeaderTypeToUInt32();
+    if (mode == 1)
+    {
+      vtpWriter->SetCompressorTypeToNone();
+      vtpWriter->SetHeaderTypeToUInt64();
+    }
+    if (mode == 2)
+    {
+      vtpWriter->SetCompressorTypeToZLib();
+    }
+    if (mode == 3)
+    {
+      vtpWriter->SetCompressorTypeToLZ4();
+    }
+    if (mode == 4)
+    {
+      vtpWriter->SetCompressorTypeToLZMA();
+      vtpWriter->SetBlockSize(256); // several blocks per array
+    }
+    add(vtpWriter, "mode" + std::to_string(mode) + ".vtp", readWithVTK<vtkXMLPolyDataReader>);
+  }
+  for (const Flavour& flavour : flavours)
+  {
+    vtkNew<vtkMeshFileReader> kerfReader;
+    kerfReader->SetFileName(flavour.file.c_str());
+    error = kerf::test::UpdateAndCaptureError(kerfReader);
+    std::cout << "read " << flavour.file << ": " << (error.empty() ? "ok" : error) << std::endl;
+    ok &= KERF_CHECK(error.empty());
+    vtkPolyData* kerfMesh = kerfReader->GetOutput();
+    vtkSmartPointer<vtkPolyData> vtkMesh = flavour.readWithVTK(flavour.file);
+    ok &= KERF_CHECK(vtkMesh && vtkMesh->GetNumberOfPoints() == kerfMesh->GetNumberOfPoints());
+    ok &= KERF_CHECK(vtkMesh && vtkMesh->GetNumberOfPolys() == kerfMesh->GetNumberOfPolys());
+    if (!vtkMesh || vtkMesh->GetNumberOfPoints() != kerfMesh->GetNumberOfPoints() ||
+      vtkMesh->GetNumberOfPolys() != kerfMesh->GetNumberOfPolys())
+    {
+      continue;
+    }
+    for (vtkIdType i = 0; i < kerfMesh->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      kerfMesh->GetPoint(i, a);
+      vtkMesh->GetPoint(i, b);
+      if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2])
+      {
+        ok &= KERF_CHECK(false && "a point differs from VTK's reader");
+        break;
+      }
+    }
+    vtkNew<vtkIdList> kerfCell;
+    vtkNew<vtkIdList> vtkCell;
+    for (vtkIdType c = 0; c < kerfMesh->GetNumberOfPolys(); ++c)
+    {
+      kerfMesh->GetPolys()->GetCellAtId(c, kerfCell);
+      vtkMesh->GetPolys()->GetCellAtId(c, vtkCell);
+      bool same = kerfCell->GetNumberOfIds() == vtkCell->GetNumberOfIds();
+      for (vtkIdType k = 0; same && k < kerfCell->GetNumberOfIds(); ++k)
+      {
+        same = kerfCell->GetId(k) == vtkCell->GetId(k);
+      }
+      if (!same)
+      {
+        ok &= KERF_CHECK(false && "a cell differs from VTK's reader");
+        break;
+      }
+    }
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -63,6 +63,19 @@ class KerfPluginTest(unittest.TestCase):
         self.assertGreaterEqual(segments.max(), 1)
         self.assertGreaterEqual(servermanager.Fetch(cut, idx=1).GetNumberOfLines(), 1)
 
+    def test_automatic_segmentation_proxies(self):
+        """Each automatic-segmentation proxy, by its label, labels every camel face with the
+        segments asked for."""
+        camel = simple.OpenDataFile(CAMEL)
+        for make in (simple.KMeansSegmentation, simple.HierarchicalFaceClustering,
+                     simple.ConvexFlooding, simple.WatershedSegmentation):
+            segmentation = make(Input=camel, SegmentCount=5)
+            segmentation.UpdatePipeline()
+            segments = vtk_to_numpy(servermanager.Fetch(segmentation).GetCellData().GetArray("Segment"))
+            self.assertEqual(len(segments), 19536)
+            self.assertEqual(sorted(set(segments.tolist())), list(range(5)))
+            simple.Delete(segmentation)
+
     def test_geodesic_distance_on_a_sphere(self):
         """From the north pole of a sphere of radius 2 the farthest point, the south pole, is
         half a great circle away: 2 pi."""

@@ -8,7 +8,13 @@
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/SurfaceConversion.h"
+#include "Segmentation/ConsensusCutSegmentation.h"
+#include "Segmentation/ConvexFlooding.h"
 #include "Segmentation/EasyMeshCut.h"
+#include "Segmentation/HierarchicalFaceClustering.h"
+#include "Segmentation/KMeansSegmentation.h"
+#include "Segmentation/SpectralSegmentation.h"
+#include "Segmentation/WatershedSegmentation.h"
 
 #include <poll.h>
 #include <sys/wait.h>
@@ -291,6 +297,75 @@ MethodOutput segmentWithHarmonicCuts(
   return output;
 }
 
+// Automatic methods: the mesh and k = nSeg-ByModel.txt's count for the model.
+int requestedSegments(const BenchmarkCase& c)
+{
+  if (c.model.requestedSegments < 1)
+  {
+    throw Error("model " + std::to_string(c.model.id) + " has no segment count in nSeg-ByModel.txt");
+  }
+  return std::min(c.model.requestedSegments, c.surface->mesh().faceCount());
+}
+
+MethodOutput segmentByFlooding(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  ConvexFloodingOptions options;
+  options.angleTolerance = parameters.positive("epsilon", options.angleTolerance);
+  options.minimumAreaFraction = parameters.positive("q", options.minimumAreaFraction);
+  options.segmentCount = requestedSegments(c);
+  return { segmentByConvexFlooding(FaceGraph(c.surface->mesh()), options).labels, 0 };
+}
+
+MethodOutput segmentWithWatershed(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  WatershedOptions options;
+  options.depthThreshold = parameters.positive("depth", options.depthThreshold);
+  options.segmentCount = requestedSegments(c);
+  return { segmentByWatershed(FaceGraph(c.surface->mesh()), options).labels, 0 };
+}
+
+MethodOutput segmentByFaceClustering(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  HierarchicalClusteringOptions options;
+  options.directionWeight = parameters.positive("a1", options.directionWeight);
+  options.shapeWeight = parameters.positive("a2", options.shapeWeight);
+  return { cutHierarchyAtCount(faceClusterHierarchy(*c.surface, options), requestedSegments(c)), 0 };
+}
+
+MethodOutput segmentWithKMeans(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  KMeansSegmentationOptions options;
+  options.physicalWeight = parameters.positive("delta", options.physicalWeight);
+  return { segmentByKMeans(FaceGraph(c.surface->mesh()), requestedSegments(c), options).labels, 0 };
+}
+
+MethodOutput segmentWithSpectralClustering(
+  const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  SpectralSegmentationOptions options;
+  options.geodesicWeight = parameters.positive("delta", options.geodesicWeight);
+  options.convexAngleWeight = parameters.positive("eta", options.convexAngleWeight);
+  options.patchCount = static_cast<int>(parameters.positive("patches", options.patchCount));
+  return { segmentSpectrally(FaceGraph(c.surface->mesh()), requestedSegments(c), options).labels, 0 };
+}
+
+MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  ConsensusCutOptions options;
+  options.weighting = parseLaplacianWeighting(parameters.text("weighting", laplacianWeightingName(options.weighting)));
+  options.extraFeaturePoints = static_cast<int>(parameters.positive("extra", options.extraFeaturePoints));
+  options.maximumFeaturePoints = static_cast<int>(parameters.positive("points", options.maximumFeaturePoints));
+  options.isovaluesPerField = static_cast<int>(parameters.positive("isovalues", options.isovaluesPerField));
+  options.clipQuantile = parameters.positive("clip", options.clipQuantile);
+  options.sameCutTolerance = parameters.positive("same", options.sameCutTolerance);
+  options.minimumSegmentArea = parameters.positive("area", options.minimumSegmentArea);
+  options.voteExponent = std::stod(parameters.text("votes", std::to_string(options.voteExponent)));
+  options.lengthExponent = std::stod(parameters.text("length", std::to_string(options.lengthExponent)));
+  options.areaExponent = std::stod(parameters.text("sizes", std::to_string(options.areaExponent)));
+  options.peaksPerField = static_cast<int>(parameters.positive("peaks", options.peaksPerField));
+  return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
+}
+
 // Easy Mesh Cutting (Ji et al. 2006) with a simulated user: one stroke per segment of the input
 // human through its innermost faces, then `corrections` rounds in which a stroke is added inside
 // the wrongly labelled faces of each segment (through their innermost ones), as a user corrects
@@ -411,6 +486,21 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
       { "weighting", "samples", "offset", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
       segmentWithHarmonicCuts },
+    { "convex-flooding",
+      "convex patches flooded on the dual graph, small ones merged (Kouhestani 2013, section 3.1), down to k",
+      { "epsilon", "q" }, SegmentationMethod::Protocol::Automatic, segmentByFlooding },
+    { "watershed", "edge watershed of 1 - cos(dihedral angle), basins merged by depth down to k",
+      { "depth" }, SegmentationMethod::Protocol::Automatic, segmentWithWatershed },
+    { "face-clustering", "Garland et al. 2001's hierarchical face clustering cut at k clusters",
+      { "a1", "a2" }, SegmentationMethod::Protocol::Automatic, segmentByFaceClustering },
+    { "k-means", "Shlafman et al. 2002's k-means face clustering on the dual graph",
+      { "delta" }, SegmentationMethod::Protocol::Automatic, segmentWithKMeans },
+    { "spectral", "Liu and Zhang 2004's spectral clustering on a coarsened patch graph",
+      { "delta", "eta", "patches" }, SegmentationMethod::Protocol::Automatic, segmentWithSpectralClustering },
+    { "consensus-cuts",
+      "cuts that many concavity-aware harmonic fields between feature points agree on, k - 1 of them",
+      { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks" },
+      SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment through its innermost faces, then strokes inside the wrongly labelled faces",
       { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },

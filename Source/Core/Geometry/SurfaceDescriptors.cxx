@@ -125,6 +125,14 @@ std::vector<std::array<double, 3>> computeCornerAreas(const TriangleMesh& mesh)
         c[j1] = -0.25 * l2[j2] * area / e[j].dot(e[j2]);
         c[j2] = -0.25 * l2[j1] * area / e[j].dot(e[j1]);
         c[j] = area - c[j1] - c[j2];
+        if (!std::isfinite(c[j]))
+        {
+          // Rounding of very unequal squared lengths made a right angle elsewhere look obtuse
+          // here, and a cosine of zero divided the area: use the mixed area instead (Meyer et
+          // al. 2003, Section 3.3: half for the obtuse corner, a quarter for each other).
+          c[j] = 0.5 * area;
+          c[j1] = c[j2] = 0.25 * area;
+        }
         obtuse = true;
       }
     }

@@ -2,173 +2,36 @@
 #include "IO/MeshFormats.h"
 
 #include "Error.h"
+#include "IO/LineCursor.h"
 
-#include <cctype>
-#include <charconv>
-#include <cstdio>
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <limits>
-#include <sstream>
 
 namespace kerf
 {
 
-namespace
-{
-// Walks a text line by line, skipping blank lines and '#' comments.
-class LineCursor
-{
-public:
-  LineCursor(const std::string& text, std::string fileKind)
-    : Text(text)
-    , Kind(std::move(fileKind))
-  {
-  }
-
-  // Moves to the next line with content; false at the end of the text.
-  bool next()
-  {
-    while (this->Position < this->Text.size())
-    {
-      const std::size_t end = this->Text.find('\n', this->Position);
-      const std::size_t stop = end == std::string::npos ? this->Text.size() : end;
-      this->First = this->Text.data() + this->Position;
-      this->Last = this->Text.data() + stop;
-      this->Position = stop + 1;
-      ++this->LineNumber;
-      for (const char* c = this->First; c != this->Last; ++c)
-      {
-        if (*c == '#')
-        {
-          this->Last = c;
-          break;
-        }
-      }
-      this->skipSpace();
-      if (this->First != this->Last)
-      {
-        return true;
-      }
-    }
-    return false;
-  }
-
-  bool atEndOfLine()
-  {
-    this->skipSpace();
-    return this->First == this->Last;
-  }
-
-  std::string word()
-  {
-    this->skipSpace();
-    const char* start = this->First;
-    while (this->First != this->Last && !std::isspace(static_cast<unsigned char>(*this->First)))
-    {
-      ++this->First;
-    }
-    return std::string(start, this->First);
-  }
-
-  // True if the next word is an integer (digits with an optional sign).
-  bool startsWithInteger()
-  {
-    this->skipSpace();
-    const char* c = this->First;
-    if (c != this->Last && (*c == '-' || *c == '+'))
-    {
-      ++c;
-    }
-    const char* digits = c;
-    while (c != this->Last && std::isdigit(static_cast<unsigned char>(*c)))
-    {
-      ++c;
-    }
-    return c != digits && (c == this->Last || std::isspace(static_cast<unsigned char>(*c)));
-  }
-
-  long long integer(const char* what)
-  {
-    this->skipSpace();
-    long long value = 0;
-    const char* start = this->First;
-    if (start != this->Last && *start == '+')
-    {
-      ++start;
-    }
-    const std::from_chars_result r = std::from_chars(start, this->Last, value);
-    if (r.ec != std::errc() || (r.ptr != this->Last && !std::isspace(static_cast<unsigned char>(*r.ptr))))
-    {
-      this->fail(std::string("expected an integer (") + what + ")");
-    }
-    this->First = r.ptr;
-    return value;
-  }
-
-  double real(const char* what)
-  {
-    this->skipSpace();
-    double value = 0.0;
-    const char* start = this->First;
-    if (start != this->Last && *start == '+')
-    {
-      ++start;
-    }
-    const std::from_chars_result r = std::from_chars(start, this->Last, value);
-    if (r.ec == std::errc::result_out_of_range)
-    {
-      // Overflowing literals read as infinities, underflowing ones as zero; validation decides.
-      value = std::strtod(std::string(start, r.ptr).c_str(), nullptr);
-    }
-    else if (r.ec != std::errc() ||
-      (r.ptr != this->Last && !std::isspace(static_cast<unsigned char>(*r.ptr))))
-    {
-      this->fail(std::string("expected a number (") + what + ")");
-    }
-    this->First = r.ptr;
-    return value;
-  }
-
-  [[noreturn]] void fail(const std::string& message) const
-  {
-    throw Error(this->Kind + " line " + std::to_string(this->LineNumber) + ": " + message);
-  }
-
-  int line() const { return this->LineNumber; }
-
-private:
-  void skipSpace()
-  {
-    while (this->First != this->Last && std::isspace(static_cast<unsigned char>(*this->First)))
-    {
-      ++this->First;
-    }
-  }
-
-  const std::string& Text;
-  std::string Kind;
-  std::size_t Position = 0;
-  int LineNumber = 0;
-  const char* First = nullptr;
-  const char* Last = nullptr;
-};
-} // namespace
-
 std::string readTextFile(const std::string& fileName)
 {
-  std::ifstream in(fileName, std::ios::binary);
+  std::ifstream in(fileName, std::ios::binary | std::ios::ate);
   if (!in)
   {
     throw Error("cannot open " + fileName);
   }
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad())
+  const std::streamoff size = in.tellg();
+  std::string bytes;
+  if (size > 0)
+  {
+    bytes.resize(static_cast<std::size_t>(size));
+    in.seekg(0);
+    in.read(&bytes[0], size);
+  }
+  if (size < 0 || in.gcount() != size)
   {
     throw Error("cannot read " + fileName);
   }
-  return buffer.str();
+  return bytes;
 }
 
 PolygonMesh parseOFF(const std::string& text)
@@ -182,7 +45,7 @@ PolygonMesh parseOFF(const std::string& text)
   // The header is optional: a first word that is a plain integer is already the vertex count.
   if (!cursor.startsWithInteger())
   {
-    std::string header = cursor.word();
+    const std::string header(cursor.word());
     if (header.size() < 3 || header.compare(header.size() - 3, 3, "OFF") != 0)
     {
       cursor.fail("expected the OFF header, found '" + header.substr(0, 40) + "'");
@@ -199,7 +62,7 @@ PolygonMesh parseOFF(const std::string& text)
     {
       if (!cursor.startsWithInteger())
       {
-        const std::string word = cursor.word();
+        const std::string word(cursor.word());
         if (word == "BINARY")
         {
           cursor.fail("binary OFF is not supported; convert it to ASCII OFF");
@@ -219,10 +82,13 @@ PolygonMesh parseOFF(const std::string& text)
   {
     cursor.fail("invalid vertex or face count");
   }
+  // A vertex line takes at least 6 bytes ("0 0 0\n") and a face line 8 ("3 0 1 2\n"): the
+  // allocations are sized by what the file can hold, not by what its header claims.
+  const std::size_t bytes = text.size();
   PolygonMesh mesh;
-  mesh.points.reserve(static_cast<std::size_t>(vertexCount));
-  mesh.polygonOffsets.reserve(static_cast<std::size_t>(faceCount) + 1);
-  mesh.polygonIndices.reserve(static_cast<std::size_t>(faceCount) * 3);
+  mesh.points.reserve(std::min(static_cast<std::size_t>(vertexCount), bytes / 6));
+  mesh.polygonOffsets.reserve(std::min(static_cast<std::size_t>(faceCount), bytes / 8) + 1);
+  mesh.polygonIndices.reserve(std::min(static_cast<std::size_t>(faceCount), bytes / 8) * 3);
   for (long long v = 0; v < vertexCount; ++v)
   {
     if (!cursor.next())

@@ -1,0 +1,514 @@
+// Consensus cuts: feature points, unit-current harmonic fields, isoline candidates, grouping and greedy selection.
+#include "Segmentation/ConsensusCutSegmentation.h"
+
+#include "Error.h"
+#include "Geodesic/GraphDistance.h"
+#include "Harmonic/FieldGradient.h"
+#include "Harmonic/Isolines.h"
+#include "Harmonic/SparseCholesky.h"
+#include "Mesh/MeshValidation.h"
+#include "Session/Surface.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+
+namespace kerf
+{
+
+namespace
+{
+using Bits = std::vector<std::uint64_t>;
+
+// One candidate cut: the side it splits off (the smaller by area) and its score.
+struct Candidate
+{
+  Bits side;
+  double sideArea = 0.0;
+  Vector3 centroid = Vector3::Zero(); ///< of the side, area-weighted
+  double extent = 0.0;                ///< the side's bounding-box diagonal
+  double score = 0.0;
+  int field = -1;
+};
+
+// A group of candidates that split the surface the same way.
+struct ConsensusCut
+{
+  int representative = -1; // the best-scoring candidate
+  double bestScore = 0.0;
+  std::vector<int> fields; // distinct fields that found it
+  double rank = 0.0;
+};
+
+double symmetricDifferenceArea(const Bits& a, const Bits& b, const std::vector<double>& area)
+{
+  double sum = 0.0;
+  for (std::size_t w = 0; w < a.size(); ++w)
+  {
+    std::uint64_t x = a[w] ^ b[w];
+    while (x)
+    {
+      const int bit = __builtin_ctzll(x);
+      sum += area[w * 64 + static_cast<std::size_t>(bit)];
+      x &= x - 1;
+    }
+  }
+  return sum;
+}
+
+// Feature points: farthest-point sampling along the edges, starting from the vertex farthest
+// from the first used vertex.
+std::vector<int> farthestPoints(const TriangleMesh& mesh, int count)
+{
+  int start = 0;
+  while (start < mesh.vertexCount() && mesh.vertexFaces(start).empty())
+  {
+    ++start;
+  }
+  auto farthest = [&mesh](const std::vector<double>& d) {
+    int best = -1;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      if (std::isfinite(d[v]) && !mesh.vertexFaces(v).empty() && (best < 0 || d[v] > d[best]))
+      {
+        best = v;
+      }
+    }
+    return best;
+  };
+  std::vector<int> points{ farthest(edgeGraphDistances(mesh, { start })) };
+  std::vector<double> distance = edgeGraphDistances(mesh, points);
+  while (static_cast<int>(points.size()) < count)
+  {
+    const int next = farthest(distance);
+    if (next < 0 || distance[next] <= 0.0)
+    {
+      break;
+    }
+    points.push_back(next);
+    const std::vector<double> d = edgeGraphDistances(mesh, { next });
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      distance[v] = std::min(distance[v], d[v]);
+    }
+  }
+  return points;
+}
+
+// The potential of a unit source at each feature point, with the sink at a ground vertex
+// (L_rr G = e_i on the other vertices; the ground and unused vertices hold 0).
+std::vector<std::vector<double>> unitPotentials(const TriangleMesh& mesh, const std::vector<double>& weights,
+  const std::vector<int>& sources)
+{
+  const int n = mesh.vertexCount();
+  const Eigen::SparseMatrix<double> laplacian = assembleLaplacian(mesh, weights);
+  std::vector<int> reduced(n, -1);
+  int ground = -1, free = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    if (mesh.vertexFaces(v).empty())
+    {
+      continue;
+    }
+    if (ground < 0)
+    {
+      ground = v;
+      continue;
+    }
+    reduced[v] = free++;
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int k = 0; k < laplacian.outerSize(); ++k)
+  {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(laplacian, k); it; ++it)
+    {
+      const int r = reduced[it.row()], c = reduced[it.col()];
+      if (r >= 0 && c >= 0 && r >= c)
+      {
+        entries.emplace_back(r, c, it.value());
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> system(free, free);
+  system.setFromTriplets(entries.begin(), entries.end());
+  SparseCholesky cholesky;
+  if (!cholesky.factor(system))
+  {
+    throw Error("the concavity-aware Laplacian could not be factored (is the surface connected?)");
+  }
+  std::vector<std::vector<double>> potentials;
+  for (int s : sources)
+  {
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(free);
+    if (reduced[s] >= 0)
+    {
+      rhs[reduced[s]] = 1.0;
+    }
+    const Eigen::VectorXd x = cholesky.solve(rhs);
+    std::vector<double> potential(n, 0.0);
+    for (int v = 0; v < n; ++v)
+    {
+      if (reduced[v] >= 0)
+      {
+        potential[v] = x[reduced[v]];
+      }
+    }
+    potentials.push_back(std::move(potential));
+  }
+  return potentials;
+}
+
+// The field f_ij = G_i - G_j clipped to its quantiles (the peaks at the two points cut off).
+std::vector<double> clippedField(const TriangleMesh& mesh, const std::vector<double>& gi, const std::vector<double>& gj,
+  double quantile, std::vector<double>& sorted)
+{
+  std::vector<double> field(gi.size());
+  sorted.clear();
+  for (std::size_t v = 0; v < gi.size(); ++v)
+  {
+    field[v] = gi[v] - gj[v];
+    if (!mesh.vertexFaces(static_cast<int>(v)).empty())
+    {
+      sorted.push_back(field[v]);
+    }
+  }
+  const std::size_t last = sorted.size() - 1;
+  const auto low = sorted.begin() + static_cast<std::ptrdiff_t>(std::floor(quantile * last));
+  const auto high = sorted.begin() + static_cast<std::ptrdiff_t>(std::ceil((1.0 - quantile) * last));
+  std::nth_element(sorted.begin(), low, sorted.end());
+  const double lo = *low;
+  std::nth_element(low, high, sorted.end());
+  const double hi = *high;
+  for (double& value : field)
+  {
+    value = std::clamp(value, lo, hi);
+  }
+  return field;
+}
+
+// The smaller of the two sides an isoline component splits the surface into, found by flooding
+// from the component's faces with a stop at half the area, so that it costs the smaller side.
+class SideFinder
+{
+public:
+  explicit SideFinder(const FaceGraph& graph)
+    : Graph(graph)
+    , OnCut(graph.faceCount(), 0)
+    , Visited(graph.faceCount(), 0)
+    , Owner(graph.faceCount(), 0)
+  {
+  }
+
+  /// False when the component does not split the surface in two.
+  bool smallerSide(const std::vector<double>& field, double value, const Isoline& line, Candidate& candidate)
+  {
+    const TriangleMesh& mesh = this->Graph.mesh();
+    ++this->CutStamp;
+    for (int f : line.faces)
+    {
+      this->OnCut[f] = this->CutStamp;
+    }
+    auto upper = [&](int f) {
+      const Triangle& t = mesh.triangle(f);
+      return (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= value;
+    };
+    const int first = line.faces.front();
+    const bool firstUpper = upper(first);
+    int second = -1; // a face across the cut from the first one's side
+    for (int f : line.faces)
+    {
+      if (upper(f) != firstUpper)
+      {
+        second = f;
+        break;
+      }
+      for (int e : this->Graph.faceEdges(f))
+      {
+        if (e >= 0 && upper(this->Graph.opposite(e, f)) != firstUpper)
+        {
+          second = this->Graph.opposite(e, f);
+          break;
+        }
+      }
+      if (second >= 0)
+      {
+        break;
+      }
+    }
+    if (second < 0)
+    {
+      return false;
+    }
+    // Both sides flood in turns, one face at a time; the first to finish is the smaller.
+    const int stamp = ++this->VisitStamp;
+    std::array<std::vector<int>, 2> queues{ { { first }, { second } } };
+    std::array<std::size_t, 2> next{ { 0, 0 } };
+    std::array<double, 2> areas{ { 0.0, 0.0 } };
+    this->Visited[first] = stamp;
+    this->Visited[second] = stamp;
+    this->Owner[first] = 0;
+    this->Owner[second] = 1;
+    const double half = 0.5 * this->Graph.totalArea();
+    for (int turn = 0;; turn = 1 - turn)
+    {
+      std::vector<int>& queue = queues[turn];
+      if (next[turn] == queue.size())
+      {
+        if (areas[turn] > half)
+        {
+          return false; // the cut does not split the surface: one side reached the other
+        }
+        this->fill(queue, candidate);
+        candidate.sideArea = areas[turn];
+        return true;
+      }
+      const int f = queue[next[turn]++];
+      areas[turn] += this->Graph.area(f);
+      const bool fUpper = upper(f);
+      for (int e : this->Graph.faceEdges(f))
+      {
+        if (e < 0)
+        {
+          continue;
+        }
+        const int g = this->Graph.opposite(e, f);
+        const bool cutHere = this->OnCut[f] == this->CutStamp || this->OnCut[g] == this->CutStamp;
+        if (cutHere && upper(g) != fUpper)
+        {
+          continue;
+        }
+        if (this->Visited[g] == stamp)
+        {
+          if (this->Owner[g] != turn)
+          {
+            return false; // the two sides meet: the cut does not split the surface
+          }
+          continue;
+        }
+        this->Visited[g] = stamp;
+        this->Owner[g] = static_cast<char>(turn);
+        queue.push_back(g);
+      }
+    }
+  }
+
+private:
+  void fill(const std::vector<int>& faces, Candidate& candidate) const
+  {
+    candidate.side.assign((static_cast<std::size_t>(this->Graph.faceCount()) + 63) / 64, 0);
+    Vector3 low = this->Graph.centroid(faces.front()), high = low;
+    candidate.centroid.setZero();
+    double area = 0.0;
+    for (int f : faces)
+    {
+      candidate.side[static_cast<std::size_t>(f) / 64] |= std::uint64_t(1) << (f % 64);
+      candidate.centroid += this->Graph.area(f) * this->Graph.centroid(f);
+      area += this->Graph.area(f);
+      low = low.cwiseMin(this->Graph.centroid(f));
+      high = high.cwiseMax(this->Graph.centroid(f));
+    }
+    candidate.centroid /= std::max(area, std::numeric_limits<double>::min());
+    candidate.extent = (high - low).norm();
+  }
+
+  const FaceGraph& Graph;
+  std::vector<int> OnCut;
+  std::vector<int> Visited;
+  std::vector<char> Owner;
+  int CutStamp = 0;
+  int VisitStamp = 0;
+};
+
+ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  const FaceGraph graph(mesh);
+  const int n = graph.faceCount();
+  ConsensusCutResult result;
+  if (k == 1)
+  {
+    result.labels.assign(n, 0);
+    return result;
+  }
+  const int pointCount = std::min(options.maximumFeaturePoints, k + options.extraFeaturePoints);
+  const std::vector<int> points = farthestPoints(mesh, std::max(2, pointCount));
+  result.featurePoints = static_cast<int>(points.size());
+  LaplacianWeightOptions weightOptions;
+  weightOptions.weighting = options.weighting;
+  const std::vector<std::vector<double>> potentials =
+    unitPotentials(mesh, surface.laplacianWeights(weightOptions).weights, points);
+
+  const double minimumArea = options.minimumSegmentArea * graph.totalArea();
+  std::vector<Candidate> candidates;
+  std::vector<double> sorted;
+  SideFinder sides(graph);
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    for (std::size_t j = i + 1; j < points.size(); ++j)
+    {
+      const int fieldIndex = result.fields++;
+      const std::vector<double> field = clippedField(mesh, potentials[i], potentials[j], options.clipQuantile, sorted);
+      const std::vector<double> gradient = faceGradientMagnitudes(mesh, field);
+      const std::vector<IsovalueScore> scores = scoreIsovalues(mesh, field, gradient, options.isovaluesPerField);
+      // The peaks of the score along the isovalues, the strongest first (score times length^gamma).
+      std::vector<std::pair<double, std::size_t>> peaks;
+      for (std::size_t s = 0; s < scores.size(); ++s)
+      {
+        const double left = s > 0 ? scores[s - 1].score : 0.0;
+        const double right = s + 1 < scores.size() ? scores[s + 1].score : 0.0;
+        if (scores[s].score > left && scores[s].score >= right)
+        {
+          peaks.push_back({ -scores[s].score * std::pow(scores[s].length, options.lengthExponent), s });
+        }
+      }
+      std::sort(peaks.begin(), peaks.end());
+      peaks.resize(std::min<std::size_t>(peaks.size(), static_cast<std::size_t>(options.peaksPerField)));
+      for (const auto& peak : peaks)
+      {
+        const std::size_t s = peak.second;
+        const std::vector<Isoline> isolines = extractIsolines(mesh, field, scores[s].value);
+        for (const Isoline& line : isolines)
+        {
+          Candidate candidate;
+          if (!sides.smallerSide(field, scores[s].value, line, candidate) ||
+            candidate.sideArea < minimumArea)
+          {
+            continue;
+          }
+          // Unit current: score x length is the cut's mean resistance per unit length.
+          candidate.score = isolineScore({ line }, gradient) * std::pow(line.length, options.lengthExponent);
+          candidate.field = fieldIndex;
+          candidates.push_back(std::move(candidate));
+        }
+      }
+    }
+  }
+  result.candidates = static_cast<int>(candidates.size());
+
+  // Group candidates that split the surface alike, best score first.
+  std::vector<int> order(candidates.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return candidates[a].score > candidates[b].score; });
+  std::vector<ConsensusCut> cuts;
+  for (int c : order)
+  {
+    const Candidate& candidate = candidates[c];
+    ConsensusCut* home = nullptr;
+    for (ConsensusCut& cut : cuts)
+    {
+      const Candidate& r = candidates[cut.representative];
+      const double tolerance = options.sameCutTolerance * std::min(r.sideArea, candidate.sideArea);
+      if (std::abs(r.sideArea - candidate.sideArea) <= tolerance &&
+        (r.centroid - candidate.centroid).norm() <= options.sameCutTolerance * std::max(r.extent, candidate.extent) &&
+        symmetricDifferenceArea(r.side, candidate.side, graph.areas()) <= tolerance)
+      {
+        home = &cut;
+        break;
+      }
+    }
+    if (!home)
+    {
+      cuts.push_back({ c, candidate.score, {}, 0.0 });
+      home = &cuts.back();
+    }
+    if (std::find(home->fields.begin(), home->fields.end(), candidate.field) == home->fields.end())
+    {
+      home->fields.push_back(candidate.field);
+    }
+  }
+  for (ConsensusCut& cut : cuts)
+  {
+    cut.rank = cut.bestScore * std::pow(static_cast<double>(cut.fields.size()), options.voteExponent) *
+      std::pow(candidates[cut.representative].sideArea / graph.totalArea(), options.areaExponent);
+  }
+  std::stable_sort(cuts.begin(), cuts.end(), [](const ConsensusCut& a, const ConsensusCut& b) { return a.rank > b.rank; });
+  result.consensusCuts = static_cast<int>(cuts.size());
+
+  // Greedy selection: each cut splits the current segments by its side; refused when a segment
+  // would fall below the minimum area or the count would pass k.
+  std::vector<int> labels(n, 0);
+  int segments = 1;
+  std::vector<int> next(n);
+  std::vector<double> segmentArea;
+  for (const ConsensusCut& cut : cuts)
+  {
+    if (segments >= k)
+    {
+      break;
+    }
+    const Bits& side = candidates[cut.representative].side;
+    std::vector<int> map(static_cast<std::size_t>(segments) * 2, -1);
+    int count = 0;
+    segmentArea.clear();
+    for (int f = 0; f < n; ++f)
+    {
+      const int in = (side[static_cast<std::size_t>(f) / 64] >> (f % 64)) & 1;
+      int& slot = map[static_cast<std::size_t>(labels[f]) * 2 + static_cast<std::size_t>(in)];
+      if (slot < 0)
+      {
+        slot = count++;
+        segmentArea.push_back(0.0);
+      }
+      next[f] = slot;
+      segmentArea[slot] += graph.area(f);
+    }
+    if (count == segments || count > k ||
+      *std::min_element(segmentArea.begin(), segmentArea.end()) < minimumArea)
+    {
+      continue;
+    }
+    labels.swap(next);
+    segments = count;
+    ++result.chosenCuts;
+  }
+  result.labels = finalizeSegments(graph, labels, k);
+  return result;
+}
+} // namespace
+
+ConsensusCutResult segmentByConsensusCuts(const Surface& surface, int k, const ConsensusCutOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  checkSegmentCount(k, mesh.faceCount());
+  if (options.extraFeaturePoints < 0 || options.maximumFeaturePoints < 2 || options.isovaluesPerField < 1)
+  {
+    throw Error("consensus cuts need at least 2 feature points, no negative extra points and at least 1 isovalue");
+  }
+  if (!(options.clipQuantile >= 0.0 && options.clipQuantile < 0.5) ||
+    !(options.sameCutTolerance >= 0.0 && options.sameCutTolerance <= 1.0) ||
+    !(options.minimumSegmentArea >= 0.0 && options.minimumSegmentArea < 1.0) ||
+    !(options.voteExponent >= 0.0 && std::isfinite(options.voteExponent)))
+  {
+    throw Error("a consensus-cut option is out of range (clip quantile in [0, 0.5), tolerance in [0, 1], "
+                "minimum area in [0, 1), vote exponent >= 0)");
+  }
+  const MeshReport report = inspectMesh(mesh);
+  if (report.nonManifoldEdges > 0 || report.inconsistentEdges > 0)
+  {
+    throw Error("consensus cuts need an edge-manifold, consistently oriented surface (" +
+      std::to_string(report.nonManifoldEdges) + " non-manifold and " + std::to_string(report.inconsistentEdges) +
+      " inconsistently oriented edges)");
+  }
+  const FaceGraph graph(mesh);
+  if (graph.componentCount() == 1)
+  {
+    return segmentConnected(surface, k, options);
+  }
+  ConsensusCutResult result;
+  result.labels = segmentComponents(graph, k, [&](const TriangleMesh& part, int partK) {
+    const Surface partSurface(part);
+    const ConsensusCutResult partResult = segmentConnected(partSurface, partK, options);
+    result.featurePoints += partResult.featurePoints;
+    result.fields += partResult.fields;
+    result.candidates += partResult.candidates;
+    result.consensusCuts += partResult.consensusCuts;
+    result.chosenCuts += partResult.chosenCuts;
+    return partResult.labels;
+  });
+  return result;
+}
+
+} // namespace kerf

@@ -1,0 +1,272 @@
+// Spectral face clustering on a patch graph: distances, affinity, leading eigenvectors, k-means in the embedding.
+#include "Segmentation/SpectralSegmentation.h"
+
+#include "Error.h"
+#include "Segmentation/HierarchicalFaceClustering.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <map>
+#include <queue>
+
+namespace kerf
+{
+
+namespace
+{
+// Area-weighted k-means of the rows of `points`, seeded as Liu and Zhang 2004 do.
+std::vector<int> clusterEmbedding(const Eigen::MatrixXd& points, const std::vector<double>& weights, int k, int& iterations)
+{
+  const int m = static_cast<int>(points.rows());
+  const Eigen::MatrixXd association = points * points.transpose();
+  std::vector<int> seeds;
+  Eigen::Index r = 0, s = 0;
+  association.minCoeff(&r, &s);
+  seeds.push_back(static_cast<int>(r));
+  if (k > 1)
+  {
+    seeds.push_back(static_cast<int>(s == r ? (r + 1) % m : s));
+  }
+  while (static_cast<int>(seeds.size()) < k)
+  {
+    int best = -1;
+    double bestValue = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < m; ++i)
+    {
+      if (std::find(seeds.begin(), seeds.end(), i) != seeds.end())
+      {
+        continue;
+      }
+      double largest = -std::numeric_limits<double>::infinity();
+      for (int seed : seeds)
+      {
+        largest = std::max(largest, association(i, seed));
+      }
+      if (largest < bestValue)
+      {
+        bestValue = largest;
+        best = i;
+      }
+    }
+    seeds.push_back(best);
+  }
+  Eigen::MatrixXd centres(k, points.cols());
+  for (int c = 0; c < k; ++c)
+  {
+    centres.row(c) = points.row(seeds[c]);
+  }
+  std::vector<int> label(m, -1);
+  for (iterations = 1; iterations <= 100; ++iterations)
+  {
+    bool changed = false;
+    for (int i = 0; i < m; ++i)
+    {
+      int best = 0;
+      (centres.rowwise() - points.row(i)).rowwise().squaredNorm().minCoeff(&best);
+      changed = changed || best != label[i];
+      label[i] = best;
+    }
+    if (!changed)
+    {
+      break;
+    }
+    Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(k, points.cols());
+    std::vector<double> mass(k, 0.0);
+    for (int i = 0; i < m; ++i)
+    {
+      sums.row(label[i]) += weights[i] * points.row(i);
+      mass[label[i]] += weights[i];
+    }
+    for (int c = 0; c < k; ++c)
+    {
+      if (mass[c] > 0.0)
+      {
+        centres.row(c) = sums.row(c) / mass[c];
+      }
+    }
+  }
+  return label;
+}
+
+SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
+{
+  const int n = graph.faceCount();
+  SpectralSegmentationResult result;
+  // Patches: Garland et al.'s clusters, or the faces themselves on small meshes.
+  std::vector<int> patch(n);
+  if (n > options.patchCount)
+  {
+    patch = cutHierarchyAtCount(buildFaceClusterHierarchy(graph, HierarchicalClusteringOptions()), options.patchCount);
+  }
+  else
+  {
+    std::iota(patch.begin(), patch.end(), 0);
+  }
+  const int m = *std::max_element(patch.begin(), patch.end()) + 1;
+  result.patches = m;
+  if (k == 1 || m == 1)
+  {
+    result.labels.assign(n, 0);
+    return result;
+  }
+  std::vector<double> area(m, 0.0);
+  std::vector<Vector3> centroid(m, Vector3::Zero());
+  for (int f = 0; f < n; ++f)
+  {
+    area[patch[f]] += graph.area(f);
+    centroid[patch[f]] += graph.area(f) * graph.centroid(f);
+  }
+  for (int p = 0; p < m; ++p)
+  {
+    centroid[p] = area[p] > 0.0 ? Vector3(centroid[p] / area[p]) : centroid[p];
+  }
+  // Liu and Zhang 2004, section 3: angular distance eta (1 - cos alpha), eta = 1 where concave.
+  std::vector<double> angular(graph.edgeCount());
+  double meanAngular = 0.0;
+  for (int e = 0; e < graph.edgeCount(); ++e)
+  {
+    const DualEdge& d = graph.edge(e);
+    angular[e] = (d.bend < 0.0 ? 1.0 : options.convexAngleWeight) * (1.0 - d.normalCosine);
+    meanAngular += angular[e];
+  }
+  // Patch boundaries: length, length-weighted angular distance and midpoint.
+  struct Boundary
+  {
+    double length = 0.0, angular = 0.0;
+    Vector3 middle = Vector3::Zero();
+  };
+  std::vector<std::map<int, Boundary>> boundaries(m);
+  for (int e = 0; e < graph.edgeCount(); ++e)
+  {
+    const DualEdge& d = graph.edge(e);
+    const int a = patch[d.faces[0]], b = patch[d.faces[1]];
+    if (a == b)
+    {
+      continue;
+    }
+    const TriangleMesh& mesh = graph.mesh();
+    const Vector3 middle = 0.5 * (mesh.point(mesh.edgeVertices(d.meshEdge)[0]) + mesh.point(mesh.edgeVertices(d.meshEdge)[1]));
+    Boundary& boundary = boundaries[std::min(a, b)][std::max(a, b)];
+    boundary.length += d.length;
+    boundary.angular += d.length * angular[e];
+    boundary.middle += d.length * middle;
+  }
+  struct PatchEdge
+  {
+    int a, b;
+    double geodesic, angular;
+  };
+  std::vector<PatchEdge> patchEdges;
+  double meanGeodesic = 0.0, meanPatchAngular = 0.0;
+  for (int a = 0; a < m; ++a)
+  {
+    for (const auto& [b, boundary] : boundaries[a])
+    {
+      const double length = std::max(boundary.length, std::numeric_limits<double>::min());
+      const Vector3 middle = boundary.middle / length;
+      const PatchEdge edge{ a, b, (centroid[a] - middle).norm() + (centroid[b] - middle).norm(), boundary.angular / length };
+      meanGeodesic += edge.geodesic;
+      meanPatchAngular += edge.angular;
+      patchEdges.push_back(edge);
+    }
+  }
+  const double edges = std::max<double>(1.0, static_cast<double>(patchEdges.size()));
+  meanGeodesic = meanGeodesic > 0.0 ? meanGeodesic / edges : 1.0;
+  meanPatchAngular = meanPatchAngular > 0.0 ? meanPatchAngular / edges : 1.0;
+  std::vector<std::vector<std::pair<int, double>>> adjacency(m);
+  for (const PatchEdge& edge : patchEdges)
+  {
+    // Liu and Zhang 2004, section 3: Dist = delta Geod / avg(Geod) + (1 - delta) Ang / avg(Ang).
+    const double distance = options.geodesicWeight * edge.geodesic / meanGeodesic +
+      (1.0 - options.geodesicWeight) * edge.angular / meanPatchAngular;
+    adjacency[edge.a].push_back({ edge.b, distance });
+    adjacency[edge.b].push_back({ edge.a, distance });
+  }
+  // All-pairs shortest paths on the patch graph.
+  Eigen::MatrixXd distance = Eigen::MatrixXd::Constant(m, m, std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  for (int source = 0; source < m; ++source)
+  {
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+    distance(source, source) = 0.0;
+    heap.emplace(0.0, source);
+    while (!heap.empty())
+    {
+      const auto [d, p] = heap.top();
+      heap.pop();
+      if (d > distance(source, p))
+      {
+        continue;
+      }
+      for (const auto& [q, w] : adjacency[p])
+      {
+        if (d + w < distance(source, q))
+        {
+          distance(source, q) = d + w;
+          heap.emplace(d + w, q);
+        }
+      }
+    }
+  }
+  const double sigma = std::max(distance.mean(), std::numeric_limits<double>::min());
+  // W = exp(-Dist / (2 sigma^2)), N = D^-1/2 W D^-1/2 (Liu and Zhang 2004, section 3).
+  Eigen::MatrixXd affinity = (-distance / (2.0 * sigma * sigma)).array().exp().matrix();
+  const Eigen::VectorXd degree = affinity.rowwise().sum().cwiseMax(std::numeric_limits<double>::min());
+  const Eigen::VectorXd scale = degree.cwiseSqrt().cwiseInverse();
+  affinity = scale.asDiagonal() * affinity * scale.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(affinity);
+  if (eigen.info() != Eigen::Success)
+  {
+    throw Error("the spectral embedding's eigen decomposition failed");
+  }
+  const int dimensions = std::min(k, m);
+  Eigen::MatrixXd embedding = eigen.eigenvectors().rightCols(dimensions);
+  for (int p = 0; p < m; ++p)
+  {
+    const double norm = embedding.row(p).norm();
+    if (norm > 0.0)
+    {
+      embedding.row(p) /= norm;
+    }
+  }
+  const std::vector<int> cluster = clusterEmbedding(embedding, area, std::min(k, m), result.kMeansIterations);
+  std::vector<int> labels(n);
+  for (int f = 0; f < n; ++f)
+  {
+    labels[f] = cluster[patch[f]];
+  }
+  result.labels = finalizeSegments(graph, labels, k);
+  return result;
+}
+} // namespace
+
+SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
+{
+  checkSegmentCount(k, graph.faceCount());
+  if (!(options.geodesicWeight >= 0.0 && options.geodesicWeight <= 1.0) ||
+    !(options.convexAngleWeight >= 0.0 && options.convexAngleWeight <= 1.0))
+  {
+    throw Error("the spectral distance weights delta and eta must lie in [0, 1]");
+  }
+  if (options.patchCount < 2)
+  {
+    throw Error("the spectral affinity needs at least 2 patches");
+  }
+  if (graph.componentCount() == 1)
+  {
+    return segmentConnected(graph, k, options);
+  }
+  SpectralSegmentationResult result;
+  result.labels = segmentComponents(graph, k, [&](const TriangleMesh& part, int partK) {
+    const SpectralSegmentationResult partResult = segmentConnected(FaceGraph(part), partK, options);
+    result.patches += partResult.patches;
+    return partResult.labels;
+  });
+  return result;
+}
+
+} // namespace kerf

@@ -1,0 +1,45 @@
+// Spectral clustering of faces (Liu and Zhang 2004; Kouhestani 2013, section 3.5) on a coarsened mesh.
+#pragma once
+
+#include "Segmentation/FaceGraph.h"
+
+#include <vector>
+
+namespace kerf
+{
+
+struct SpectralSegmentationOptions
+{
+  /// delta of Dist = delta Geod / avg(Geod) + (1 - delta) Ang / avg(Ang). Default 0.03 (the
+  /// survey's range is [0.01, 0.05]).
+  double geodesicWeight = 0.03;
+  /// eta of Ang = eta (1 - cos alpha) on convex edges (concave edges use 1). Default 0.2 (the
+  /// survey's range is [0.1, 0.2]).
+  double convexAngleWeight = 0.2;
+  /// The dense n x n affinity is formed on this many patches, not on the faces: the faces are
+  /// first clustered by hierarchicalFaceClustering, the affinity and its eigenvectors computed
+  /// on the patch graph, and each face takes its patch's segment. Meshes with fewer faces are
+  /// not coarsened. Default 400.
+  int patchCount = 400;
+};
+
+struct SpectralSegmentationResult
+{
+  std::vector<int> labels; ///< per face, numbered by first face
+  int patches = 0;         ///< the size of the affinity matrix
+  int kMeansIterations = 0;
+};
+
+/// Liu and Zhang 2004: the distance of neighbouring patches is delta times their geodesic step
+/// (centroid to the middle of the shared boundary to centroid) over its mean plus (1 - delta)
+/// times the length-weighted mean angular distance across their boundary over its mean; all-pairs
+/// distances are shortest paths in the patch graph; W = exp(-Dist / (2 sigma^2)) with sigma the
+/// mean distance; N = D^-1/2 W D^-1/2; the rows of its k leading eigenvectors, normalised to unit
+/// length, are clustered by area-weighted k-means, seeded by the pair with the smallest
+/// association Q = V V^T and then each next seed minimising its largest association with those
+/// chosen. Faces take their patch's cluster; segments are made connected (finalizeSegments).
+/// Each dual-graph component is segmented apart (segmentComponents). Throws kerf::Error for k < 1,
+/// k > faces, weights outside [0, 1] or a patch count below 2.
+SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options);
+
+} // namespace kerf

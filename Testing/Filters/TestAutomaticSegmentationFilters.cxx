@@ -1,0 +1,345 @@
+// The automatic-segmentation filters on surfaces with known parts (a dumbbell's two lobes, a cube's
+// six sides): segment counts, Rand index against the known labels, determinism, untouched input,
+// the cached merge tree and the errors.
+#include "Evaluation/SegmentationMetrics.h"
+#include "KerfTestUtilities.h"
+#include "Mesh/MeshGenerators.h"
+#include "vtkConsensusCutSegmentation.h"
+#include "vtkConvexFlooding.h"
+#include "vtkHierarchicalFaceClustering.h"
+#include "vtkKMeansSegmentation.h"
+#include "vtkSpectralSegmentation.h"
+#include "vtkWatershedSegmentation.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkCubeSource.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkLinearSubdivisionFilter.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTriangleFilter.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <functional>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+/// The int cell array `name` of `output`, or an empty list.
+std::vector<int> ReadLabels(vtkPolyData* output, const char* name)
+{
+  std::vector<int> labels;
+  vtkDataArray* array = output->GetCellData()->GetArray(name);
+  if (array)
+  {
+    for (vtkIdType c = 0; c < array->GetNumberOfTuples(); ++c)
+    {
+      labels.push_back(static_cast<int>(array->GetComponent(c, 0)));
+    }
+  }
+  return labels;
+}
+
+double FieldValue(vtkPolyData* output, const char* name)
+{
+  vtkDataArray* array = vtkDataArray::SafeDownCast(output->GetFieldData()->GetAbstractArray(name));
+  return array ? array->GetComponent(0, 0) : std::nan("");
+}
+
+/// The triangles of a polydata whose cells are all triangles, as a Core mesh (no welding).
+kerf::TriangleMesh ToTriangleMesh(vtkPolyData* polyData)
+{
+  std::vector<kerf::Vector3> points;
+  for (vtkIdType p = 0; p < polyData->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    polyData->GetPoint(p, x);
+    points.push_back({ x[0], x[1], x[2] });
+  }
+  std::vector<kerf::Triangle> triangles;
+  auto cells = vtk::TakeSmartPointer(polyData->GetPolys()->NewIterator());
+  for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
+  {
+    vtkIdType size;
+    const vtkIdType* ids;
+    cells->GetCurrentCell(size, ids);
+    triangles.push_back({ static_cast<int>(ids[0]), static_cast<int>(ids[1]), static_cast<int>(ids[2]) });
+  }
+  return kerf::TriangleMesh(std::move(points), std::move(triangles));
+}
+
+/// A surface with its known parts, one label per triangle.
+struct Fixture
+{
+  const char* name;
+  vtkSmartPointer<vtkPolyData> surface;
+  std::vector<int> parts;
+};
+
+/// Two equal lobes pinched at z = 0 (the profile is symmetric): part 0 below the neck, 1 above.
+Fixture Dumbbell()
+{
+  const kerf::TriangleMesh mesh = kerf::makeDumbbell(2.2, { { 1.0, 1.0 } }, 0.0, 0.65, 4);
+  std::vector<int> parts;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    double z = 0.0;
+    for (int v : mesh.triangle(f))
+    {
+      z += mesh.point(v)[2];
+    }
+    parts.push_back(z > 0.0 ? 1 : 0);
+  }
+  return { "dumbbell", kerf::test::ToPolyData(mesh), parts };
+}
+
+/// A unit cube whose sides are 32 triangles each, with points repeated along its edges (the
+/// filters weld them): the part of a triangle is its side.
+Fixture Cube()
+{
+  vtkNew<vtkCubeSource> cube;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cube->GetOutputPort());
+  vtkNew<vtkLinearSubdivisionFilter> subdivision;
+  subdivision->SetInputConnection(triangles->GetOutputPort());
+  subdivision->SetNumberOfSubdivisions(2);
+  subdivision->Update();
+  vtkSmartPointer<vtkPolyData> surface = subdivision->GetOutput();
+  const kerf::TriangleMesh mesh = ToTriangleMesh(surface);
+  std::vector<int> parts;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    kerf::Vector3 centroid = kerf::Vector3::Zero();
+    for (int v : mesh.triangle(f))
+    {
+      centroid = centroid + mesh.point(v) / 3.0;
+    }
+    int side = 0;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+      if (std::abs(centroid[axis]) > 0.5 - 1e-9)
+      {
+        side = 2 * axis + (centroid[axis] > 0.0 ? 1 : 0);
+      }
+    }
+    parts.push_back(side);
+  }
+  return { "cube", surface, parts };
+}
+
+/// The triangulated, twice subdivided quads `quads` on `points`.
+vtkSmartPointer<vtkPolyData> SubdividedQuads(
+  const std::vector<std::array<double, 3>>& points, const std::vector<std::array<vtkIdType, 4>>& quads)
+{
+  vtkNew<vtkPolyData> polyData;
+  vtkNew<vtkPoints> coordinates;
+  for (const auto& p : points)
+  {
+    coordinates->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> cells;
+  for (const auto& quad : quads)
+  {
+    cells->InsertNextCell(4, quad.data());
+  }
+  polyData->SetPoints(coordinates);
+  polyData->SetPolys(cells);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(polyData);
+  vtkNew<vtkLinearSubdivisionFilter> subdivision;
+  subdivision->SetInputConnection(triangles->GetOutputPort());
+  subdivision->SetNumberOfSubdivisions(2);
+  subdivision->Update();
+  return subdivision->GetOutput();
+}
+
+/// A box [-1, 1]^2 x [-1, 0] with a box [-0.5, 0.5]^2 x [0, 1] on it, closed and outward
+/// oriented, 448 triangles: part 1 is the upper box (its walls and top), part 0 the rest.
+Fixture StackedBoxes()
+{
+  const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
+  std::vector<std::array<double, 3>> points;
+  for (const auto& level : { std::array<double, 2>{ { 1.0, -1.0 } }, { { 1.0, 0.0 } }, { { 0.5, 0.0 } }, { { 0.5, 1.0 } } })
+  {
+    for (const auto& corner : corners)
+    {
+      points.push_back({ { level[0] * corner[0], level[0] * corner[1], level[1] } });
+    }
+  }
+  // Rings of four points: 0 the big box's bottom, 1 its top, 2 the small box's bottom, 3 its top.
+  std::vector<std::array<vtkIdType, 4>> quads{ { { 0, 3, 2, 1 } }, { { 12, 13, 14, 15 } } };
+  for (vtkIdType i = 0; i < 4; ++i)
+  {
+    const vtkIdType j = (i + 1) % 4;
+    for (vtkIdType ring : { 0, 4, 8 })
+    {
+      quads.push_back({ { ring + i, ring + j, ring + 4 + j, ring + 4 + i } });
+    }
+  }
+  vtkSmartPointer<vtkPolyData> surface = SubdividedQuads(points, quads);
+  const kerf::TriangleMesh mesh = ToTriangleMesh(surface);
+  std::vector<int> parts;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    double z = 0.0;
+    for (int v : mesh.triangle(f))
+    {
+      z += mesh.point(v)[2];
+    }
+    parts.push_back(z > 1e-9 ? 1 : 0);
+  }
+  return { "stacked boxes", surface, parts };
+}
+
+/// 1 - Rand index of `labels` against the fixture's parts.
+double RandIndexError(const Fixture& fixture, const std::vector<int>& labels)
+{
+  const kerf::TriangleMesh mesh = ToTriangleMesh(fixture.surface);
+  const kerf::SegmentationEvaluator evaluator(mesh);
+  return evaluator.compare(evaluator.prepare(labels), evaluator.prepare(fixture.parts)).randIndexError;
+}
+
+/// One filter, made and configured by `make`, on a fixture: it must find `segments` segments
+/// within `maximumError` (1 - Rand index) of the known parts, the same labels from a second
+/// filter, and leave its input untouched.
+bool CheckSegmentation(const char* method, const Fixture& fixture,
+  const std::function<vtkSmartPointer<vtkPolyDataAlgorithm>()>& make, int segments, double maximumError)
+{
+  bool ok = true;
+  const vtkMTimeType inputTime = fixture.surface->GetMTime();
+  const int inputArrays = fixture.surface->GetCellData()->GetNumberOfArrays();
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter = make();
+  filter->SetInputData(fixture.surface);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
+  const std::vector<int> labels = ReadLabels(filter->GetOutput(), "Segment");
+  ok &= KERF_CHECK(labels.size() == fixture.parts.size());
+  if (labels.size() != fixture.parts.size())
+  {
+    return false;
+  }
+  const double error = RandIndexError(fixture, labels);
+  const int count = static_cast<int>(FieldValue(filter->GetOutput(), "SegmentCount"));
+  std::cout << method << " on the " << fixture.name << ": " << count << " segments, 1 - Rand index "
+            << error << std::endl;
+  ok &= KERF_CHECK(count == segments);
+  ok &= KERF_CHECK(*std::max_element(labels.begin(), labels.end()) == segments - 1);
+  ok &= KERF_CHECK(*std::min_element(labels.begin(), labels.end()) == 0);
+  ok &= KERF_CHECK(error <= maximumError);
+  // Bit for bit the same from a new filter; the input untouched.
+  vtkSmartPointer<vtkPolyDataAlgorithm> again = make();
+  again->SetInputData(fixture.surface);
+  again->Update();
+  ok &= KERF_CHECK(ReadLabels(again->GetOutput(), "Segment") == labels);
+  ok &= KERF_CHECK(fixture.surface->GetMTime() == inputTime);
+  ok &= KERF_CHECK(fixture.surface->GetCellData()->GetNumberOfArrays() == inputArrays);
+  return ok;
+}
+
+/// The filter fails with a message naming `word` and leaves an empty output.
+bool CheckRefused(vtkPolyDataAlgorithm* filter, vtkPolyData* input, const std::string& word)
+{
+  filter->SetInputData(input);
+  int succeeded = 1;
+  const std::string message = kerf::test::UpdateAndCaptureError(filter, &succeeded);
+  bool ok = KERF_CHECK(succeeded == 0);
+  ok &= KERF_CHECK(message.find(word) != std::string::npos);
+  ok &= KERF_CHECK(filter->GetOutput()->GetNumberOfCells() == 0);
+  if (message.find(word) == std::string::npos)
+  {
+    std::cerr << "message: " << message << std::endl;
+  }
+  return ok;
+}
+
+template <typename T>
+std::function<vtkSmartPointer<vtkPolyDataAlgorithm>()> Maker(const std::function<void(T*)>& configure)
+{
+  return [configure]() {
+    auto filter = vtkSmartPointer<T>::New();
+    configure(filter);
+    return vtkSmartPointer<vtkPolyDataAlgorithm>(filter);
+  };
+}
+} // namespace
+
+int TestAutomaticSegmentationFilters(int, char*[])
+{
+  bool ok = true;
+  const Fixture dumbbell = Dumbbell();
+  const Fixture cube = Cube();
+  const Fixture steps = StackedBoxes();
+
+  // The dumbbell's two lobes, cut near the neck (measured 1 - Rand index: watershed 0.011,
+  // spectral 0.012, convex flooding 0.044, consensus cuts 0.065 with a cut 0.18 above the neck).
+  // K-means and face clustering split it lengthwise at k = 2: they are tested on the cube.
+  ok &= CheckSegmentation("Watershed", dumbbell,
+    Maker<vtkWatershedSegmentation>([](vtkWatershedSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.02);
+  ok &= CheckSegmentation("Spectral", dumbbell,
+    Maker<vtkSpectralSegmentation>([](vtkSpectralSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.02);
+  ok &= CheckSegmentation("Convex Flooding", dumbbell,
+    Maker<vtkConvexFlooding>([](vtkConvexFlooding* f) { f->SetSegmentCount(2); }), 2, 0.06);
+  ok &= CheckSegmentation("Consensus Cuts", dumbbell,
+    Maker<vtkConsensusCutSegmentation>([](vtkConsensusCutSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.08);
+
+  // Two stacked boxes: every edge where they meet is concave, so each is one convex patch.
+  ok &= CheckSegmentation("Convex Flooding", steps, Maker<vtkConvexFlooding>([](vtkConvexFlooding*) {}), 2, 0.0);
+
+  // The cube's six sides; a closed convex surface is one convex patch.
+  ok &= CheckSegmentation("Convex Flooding", cube, Maker<vtkConvexFlooding>([](vtkConvexFlooding*) {}), 1, 1.0);
+  ok &= CheckSegmentation("Watershed", cube, Maker<vtkWatershedSegmentation>([](vtkWatershedSegmentation*) {}), 6, 0.0);
+  ok &= CheckSegmentation("Hierarchical Face Clustering", cube,
+    Maker<vtkHierarchicalFaceClustering>([](vtkHierarchicalFaceClustering* f) { f->SetSegmentCount(6); }), 6, 0.0);
+  ok &= CheckSegmentation("K-Means", cube,
+    Maker<vtkKMeansSegmentation>([](vtkKMeansSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
+  ok &= CheckSegmentation("Spectral", cube,
+    Maker<vtkSpectralSegmentation>([](vtkSpectralSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
+
+  // The merge tree is built once: another count only relabels, and the tree is the output's.
+  vtkNew<vtkHierarchicalFaceClustering> clustering;
+  clustering->SetInputData(cube.surface);
+  clustering->SetSegmentCount(6);
+  clustering->Update();
+  auto work = [&]() {
+    return vtkStringArray::SafeDownCast(clustering->GetOutput()->GetFieldData()->GetAbstractArray("Work"))->GetValue(0);
+  };
+  ok &= KERF_CHECK(work() == "hierarchy");
+  ok &= KERF_CHECK(clustering->GetOutput()->GetFieldData()->GetAbstractArray("MergeCost")->GetNumberOfTuples() ==
+    static_cast<vtkIdType>(cube.parts.size()) - 1);
+  clustering->SetSegmentCount(3);
+  clustering->Update();
+  ok &= KERF_CHECK(work() == "relabel");
+  ok &= KERF_CHECK(FieldValue(clustering->GetOutput(), "SegmentCount") == 3.0);
+
+  // Parameters out of range are refused.
+  vtkNew<vtkKMeansSegmentation> kMeans;
+  kMeans->SetSegmentCount(static_cast<int>(cube.parts.size()) + 1);
+  ok &= CheckRefused(kMeans, cube.surface, "segment");
+  vtkNew<vtkConvexFlooding> flooding;
+  flooding->SetAngleTolerance(std::nan(""));
+  ok &= CheckRefused(flooding, cube.surface, "AngleTolerance");
+  vtkNew<vtkWatershedSegmentation> watershed;
+  watershed->SetDepthThreshold(-1.0);
+  ok &= CheckRefused(watershed, cube.surface, "threshold");
+  vtkNew<vtkHierarchicalFaceClustering> negative;
+  negative->SetSegmentCount(-1);
+  ok &= CheckRefused(negative, cube.surface, "SegmentCount");
+  vtkNew<vtkSpectralSegmentation> spectral;
+  spectral->SetPatchCount(1);
+  ok &= CheckRefused(spectral, cube.surface, "patch");
+  vtkNew<vtkConsensusCutSegmentation> consensus;
+  consensus->SetSegmentCount(0);
+  ok &= CheckRefused(consensus, cube.surface, "segment");
+  consensus->SetSegmentCount(2);
+  consensus->SetSegmentArrayName("");
+  ok &= CheckRefused(consensus, cube.surface, "name");
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}
