@@ -201,6 +201,16 @@ std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, c
   return checkedValues(array, "the point array '" + std::string(name) + "' of " + owner, points->GetNumberOfPoints(), "point");
 }
 
+std::vector<double> ReadNamedCellArray(vtkPolyData* cells, const char* name, const std::string& owner)
+{
+  vtkDataArray* array = name && *name ? cells->GetCellData()->GetArray(name) : nullptr;
+  if (!array)
+  {
+    throw Error(owner + " have no one-component cell array named '" + (name ? name : "") + "'");
+  }
+  return checkedValues(array, "the cell array '" + std::string(name) + "' of " + owner, cells->GetNumberOfCells(), "cell");
+}
+
 namespace
 {
 void checkStrokePointCount(long long count)

@@ -68,6 +68,8 @@ std::vector<double> ReadInputArray(
 /// input are selected with SetInputArrayToProcess and read with ReadInputArray; arrays of other
 /// inputs are named, see vtkHarmonicField.)
 std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner);
+/// The one-component cell array `name` of a polydata, one value per cell, as ReadNamedPointArray.
+std::vector<double> ReadNamedCellArray(vtkPolyData* cells, const char* name, const std::string& owner);
 
 /// The stroke points a filter's panel sets (ParaView's interactive polyline), one stroke. A count
 /// or an index beyond MaximumCount is refused before anything is allocated.

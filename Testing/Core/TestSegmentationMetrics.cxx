@@ -39,6 +39,19 @@ void expectAllZero(const SegmentationScores& s)
   EXPECT_EQ(s.globalConsistencyError, 0.0);
   EXPECT_EQ(s.localConsistencyError, 0.0);
 }
+
+// Labels 0, 5 and 9 for the faces of a cylinder of height 3 below z = 1, between 1 and 2, above.
+std::vector<int> threeBands(const TriangleMesh& cylinder)
+{
+  std::vector<int> labels(cylinder.faceCount());
+  for (int f = 0; f < cylinder.faceCount(); ++f)
+  {
+    const Triangle& t = cylinder.triangle(f);
+    const double z = (cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])).z() / 3.0;
+    labels[f] = z < 1.0 ? 0 : (z < 2.0 ? 5 : 9);
+  }
+  return labels;
+}
 } // namespace
 
 TEST(GraphDistance, GridDistancesAreEdgePathLengths)
@@ -208,13 +221,7 @@ TEST(SimulatedStrokes, OneStrokePerBoundaryChain)
 {
   // A cylinder cut into three bands: two boundaries, each a loop around the axis.
   const TriangleMesh cylinder = makeCylinder(1.0, 3.0, 48, 31);
-  std::vector<int> labels(cylinder.faceCount());
-  for (int f = 0; f < cylinder.faceCount(); ++f)
-  {
-    const Triangle& t = cylinder.triangle(f);
-    const double z = (cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])).z() / 3.0;
-    labels[f] = z < 1.0 ? 0 : (z < 2.0 ? 5 : 9);
-  }
+  std::vector<int> labels = threeBands(cylinder);
   const std::vector<BoundaryStroke> strokes = boundaryStrokes(cylinder, labels, 0.2);
   ASSERT_EQ(strokes.size(), 2u);
   EXPECT_EQ(strokes[0].label1, 0);
@@ -240,4 +247,52 @@ TEST(SimulatedStrokes, OneStrokePerBoundaryChain)
   }
   EXPECT_EQ(boundaryStrokes(cylinder, labels, 0.2).size(), 2u);
   EXPECT_THROW(boundaryStrokes(cylinder, { 1, 2 }, 0.2), Error);
+}
+
+TEST(SimulatedStrokes, InnermostStrokesRunAlongTheMiddleOfEachSegment)
+{
+  // Three bands of height 1 on an open cylinder of height 3. Distances inside are counted from
+  // the borders with other labels only: the middle band's stroke runs around its middle (0.5
+  // inside), the end bands' strokes near the cylinder's open ends (about 1 inside), each face at
+  // least half as far inside as the first.
+  const TriangleMesh cylinder = makeCylinder(1.0, 3.0, 48, 31);
+  std::vector<int> labels = threeBands(cylinder);
+  const std::vector<SegmentStroke> strokes = innermostStrokes(cylinder, labels, 5);
+  ASSERT_EQ(strokes.size(), 3u);
+  const std::vector<int> expectedLabels{ 0, 5, 9 };
+  for (std::size_t s = 0; s < strokes.size(); ++s)
+  {
+    EXPECT_EQ(strokes[s].label, expectedLabels[s]);
+    ASSERT_EQ(strokes[s].points.size(), 5u);
+    for (const Vector3& p : strokes[s].points)
+    {
+      if (s == 1)
+      {
+        EXPECT_LT(std::abs(p.z() - 1.5), 0.3);
+      }
+      else
+      {
+        EXPECT_GT(std::abs(p.z() - 1.5), 0.95); // 0.45 or more from the band's border
+        EXPECT_NEAR(std::hypot(p.x(), p.y()), 1.0, 0.01);
+      }
+    }
+  }
+  // A whole component (no border with another label) starts at its first face; unlabelled faces
+  // get no stroke.
+  auto centroid = [&cylinder](int f) {
+    const Triangle& t = cylinder.triangle(f);
+    return Vector3((cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])) / 3.0);
+  };
+  std::vector<int> whole(cylinder.faceCount(), 3);
+  const std::vector<SegmentStroke> single = innermostStrokes(cylinder, whole, 1);
+  ASSERT_EQ(single.size(), 1u);
+  EXPECT_EQ(single[0].label, 3);
+  ASSERT_EQ(single[0].points.size(), 1u);
+  EXPECT_EQ(single[0].points[0], centroid(0));
+  whole[0] = -1;
+  const std::vector<SegmentStroke> labelledOnly = innermostStrokes(cylinder, whole, 1);
+  ASSERT_EQ(labelledOnly.size(), 1u);
+  EXPECT_EQ(labelledOnly[0].label, 3);
+  EXPECT_THROW(innermostStrokes(cylinder, { 1, 2 }, 5), Error);
+  EXPECT_THROW(innermostStrokes(cylinder, labels, 0), Error);
 }

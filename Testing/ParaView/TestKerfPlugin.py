@@ -100,6 +100,35 @@ class KerfPluginTest(unittest.TestCase):
         boundary = servermanager.Fetch(roi, idx=1)
         self.assertEqual(boundary.GetNumberOfLines(), 1)
 
+    def test_easy_mesh_cut_cuts_off_a_hoof(self):
+        """A foreground stroke on the camel's front hoof and a background stroke on its top, as in
+        the image test: the leg below the crease is the foreground, the rest the background."""
+        from vtkmodules.vtkCommonCore import vtkIntArray, vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        points = vtk_to_numpy(servermanager.Fetch(camel).GetPoints().GetData())
+        stroke_points, lines, labels = vtkPoints(), vtkCellArray(), vtkIntArray()
+        labels.SetName("Label")
+        for point, label in ((points[points[:, 1].argmin()], 1), (points[points[:, 1].argmax()], 0)):
+            lines.InsertNextCell(1)
+            lines.InsertCellPoint(stroke_points.InsertNextPoint(*map(float, point)))
+            labels.InsertNextValue(label)
+        strokes = vtkPolyData()
+        strokes.SetPoints(stroke_points)
+        strokes.SetLines(lines)
+        strokes.GetCellData().AddArray(labels)
+        producer = simple.TrivialProducer()
+        producer.GetClientSideObject().SetOutput(strokes)
+        cut = simple.EasyMeshCut(Input=camel, Strokes=producer)
+        self.assertEqual(cut.StrokeLabels, "Label")
+        cut.UpdatePipeline()
+        segment = vtk_to_numpy(servermanager.Fetch(cut).GetCellData().GetArray("Segment"))
+        self.assertEqual(len(segment), 19536)
+        self.assertTrue(0 < segment.sum() < 0.1 * len(segment))
+        boundary = servermanager.Fetch(cut, idx=1)
+        self.assertEqual(boundary.GetNumberOfLines(), 1)
+
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}
         for name, definition in proxy_definitions("filters"):

@@ -10,6 +10,7 @@
 #include "Mesh/SurfaceConversion.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
+#include "Segmentation/EasyMeshCut.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
 #include "Segmentation/KMeansSegmentation.h"
 #include "Segmentation/SpectralSegmentation.h"
@@ -365,6 +366,71 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
   return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
+// Easy Mesh Cutting (Ji et al. 2006) with a simulated user: one stroke per segment of the input
+// human through its innermost faces, then `corrections` rounds in which a stroke is added inside
+// the wrongly labelled faces of each segment (through their innermost ones), as a user corrects
+// what the growing got wrong; the boundaries are refined as snakes at the end when asked.
+MethodOutput segmentWithRegionGrowing(
+  const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters, bool snakes)
+{
+  EasyMeshCutOptions options;
+  IsophoticMetricOptions& metric = options.growing.metric;
+  metric.normalWeight = parameters.positive("normal-weight", metric.normalWeight);
+  metric.curvatureWeight = parameters.positive("curvature-weight", metric.curvatureWeight);
+  metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
+  metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
+  const int faces = static_cast<int>(parameters.positive("faces", 5));
+  const std::string correctionText = parameters.text("corrections", "3");
+  const int corrections = correctionText.find_first_not_of("0123456789") == std::string::npos &&
+      !correctionText.empty() && correctionText.size() < 4
+    ? std::stoi(correctionText)
+    : throw Error("the method parameter 'corrections' must be a whole number below 1000, not '" + correctionText + "'");
+  const TriangleMesh& mesh = c.surface->mesh();
+  std::vector<LabelledStroke> strokes;
+  auto addStrokes = [&strokes](const std::vector<SegmentStroke>& simulated) {
+    for (const SegmentStroke& stroke : simulated)
+    {
+      strokes.push_back({ stroke.label, stroke.points });
+    }
+  };
+  addStrokes(innermostStrokes(mesh, *input, faces));
+  MethodOutput output;
+  if (strokes.size() < 2)
+  {
+    output.inputs = static_cast<int>(strokes.size());
+    output.labels = *input; // one segment: nothing to cut
+    return output;
+  }
+  options.refine = false;
+  output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
+  for (int round = 0; round < corrections; ++round)
+  {
+    std::vector<int> wrong(input->size(), -1);
+    bool anyWrong = false;
+    for (std::size_t f = 0; f < wrong.size(); ++f)
+    {
+      if ((*input)[f] >= 0 && output.labels[f] != (*input)[f])
+      {
+        wrong[f] = (*input)[f];
+        anyWrong = true;
+      }
+    }
+    if (!anyWrong)
+    {
+      break;
+    }
+    addStrokes(innermostStrokes(mesh, wrong, faces));
+    output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
+  }
+  if (snakes)
+  {
+    options.refine = true;
+    output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
+  }
+  output.inputs = static_cast<int>(strokes.size());
+  return output;
+}
+
 std::string quoted(const std::string& text)
 {
   std::string out = "\"";
@@ -435,6 +501,19 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       "cuts that many concavity-aware harmonic fields between feature points agree on, k - 1 of them",
       { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
+    { "region-growing",
+      "Easy Mesh Cutting's region growing from one simulated stroke per segment through its innermost faces, then strokes inside the wrongly labelled faces",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },
+      SegmentationMethod::Protocol::Interactive,
+      [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
+        return segmentWithRegionGrowing(c, input, parameters, false);
+      } },
+    { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },
+      SegmentationMethod::Protocol::Interactive,
+      [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
+        return segmentWithRegionGrowing(c, input, parameters, true);
+      } },
   };
   return methods;
 }

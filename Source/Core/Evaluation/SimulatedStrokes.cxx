@@ -1,11 +1,14 @@
-// Boundary chains between segments, walked and resampled into strokes.
+// Simulated strokes: boundary chains between segments walked and resampled, and strokes through each segment's innermost faces.
 #include "Evaluation/SimulatedStrokes.h"
 
 #include "Error.h"
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <limits>
 #include <map>
+#include <queue>
 
 namespace kerf
 {
@@ -165,6 +168,111 @@ std::vector<BoundaryStroke> boundaryStrokes(const TriangleMesh& mesh, const std:
         strokes.push_back({ entry.first.first, entry.first.second, resample(mesh, path, spacing) });
       }
     }
+  }
+  return strokes;
+}
+
+std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, int faces)
+{
+  if (static_cast<int>(labels.size()) != mesh.faceCount())
+  {
+    throw Error("the segmentation must have one label per face");
+  }
+  if (faces < 1)
+  {
+    throw Error("a stroke needs at least one face");
+  }
+  auto centroid = [&mesh](int f) {
+    const Triangle& t = mesh.triangle(f);
+    return Vector3((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0);
+  };
+  // Distance inside the segment from its border faces (Dijkstra over face neighbours).
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<double> inside(labels.size(), infinity);
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    for (int k = 0; k < 3 && labels[f] >= 0; ++k)
+    {
+      const int g = mesh.faceNeighbor(f, k);
+      if (g >= 0 && labels[g] != labels[f] && inside[f] != 0.0)
+      {
+        inside[f] = 0.0;
+        queue.emplace(0.0, f);
+      }
+    }
+  }
+  while (!queue.empty())
+  {
+    const auto [d, f] = queue.top();
+    queue.pop();
+    if (d > inside[f])
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = mesh.faceNeighbor(f, k);
+      if (g >= 0 && labels[g] == labels[f])
+      {
+        const double candidate = d + (centroid(g) - centroid(f)).norm();
+        if (candidate < inside[g])
+        {
+          inside[g] = candidate;
+          queue.emplace(candidate, g);
+        }
+      }
+    }
+  }
+  // The innermost face of each label (a borderless segment: its first face).
+  std::map<int, int> innermost;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    if (labels[f] < 0)
+    {
+      continue;
+    }
+    const auto found = innermost.find(labels[f]);
+    if (found == innermost.end())
+    {
+      innermost.emplace(labels[f], f);
+    }
+    else if (inside[f] != infinity && (inside[found->second] == infinity || inside[f] > inside[found->second]))
+    {
+      found->second = f;
+    }
+  }
+  std::vector<SegmentStroke> strokes;
+  for (const auto& [label, first] : innermost)
+  {
+    SegmentStroke stroke;
+    stroke.label = label;
+    std::vector<int> path{ first };
+    while (static_cast<int>(path.size()) < faces)
+    {
+      const int last = path.back();
+      int next = -1;
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = mesh.faceNeighbor(last, k);
+        if (g >= 0 && labels[g] == label && std::find(path.begin(), path.end(), g) == path.end() &&
+          (next < 0 || inside[g] > inside[next]))
+        {
+          next = g;
+        }
+      }
+      if (next < 0 || !(inside[next] >= 0.5 * inside[first]))
+      {
+        break;
+      }
+      path.push_back(next);
+    }
+    for (int f : path)
+    {
+      stroke.points.push_back(centroid(f));
+    }
+    strokes.push_back(std::move(stroke));
   }
   return strokes;
 }

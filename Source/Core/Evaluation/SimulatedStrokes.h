@@ -27,4 +27,20 @@ struct BoundaryStroke
 std::vector<BoundaryStroke> boundaryStrokes(
   const TriangleMesh& mesh, const std::vector<int>& labels, double spacing);
 
+/// A stroke drawn inside one segment.
+struct SegmentStroke
+{
+  int label = -1;
+  std::vector<Vector3> points;
+};
+
+/// One stroke per segment of a per-face segmentation, made of its innermost faces: the face
+/// farthest from the segment's boundary (distance along the segment's faces, centroid to
+/// centroid, from its faces that border another label), then up to `faces` - 1 more, each the
+/// not yet visited neighbour of the last that lies farthest inside, while it stays at least half
+/// as far inside as the first; the stroke's points are their centroids. A segment without a
+/// boundary (a whole component) starts at its lowest-numbered face. Strokes come in label order;
+/// unlabelled faces (-1) get none.
+std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, int faces);
+
 } // namespace kerf

@@ -209,4 +209,26 @@ TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRa
   return TriangleMesh(std::move(points), sphere.triangles());
 }
 
+TriangleMesh makeProtrusions(int count, double length, double width, int levels)
+{
+  if (count < 1 || !(length >= 0.0) || !(width > 0.0))
+  {
+    throw Error("protrusions need a count of at least 1, a non-negative length and a positive width");
+  }
+  const TriangleMesh sphere = makeIcosphere(1.0, levels);
+  std::vector<Vector3> points = sphere.points();
+  for (Vector3& p : points)
+  {
+    double alpha = Pi;
+    for (int i = 0; i < count; ++i)
+    {
+      const double angle = 2.0 * Pi * i / count;
+      const Vector3 axis(std::cos(angle), std::sin(angle), 0.0);
+      alpha = std::min(alpha, std::acos(std::clamp(p.dot(axis), -1.0, 1.0)));
+    }
+    p *= 1.0 + length * std::exp(-std::pow(alpha / width, 4.0));
+  }
+  return TriangleMesh(std::move(points), sphere.triangles());
+}
+
 } // namespace kerf

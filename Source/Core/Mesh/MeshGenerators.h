@@ -35,6 +35,12 @@ TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed);
 TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
   double neckHeight, double neckDepth, int levels);
 
+/// A sphere of radius 1 (an icosphere with `levels` subdivisions) with `count` fingers in the
+/// xy plane, evenly spaced around z from the +x axis: a point at angle alpha from the nearest
+/// finger's axis moves out to radius 1 + length * exp(-(alpha / width)^4), a flat-topped finger
+/// with a concave crease where it leaves the sphere. Closed and outward oriented.
+TriangleMesh makeProtrusions(int count, double length, double width, int levels);
+
 /// The radius of makeDumbbell's surface at height z (the profile it is built from).
 double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& lobeRadii,
   double neckHeight, double neckDepth);

@@ -91,7 +91,7 @@ def parse_models(text):
 
 def main(argv=None):
     import kerf
-    methods = "\n".join("  %-15s%s" % (name, kerf.vtkSegmentationBenchmark.GetMethodDescription(name))
+    methods = "\n".join("  %-23s%s" % (name, kerf.vtkSegmentationBenchmark.GetMethodDescription(name))
                         for name in kerf.vtkSegmentationBenchmark.GetMethodNames())
     parser = argparse.ArgumentParser(prog="python3 -m kerf.benchmark", description=__doc__.split("\n\n")[0],
                                      epilog="methods:\n" + methods,

@@ -1,0 +1,408 @@
+// Strokes snapped to vertices, multi-source growing under the isophotic metric, face labels and boundaries.
+#include "Segmentation/RegionGrowing.h"
+
+#include "Error.h"
+#include "Geometry/ClosestPoint.h"
+#include "Mesh/MeshValidation.h"
+#include "Session/Surface.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+#include <utility>
+
+namespace kerf
+{
+
+namespace
+{
+double meanEdgeLength(const TriangleMesh& mesh)
+{
+  double sum = 0.0;
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const auto [a, b] = mesh.edgeVertices(e);
+    sum += (mesh.point(a) - mesh.point(b)).norm();
+  }
+  return mesh.edgeCount() > 0 ? sum / mesh.edgeCount() : 0.0;
+}
+
+std::string numberText(double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
+} // namespace
+
+StrokeSeeds snapStrokes(const TriangleMesh& mesh, const ClosestPointLocator& locator,
+  const std::vector<LabelledStroke>& strokes, double maximumDistance)
+{
+  if (strokes.empty())
+  {
+    throw Error("there is no stroke; region growing needs strokes of at least two labels");
+  }
+  if (mesh.empty())
+  {
+    throw Error("the surface has no triangles");
+  }
+  const double spacing = 0.5 * meanEdgeLength(mesh);
+  // A segment longer than the surface is sampled no finer than this (a point far off the surface
+  // must not make millions of samples).
+  const double longest = 4.0 * mesh.boundingBoxDiagonal() + 2.0 * maximumDistance;
+  StrokeSeeds seeds;
+  std::unordered_map<int, int> seedLabel;
+  auto mark = [&](int vertex, int label) {
+    const auto [found, added] = seedLabel.emplace(vertex, label);
+    if (added)
+    {
+      seeds.vertices.push_back(vertex);
+      seeds.labels.push_back(label);
+    }
+    else if (found->second != label)
+    {
+      ++seeds.contested;
+    }
+  };
+  // Marks `vertex` after `previous` along a stroke; where they are not neighbours, first the
+  // common neighbour nearest to their midpoint, so that the marked vertices form a chain.
+  auto follow = [&](int previous, int vertex, int label) {
+    if (vertex == previous)
+    {
+      return;
+    }
+    const IndexRange around = mesh.vertexNeighbors(previous);
+    if (std::find(around.begin(), around.end(), vertex) == around.end())
+    {
+      const Vector3 middle = 0.5 * (mesh.point(previous) + mesh.point(vertex));
+      int bridge = -1;
+      for (int w : mesh.vertexNeighbors(vertex))
+      {
+        if (std::find(around.begin(), around.end(), w) != around.end() &&
+          (bridge < 0 || (mesh.point(w) - middle).squaredNorm() < (mesh.point(bridge) - middle).squaredNorm()))
+        {
+          bridge = w;
+        }
+      }
+      if (bridge >= 0)
+      {
+        mark(bridge, label);
+      }
+    }
+    mark(vertex, label);
+  };
+  auto snap = [&](const Vector3& point, std::size_t stroke, std::size_t index, bool sample) {
+    const ClosestPointLocator::Hit hit = locator.closest(point);
+    if (!sample && maximumDistance > 0.0 && hit.distance > maximumDistance)
+    {
+      throw Error("point " + std::to_string(index) + " of stroke " + std::to_string(stroke) + " is " +
+        numberText(hit.distance) + " away from the surface, farther than the allowed " + numberText(maximumDistance));
+    }
+    return snapToVertex(mesh, hit);
+  };
+  for (std::size_t s = 0; s < strokes.size(); ++s)
+  {
+    const LabelledStroke& stroke = strokes[s];
+    if (stroke.label < 0)
+    {
+      throw Error("stroke " + std::to_string(s) + " has the label " + std::to_string(stroke.label) +
+        "; labels must be non-negative (-1 marks vertices no stroke reaches)");
+    }
+    if (stroke.points.empty())
+    {
+      throw Error("stroke " + std::to_string(s) + " has no points");
+    }
+    for (std::size_t i = 0; i < stroke.points.size(); ++i)
+    {
+      if (!stroke.points[i].allFinite() || stroke.points[i].cwiseAbs().maxCoeff() > CoordinateLimit)
+      {
+        throw Error("point " + std::to_string(i) + " of stroke " + std::to_string(s) +
+          " has a NaN, infinite or huge coordinate (beyond 1e50)");
+      }
+    }
+    int previous = snap(stroke.points[0], s, 0, false);
+    mark(previous, stroke.label);
+    for (std::size_t i = 1; i < stroke.points.size(); ++i)
+    {
+      const Vector3& a = stroke.points[i - 1];
+      const Vector3& b = stroke.points[i];
+      const int end = snap(b, s, i, false);
+      const double length = std::min((b - a).norm(), longest);
+      const int samples = spacing > 0.0 ? static_cast<int>(std::ceil(length / spacing)) : 1;
+      for (int k = 1; k < samples; ++k)
+      {
+        const int vertex = snap(a + (b - a) * (static_cast<double>(k) / samples), s, i, true);
+        follow(previous, vertex, stroke.label);
+        previous = vertex;
+      }
+      follow(previous, end, stroke.label);
+      previous = end;
+    }
+  }
+  return seeds;
+}
+
+void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds,
+  std::vector<int>& labels, std::vector<double>& distances)
+{
+  if (static_cast<int>(edgeLengths.size()) != mesh.edgeCount())
+  {
+    throw Error("the edge lengths do not belong to this mesh");
+  }
+  const double infinity = std::numeric_limits<double>::infinity();
+  labels.assign(static_cast<std::size_t>(mesh.vertexCount()), -1);
+  distances.assign(static_cast<std::size_t>(mesh.vertexCount()), infinity);
+  using Entry = std::pair<double, int>;
+  std::vector<Entry> heapStorage;
+  heapStorage.reserve(static_cast<std::size_t>(mesh.vertexCount()));
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(std::greater<Entry>(), std::move(heapStorage));
+  for (std::size_t i = 0; i < seeds.vertices.size(); ++i)
+  {
+    const int v = seeds.vertices[i];
+    if (v < 0 || v >= mesh.vertexCount())
+    {
+      throw Error("seed vertex " + std::to_string(v) + " is not a vertex of the mesh");
+    }
+    if (distances[v] != 0.0)
+    {
+      distances[v] = 0.0;
+      labels[v] = seeds.labels[i];
+      queue.emplace(0.0, v);
+    }
+  }
+  while (!queue.empty())
+  {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > distances[v])
+    {
+      continue; // a stale entry: v was reached by a shorter path
+    }
+    const IndexRange neighbors = mesh.vertexNeighbors(v);
+    const IndexRange edges = mesh.vertexEdges(v);
+    for (std::size_t i = 0; i < neighbors.size(); ++i)
+    {
+      const int w = neighbors[i];
+      const double candidate = d + edgeLengths[static_cast<std::size_t>(edges[i])];
+      if (candidate < distances[w])
+      {
+        distances[w] = candidate;
+        labels[w] = labels[v];
+        queue.emplace(candidate, w);
+      }
+    }
+  }
+}
+
+std::vector<int> faceLabelsFromVertices(
+  const TriangleMesh& mesh, const std::vector<int>& vertexLabels, const std::vector<double>& distances)
+{
+  std::vector<int> faceLabels(static_cast<std::size_t>(mesh.faceCount()), -1);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    const int a = vertexLabels[t[0]], b = vertexLabels[t[1]], c = vertexLabels[t[2]];
+    int label = a;
+    if (b == c)
+    {
+      label = b;
+    }
+    else if (a != b && a != c)
+    {
+      // Three labels: the corner nearest to its stroke (the most certain) decides.
+      int best = 0;
+      for (int k = 1; k < 3; ++k)
+      {
+        const double dk = distances[t[k]], db = distances[t[best]];
+        if (dk < db || (dk == db && vertexLabels[t[k]] < vertexLabels[t[best]]))
+        {
+          best = k;
+        }
+      }
+      label = vertexLabels[t[best]];
+    }
+    faceLabels[static_cast<std::size_t>(f)] = label;
+  }
+  return faceLabels;
+}
+
+RegionGrowingResult growRegions(
+  const Surface& surface, const std::vector<LabelledStroke>& strokes, const RegionGrowingOptions& options)
+{
+  checkIsophoticMetricOptions(options.metric);
+  if (!(options.maximumDistance >= 0.0))
+  {
+    throw Error("the maximum distance of stroke points must be a non-negative number");
+  }
+  const TriangleMesh& mesh = surface.mesh();
+  RegionGrowingResult result;
+  result.seeds = snapStrokes(mesh, surface.locator(), strokes, options.maximumDistance);
+  std::set<int> labels(result.seeds.labels.begin(), result.seeds.labels.end());
+  result.labels.assign(labels.begin(), labels.end());
+  if (result.labels.size() < 2)
+  {
+    throw Error("every stroke has the label " + std::to_string(result.labels.front()) +
+      "; region growing needs strokes of at least two labels");
+  }
+  growFromSeeds(mesh, surfaceIsophoticEdgeLengths(surface, options.metric), result.seeds, result.vertexLabels,
+    result.distances);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (result.vertexLabels[v] < 0)
+    {
+      result.distances[v] = -1.0;
+      result.unreachableVertices += mesh.vertexComponent(v) >= 0 ? 1 : 0;
+    }
+  }
+  result.faceLabels = faceLabelsFromVertices(mesh, result.vertexLabels, result.distances);
+  return result;
+}
+
+std::vector<LabelBoundary> labelBoundaries(const TriangleMesh& mesh, const std::vector<int>& faceLabels)
+{
+  if (static_cast<int>(faceLabels.size()) != mesh.faceCount())
+  {
+    throw Error("the face labels do not belong to this mesh");
+  }
+  // Boundary edges: two faces with different labels.
+  std::vector<char> isBoundary(static_cast<std::size_t>(mesh.edgeCount()), 0);
+  std::vector<int> degree(static_cast<std::size_t>(mesh.vertexCount()), 0);
+  auto pairOf = [&](int e) {
+    const auto& faces = mesh.edgeFaces(e);
+    const int a = faceLabels[faces[0]], b = faceLabels[faces[1]];
+    return std::make_pair(std::min(a, b), std::max(a, b));
+  };
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const auto& faces = mesh.edgeFaces(e);
+    if (mesh.edgeFaceCount(e) == 2 && faceLabels[faces[0]] != faceLabels[faces[1]])
+    {
+      isBoundary[e] = 1;
+      for (int v : mesh.edgeVertices(e))
+      {
+        ++degree[v];
+      }
+    }
+  }
+  // Chain ends: vertices with other than two boundary edges, or two of different label pairs.
+  std::vector<char> isEnd(static_cast<std::size_t>(mesh.vertexCount()), 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (degree[v] == 0)
+    {
+      continue;
+    }
+    if (degree[v] != 2)
+    {
+      isEnd[v] = 1;
+      continue;
+    }
+    std::vector<std::pair<int, int>> pairs;
+    for (int e : mesh.vertexEdges(v))
+    {
+      if (isBoundary[e])
+      {
+        pairs.push_back(pairOf(e));
+      }
+    }
+    isEnd[v] = pairs[0] != pairs[1] ? 1 : 0;
+  }
+  std::vector<char> used(static_cast<std::size_t>(mesh.edgeCount()), 0);
+  std::vector<LabelBoundary> boundaries;
+  // Walks from vertex `start` along boundary edge `first` until an end (or back to the start).
+  auto walk = [&](int start, int first) {
+    LabelBoundary chain;
+    chain.vertices.push_back(start);
+    int v = start, e = first;
+    while (true)
+    {
+      used[e] = 1;
+      const auto& ev = mesh.edgeVertices(e);
+      const int w = ev[0] == v ? ev[1] : ev[0];
+      if (w == start)
+      {
+        chain.closed = true;
+        break;
+      }
+      chain.vertices.push_back(w);
+      if (isEnd[w])
+      {
+        break;
+      }
+      v = w;
+      e = -1;
+      for (int next : mesh.vertexEdges(v))
+      {
+        if (isBoundary[next] && !used[next])
+        {
+          e = next;
+          break;
+        }
+      }
+      if (e < 0)
+      {
+        break;
+      }
+    }
+    // Orientation: the face in which the first edge runs from vertices[0] to vertices[1] is on the left.
+    const int a = chain.vertices[0], b = chain.vertices[1];
+    const auto& faces = mesh.edgeFaces(first);
+    int leftFace = faces[0];
+    const Triangle& t = mesh.triangle(faces[0]);
+    bool forward = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      forward = forward || (t[k] == a && t[(k + 1) % 3] == b);
+    }
+    if (!forward)
+    {
+      leftFace = faces[1];
+    }
+    const int rightFace = leftFace == faces[0] ? faces[1] : faces[0];
+    chain.leftLabel = faceLabels[leftFace];
+    chain.rightLabel = faceLabels[rightFace];
+    if (chain.leftLabel > chain.rightLabel)
+    {
+      std::swap(chain.leftLabel, chain.rightLabel);
+      std::reverse(chain.vertices.begin(), chain.vertices.end());
+      if (chain.closed)
+      {
+        // Keep the smallest vertex first, as the walk started there.
+        std::rotate(chain.vertices.begin(), chain.vertices.end() - 1, chain.vertices.end());
+      }
+    }
+    boundaries.push_back(std::move(chain));
+  };
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (!isEnd[v])
+    {
+      continue;
+    }
+    for (int e : mesh.vertexEdges(v))
+    {
+      if (isBoundary[e] && !used[e])
+      {
+        walk(v, e);
+      }
+    }
+  }
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    for (int e : mesh.vertexEdges(v))
+    {
+      if (isBoundary[e] && !used[e])
+      {
+        walk(v, e);
+      }
+    }
+  }
+  return boundaries;
+}
+
+} // namespace kerf

@@ -1,0 +1,104 @@
+// Region growing from labelled strokes under the improved isophotic metric (Easy Mesh Cutting, section 4.2).
+#pragma once
+
+#include "Mesh/TriangleMesh.h"
+#include "Segmentation/IsophoticMetric.h"
+
+#include <vector>
+
+namespace kerf
+{
+
+class ClosestPointLocator;
+class Surface;
+
+/// A stroke the user drew on the surface, with the label of the part it marks. A single point is
+/// a stroke too.
+struct LabelledStroke
+{
+  int label = 0; ///< non-negative (-1 marks vertices no stroke reaches)
+  std::vector<Vector3> points;
+};
+
+/// The vertices strokes mark, with their labels.
+struct StrokeSeeds
+{
+  std::vector<int> vertices; ///< distinct, in the order the strokes reach them
+  std::vector<int> labels;   ///< the label of each seed vertex
+  /// Vertices reached by strokes of two different labels: they keep the label of the first
+  /// stroke (in input order) that reached them.
+  int contested = 0;
+};
+
+/// Snaps strokes to vertices: each stroke point to the vertex nearest to its closest surface point
+/// (kerf::snapToVertex), and each segment between consecutive points sampled every half mean
+/// edge length, each sample snapped the same way, so that the vertices the segment crosses are
+/// marked too (where two consecutive ones are not neighbours, also their common neighbour nearest
+/// to their midpoint, so that a stroke marks a chain of vertices wherever one exists). Throws kerf::Error for no stroke, a stroke without points, NaN coordinates, a
+/// negative label, or a point farther than `maximumDistance` (length units; 0: no limit) from
+/// the surface.
+StrokeSeeds snapStrokes(const TriangleMesh& mesh, const ClosestPointLocator& locator,
+  const std::vector<LabelledStroke>& strokes, double maximumDistance);
+
+/// Parameters of region growing.
+struct RegionGrowingOptions
+{
+  IsophoticMetricOptions metric;
+  /// Stroke points farther than this from the surface are refused (length units; 0: no limit).
+  double maximumDistance = 0.0;
+};
+
+/// A grown segmentation.
+struct RegionGrowingResult
+{
+  /// The label of the nearest stroke under the metric; -1 where no stroke reaches (a component
+  /// without strokes, or a point no triangle uses).
+  std::vector<int> vertexLabels;
+  /// The metric distance to the nearest stroke (input units); -1 where no stroke reaches.
+  std::vector<double> distances;
+  /// Per face, from its corners (faceLabelsFromVertices).
+  std::vector<int> faceLabels;
+  StrokeSeeds seeds;
+  /// Vertices used by triangles that no stroke reaches (labelled -1).
+  int unreachableVertices = 0;
+  /// The distinct labels of the strokes, ascending.
+  std::vector<int> labels;
+};
+
+/// Multi-source growing (Ji et al. 2006, section 4.2): the seeds start at distance 0, and the
+/// unlabelled vertex nearest to a labelled one is taken next (a priority queue ordered by
+/// distance, then vertex index), so every vertex reachable from a seed gets the label of its
+/// nearest seed along edges of the given lengths; a vertex at equal distance from two labels keeps
+/// the one that reached it first. `labels` and `distances` are resized to the vertex count.
+void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds,
+  std::vector<int>& labels, std::vector<double>& distances);
+
+/// Face labels from vertex labels: the label two or three corners share; a face whose three
+/// corners differ takes the label of the corner nearest to its stroke (smallest distance, then
+/// smallest label).
+std::vector<int> faceLabelsFromVertices(
+  const TriangleMesh& mesh, const std::vector<int>& vertexLabels, const std::vector<double>& distances);
+
+/// Region growing on a surface (its descriptors and metric lengths are cached there). Throws
+/// kerf::Error for the stroke problems of snapStrokes and for strokes of fewer than two labels.
+RegionGrowingResult growRegions(
+  const Surface& surface, const std::vector<LabelledStroke>& strokes, const RegionGrowingOptions& options);
+
+/// A boundary between two labels: a chain of mesh edges, each between a face of `leftLabel` and
+/// one of `rightLabel`, with leftLabel < rightLabel and the leftLabel face on the left of the
+/// chain's direction seen from outside (the side where the edge follows its face's orientation).
+struct LabelBoundary
+{
+  int leftLabel = -1;
+  int rightLabel = -1;
+  std::vector<int> vertices; ///< a closed chain does not repeat its first vertex
+  bool closed = false;
+};
+
+/// The boundaries of a per-face labelling: the edges between differently labelled faces, joined
+/// into chains that end where three or more labels meet, where the chain meets the mesh's border or
+/// itself (a vertex with more than two such edges) or where the label pair changes; the others are
+/// closed loops. Chains come in order of their first vertex, so the result is deterministic.
+std::vector<LabelBoundary> labelBoundaries(const TriangleMesh& mesh, const std::vector<int>& faceLabels);
+
+} // namespace kerf

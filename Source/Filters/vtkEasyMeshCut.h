@@ -1,0 +1,151 @@
+/**
+ * @class vtkEasyMeshCut
+ * @brief Easy Mesh Cut: a surface split into the parts that labelled strokes mark (Ji et al. 2006).
+ *
+ * Each stroke (a polyline of input 1) carries a label in the cell array named by
+ * StrokeLabelArrayName: foreground 1 and background 0 cut out one part; more labels cut out more
+ * parts. Every vertex takes the label of the stroke nearest to it under the improved isophotic
+ * metric (Ji et al. 2006, sections 3 and 4.2), a length that grows with the change of the normal and,
+ * strongly, with concave curvature, so parts meet along concave creases. With Refine, the
+ * boundaries are then moved as snakes to where they are short, smooth and curved (section 5.1).
+ *
+ * Output 0: the surface with the cell array SegmentArrayName (the label of each triangle, -1 where
+ * no stroke reaches: a component without strokes) and the point array "IsophoticDistance" (the
+ * metric distance to the nearest stroke, -1 where none reaches). Output 1: the boundaries between
+ * labels as polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller
+ * label on the left seen from outside).
+ *
+ * Errors (vtkErrorMacro, return 0): no strokes, no line in input 1, a missing or malformed label
+ * array, labels that are negative or not integers, strokes of a single label (no background or no
+ * foreground), stroke points farther from the surface than MaximumProjectionDistance, surfaces
+ * refused by validation (non-manifold, inconsistently oriented), NaN parameters.
+ */
+#ifndef vtkEasyMeshCut_h
+#define vtkEasyMeshCut_h
+
+#include "KerfFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory>
+
+class KERFFILTERS_EXPORT vtkEasyMeshCut : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkEasyMeshCut* New();
+  vtkTypeMacro(vtkEasyMeshCut, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// w, the metric's weight of the normal variation |n_p - n_q| (the mesh scaled into a unit
+  /// box). Default 5.
+  vtkSetClampMacro(NormalWeight, double, 0.0, 1e6);
+  vtkGetMacro(NormalWeight, double);
+  ///@}
+
+  ///@{
+  /// w*, the metric's weight of the curvature term f(k) per unit length. Default 5.
+  vtkSetClampMacro(CurvatureWeight, double, 0.0, 1e6);
+  vtkGetMacro(CurvatureWeight, double);
+  ///@}
+
+  ///@{
+  /// How concave curvature k < 0 is augmented: 0 exponential (e^|k| - 1, the paper's), 1 linear
+  /// (3 |k|), 2 square (k^2). Default 0.
+  vtkSetClampMacro(CurvatureAugmentation, int, 0, 2);
+  vtkGetMacro(CurvatureAugmentation, int);
+  ///@}
+
+  ///@{
+  /// The curvature term per edge, as printed in the paper's discrete formula, instead of per unit
+  /// length; parts leak into each other across oblique creases with it. Default off.
+  vtkSetMacro(CurvaturePerEdge, bool);
+  vtkGetMacro(CurvaturePerEdge, bool);
+  vtkBooleanMacro(CurvaturePerEdge, bool);
+  ///@}
+
+  ///@{
+  /// Stroke points farther from the surface than this fraction of the bounding-box diagonal are
+  /// refused; 0 means no limit. Default 0.05.
+  vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
+  vtkGetMacro(MaximumProjectionDistance, double);
+  ///@}
+
+  ///@{
+  /// Refine the grown boundaries as snakes (section 5.1). Default on.
+  vtkSetMacro(Refine, bool);
+  vtkGetMacro(Refine, bool);
+  vtkBooleanMacro(Refine, bool);
+  ///@}
+
+  ///@{
+  /// The most sweeps of the snake refinement. Default 100.
+  vtkSetClampMacro(SnakeIterations, int, 1, 100000);
+  vtkGetMacro(SnakeIterations, int);
+  ///@}
+
+  ///@{
+  /// The refinement ends after a sweep in which no snaxel moves farther than this fraction of the
+  /// mean edge length. Default 0.01.
+  vtkSetClampMacro(SnakeConvergence, double, 0.0, 1.0);
+  vtkGetMacro(SnakeConvergence, double);
+  ///@}
+
+  ///@{
+  /// Added to the snake's external energy |k_min| + |k_max| so that it straightens in flat
+  /// regions too. Default 1.
+  vtkSetClampMacro(SnakeCurvatureOffset, double, 0.0, 1e6);
+  vtkGetMacro(SnakeCurvatureOffset, double);
+  ///@}
+
+  ///@{
+  /// Positions a snaxel tries along its edge in a slide, both ends included. Default 8.
+  vtkSetClampMacro(SnakeSlideSamples, int, 2, 1000);
+  vtkGetMacro(SnakeSlideSamples, int);
+  ///@}
+
+  ///@{
+  /// The cell array of input 1 holding each stroke's label (named, not selected: see
+  /// vtkHarmonicField). Default "Label".
+  vtkSetStringMacro(StrokeLabelArrayName);
+  vtkGetStringMacro(StrokeLabelArrayName);
+  ///@}
+
+  ///@{
+  /// Name of the output cell array of labels. Default "Segment".
+  vtkSetStringMacro(SegmentArrayName);
+  vtkGetStringMacro(SegmentArrayName);
+  ///@}
+
+  /// The boundaries between labels (output 1).
+  vtkPolyData* GetBoundary();
+
+protected:
+  vtkEasyMeshCut();
+  ~vtkEasyMeshCut() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double NormalWeight = 5.0;
+  double CurvatureWeight = 5.0;
+  int CurvatureAugmentation = 0;
+  bool CurvaturePerEdge = false;
+  double MaximumProjectionDistance = 0.05;
+  bool Refine = true;
+  int SnakeIterations = 100;
+  double SnakeConvergence = 0.01;
+  double SnakeCurvatureOffset = 1.0;
+  int SnakeSlideSamples = 8;
+  char* StrokeLabelArrayName = nullptr;
+  char* SegmentArrayName = nullptr;
+
+private:
+  vtkEasyMeshCut(const vtkEasyMeshCut&) = delete;
+  void operator=(const vtkEasyMeshCut&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> State;
+};
+
+#endif
