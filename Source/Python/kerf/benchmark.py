@@ -91,8 +91,10 @@ def parse_models(text):
 
 def main(argv=None):
     import kerf
-    methods = "\n".join("  %-23s%s" % (name, kerf.vtkSegmentationBenchmark.GetMethodDescription(name))
-                        for name in kerf.vtkSegmentationBenchmark.GetMethodNames())
+    names = list(kerf.vtkSegmentationBenchmark.GetMethodNames())
+    width = max(len(name) for name in names) + 2
+    methods = "\n".join("  %-*s%s" % (width, name, kerf.vtkSegmentationBenchmark.GetMethodDescription(name))
+                        for name in names)
     parser = argparse.ArgumentParser(prog="python3 -m kerf.benchmark", description=__doc__.split("\n\n")[0],
                                      epilog="methods:\n" + methods,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
