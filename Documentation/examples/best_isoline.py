@@ -3,21 +3,17 @@
 # The field comes from the stroke around the neck; Isoline Cut in Best score mode samples 50
 # values and keeps the isoline whose score (shortness and concavity) is best.
 import os
+import sys
 
-from paraview import servermanager, simple
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from paraview import simple
 
-DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from cut_from_stroke import neck_stroke  # noqa: E402
 
 
 def best_isoline():
     """Returns the chosen iso-value, its score, its length, its pieces and the candidates' count."""
-    camel = simple.OpenDataFile(os.path.join(DATA, "camel.off"))
-    # The stroke's points, as a user would place them in the panel (P on the surface).
-    stroke = servermanager.Fetch(
-        simple.LegacyVTKReader(FileNames=[os.path.join(DATA, "camel-neck-stroke.vtk")]))
-    points = vtk_to_numpy(stroke.GetPoints().GetData()).ravel().tolist()
-    field = simple.CutFromStroke(Input=camel, StrokePoints=points)
+    field = neck_stroke()
     field.UpdatePipeline()
     isoline = simple.IsolineCut(Input=field, Mode=1, NumberOfCandidates=50)
     isoline.UpdatePipeline()

@@ -10,14 +10,19 @@ from vtkmodules.util.numpy_support import vtk_to_numpy
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
 
 
-def cut_from_stroke(picture=None):
-    """Returns the number of faces of each segment, the cut's length and the solver's work."""
+def neck_stroke():
+    """The camel and Cut From Stroke with the neck stroke's points, as a user would place them in
+    the panel (P on the surface)."""
     camel = simple.OpenDataFile(os.path.join(DATA, "camel.off"))
-    # The stroke's points, as a user would place them in the panel (P on the surface).
     stroke = servermanager.Fetch(
         simple.LegacyVTKReader(FileNames=[os.path.join(DATA, "camel-neck-stroke.vtk")]))
     points = vtk_to_numpy(stroke.GetPoints().GetData()).ravel().tolist()
-    cut = simple.CutFromStroke(Input=camel, StrokePoints=points)
+    return simple.CutFromStroke(Input=camel, StrokePoints=points)
+
+
+def cut_from_stroke(picture=None):
+    """Returns the number of faces of each segment, the cut's length and the solver's work."""
+    cut = neck_stroke()
     cut.UpdatePipeline()
     surface = servermanager.Fetch(cut)
     segments = vtk_to_numpy(surface.GetCellData().GetArray("Segment"))
