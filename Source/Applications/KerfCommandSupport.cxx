@@ -1,6 +1,7 @@
 // What the kerf program's commands share: running algorithms, mesh files, pictures.
 #include "KerfCommands.h"
 
+#include "KerfDisplay.h"
 #include "KerfErrorCollector.h"
 #include "vtkMeshFileReader.h"
 #include "vtkMeshFileWriter.h"
@@ -12,8 +13,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
-
-#include <dlfcn.h>
 
 #include <cstdlib>
 
@@ -110,33 +109,10 @@ SceneOptions ParseSceneOptions(const Arguments& args)
 
 void RequireDisplay()
 {
-  // ParaView's VTK renders through X11 only and aborts the process when it cannot open the
-  // display: ask Xlib first (loaded at run time, so the program does not link it).
-  const char* display = std::getenv("DISPLAY");
-  bool reachable = false;
-  if (display && *display)
+  std::string error;
+  if (!ProcessDisplay(error))
   {
-    if (void* xlib = dlopen("libX11.so.6", RTLD_LAZY | RTLD_LOCAL))
-    {
-      using Open = void* (*)(const char*);
-      using Close = int (*)(void*);
-      auto open = reinterpret_cast<Open>(dlsym(xlib, "XOpenDisplay"));
-      auto close = reinterpret_cast<Close>(dlsym(xlib, "XCloseDisplay"));
-      if (open && close)
-      {
-        if (void* connection = open(display))
-        {
-          reachable = true;
-          close(connection);
-        }
-      }
-      dlclose(xlib);
-    }
-  }
-  if (!reachable)
-  {
-    throw CommandError{ std::string("rendering needs an X display, and ") +
-      (display && *display ? "DISPLAY=" + std::string(display) + " cannot be opened" : "DISPLAY is not set") +
+    throw CommandError{ "rendering needs an X display, and " + error +
       ": on a headless machine run the command under xvfb-run -a" };
   }
 }

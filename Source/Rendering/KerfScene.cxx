@@ -1,6 +1,8 @@
 // Scene building for the command-line program and the image tests.
 #include "KerfScene.h"
 
+#include "KerfDisplay.h"
+
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -379,6 +381,11 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
 vtkSmartPointer<vtkRenderWindow> makeWindow(const SceneOptions& options)
 {
   auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  std::string noDisplay; // without one, VTK reports it when the window is first rendered
+  if (void* display = ProcessDisplay(noDisplay))
+  {
+    window->SetDisplayId(display);
+  }
   window->SetOffScreenRendering(options.offscreen ? 1 : 0);
   window->SetSize(options.width, options.height);
   window->SetMultiSamples(0);
