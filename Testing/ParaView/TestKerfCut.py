@@ -213,6 +213,11 @@ class KerfCutTest(unittest.TestCase):
         self.assertTrue(math.isfinite(length))
         self.assertGreater(length, 0.0)
         self.assertAlmostEqual(curve.GetCellData().GetArray("IsoValue").GetValue(0), 0.0)
+        # The Iso Value slider spans the field's range, and creating the filter left it at 0.
+        field = servermanager.Fetch(self.pipeline.field).GetPointData().GetArray("HarmonicField")
+        domain = self.pipeline.cut.GetProperty("IsoValue").FindDomain("vtkSMArrayRangeDomain")
+        self.assertEqual((domain.GetMinimum(0), domain.GetMaximum(0)), field.GetRange())
+        self.assertEqual(self.pipeline.cut.IsoValue, 0.0)
         # The candidate table is for the best-score mode only.
         self.assertEqual(servermanager.Fetch(self.pipeline.cut, idx=2).GetNumberOfRows(), 0)
 
