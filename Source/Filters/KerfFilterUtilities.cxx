@@ -14,6 +14,8 @@
 #include <vtkFieldData.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
@@ -166,8 +168,8 @@ double RelativeDistance(double fraction, double diagonal, const char* parameter)
   return fraction > 0.0 ? fraction * diagonal : 0.0;
 }
 
-std::vector<double> ReadInputArray(
-  vtkAlgorithm* algorithm, int index, vtkDataArray* array, vtkIdType expected, const std::string& owner)
+std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
+  vtkIdType expected, const std::string& owner)
 {
   vtkInformation* selection = algorithm->GetInputArrayInformation(index);
   const char* requested = selection && selection->Has(vtkDataObject::FIELD_NAME())
@@ -178,11 +180,23 @@ std::vector<double> ReadInputArray(
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   const char* kind = association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cell" : "point";
   const std::string where = " (input array " + std::to_string(index) + ")";
+  vtkDataArray* array = nullptr;
+  const int port = selection && selection->Has(vtkAlgorithm::INPUT_PORT()) ? selection->Get(vtkAlgorithm::INPUT_PORT()) : 0;
+  const int connection =
+    selection && selection->Has(vtkAlgorithm::INPUT_CONNECTION()) ? selection->Get(vtkAlgorithm::INPUT_CONNECTION()) : 0;
+  if (auto* data = vtkDataSet::SafeDownCast(algorithm->GetInputDataObject(port, connection)))
+  {
+    vtkDataSetAttributes* attributes = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
+      ? static_cast<vtkDataSetAttributes*>(data->GetCellData())
+      : static_cast<vtkDataSetAttributes*>(data->GetPointData());
+    // No name selected: the active scalars, as VTK's own filters do.
+    array = requested && *requested ? attributes->GetArray(requested) : attributes->GetScalars();
+  }
   if (!array)
   {
     if (!requested || !*requested)
     {
-      throw Error("no array is selected for " + owner + where);
+      throw Error("no array is selected for " + owner + " and it has no active " + kind + " scalars" + where);
     }
     throw Error(owner + " has no one-component " + kind + " array named '" + requested + "'" + where);
   }

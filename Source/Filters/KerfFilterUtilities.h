@@ -55,13 +55,13 @@ double StrokeIsoValue(double value);
 /// limit). Throws for NaN.
 double RelativeDistance(double fraction, double diagonal, const char* parameter);
 
-/// The one-component values of `array`, the algorithm's input array `index` (what
-/// GetInputArrayToProcess(index, ...) returned), one per point or cell of its data object: throws
-/// kerf::Error naming the array, its owner ("the surface", "the constraint points") and the input
-/// array index for a missing array, another number of components or another number of values
-/// than `expected`.
-std::vector<double> ReadInputArray(
-  vtkAlgorithm* algorithm, int index, vtkDataArray* array, vtkIdType expected, const std::string& owner);
+/// The one-component values of the algorithm's input array `index` (as selected with
+/// SetInputArrayToProcess), one per point or cell of its data object. With no array name selected,
+/// the active scalars of that association are read. Throws kerf::Error naming the array, its owner
+/// ("the surface", "the constraint points") and the input array index for a missing array, another
+/// number of components or another number of values than `expected`.
+std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
+  vtkIdType expected, const std::string& owner);
 
 /// The one-component point array `name` of a point set, one value per point; throws kerf::Error
 /// naming it and its owner when it is missing or has another shape. (Arrays of a filter's first

@@ -82,7 +82,7 @@ int vtkHarmonicField::RequestData(
     if (this->UseHardValues)
     {
       const std::vector<double> values =
-        kerf::ReadInputArray(this, 0, this->GetInputArrayToProcess(0, inputVector), input->GetNumberOfPoints(), "the surface");
+        kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
       std::vector<int> vertices(values.size());
       for (std::size_t i = 0; i < values.size(); ++i)
       {

@@ -115,7 +115,7 @@ int vtkIsolineScoring::RequestData(
       options.stroke = kerf::ReadPoints(stroke);
     }
     const std::vector<double> field =
-      kerf::ReadInputArray(this, 0, this->GetInputArrayToProcess(0, inputVector), input->GetNumberOfPoints(), "the surface");
+      kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
     const kerf::CutResult cut = session.chooseCut(field, options);
     this->UpdateProgress(0.8);
 

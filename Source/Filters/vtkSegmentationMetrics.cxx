@@ -32,11 +32,11 @@ struct vtkSegmentationMetrics::Internals
 namespace
 {
 // Per-triangle labels from the input array `index` (a per-cell array of labels).
-std::vector<int> triangleLabels(vtkAlgorithm* algorithm, int index, vtkDataArray* array,
+std::vector<int> triangleLabels(vtkAlgorithm* algorithm, int index,
   const kerf::SurfaceInput& surface, vtkIdType cells, const char* role)
 {
   const std::vector<double> perCell =
-    kerf::ReadInputArray(algorithm, index, array, cells, std::string("the ") + role + " segmentation");
+    kerf::ReadInputArray(algorithm, index, cells, std::string("the ") + role + " segmentation");
   std::vector<int> labels(perCell.size());
   for (std::size_t c = 0; c < perCell.size(); ++c)
   {
@@ -133,9 +133,9 @@ int vtkSegmentationMetrics::RequestData(
     kerf::SurfaceInput& surface = this->State->surface;
     kerf::LoadSurface(surface, mesh, requirements);
     const std::vector<int> evaluated =
-      triangleLabels(this, 0, this->GetInputArrayToProcess(0, inputVector), surface, mesh->GetNumberOfCells(), "evaluated");
+      triangleLabels(this, 0, surface, mesh->GetNumberOfCells(), "evaluated");
     const std::vector<int> referenceLabels =
-      triangleLabels(this, 1, this->GetInputArrayToProcess(1, inputVector), surface, mesh->GetNumberOfCells(), "reference");
+      triangleLabels(this, 1, surface, mesh->GetNumberOfCells(), "reference");
     this->UpdateProgress(0.3);
 
     const kerf::SegmentationEvaluator evaluator(surface.Mesh());

@@ -181,6 +181,24 @@ int TestHarmonicCut(int, char*[])
   }
   ok &= KERF_CHECK(labels.size() == 2);
 
+  // With no array name selected, the field is the active point scalars: the same field under
+  // another name, made active, gives the same best isoline.
+  vtkNew<vtkPolyData> renamed;
+  renamed->ShallowCopy(neckField->GetOutput());
+  vtkNew<vtkDoubleArray> activeField;
+  activeField->DeepCopy(renamed->GetPointData()->GetArray("HarmonicField"));
+  activeField->SetName("Potential");
+  renamed->GetPointData()->RemoveArray("HarmonicField");
+  renamed->GetPointData()->SetScalars(activeField);
+  vtkNew<vtkIsolineScoring> unnamed;
+  unnamed->SetInputData(renamed);
+  unnamed->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "");
+  unnamed->SetModeToBestScore();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(unnamed).empty());
+  ok &= KERF_CHECK(unnamed->GetOutput()->GetCellData()->GetArray("IsoValue")->GetComponent(0, 0) == bestValue);
+  renamed->GetPointData()->SetActiveScalars(nullptr);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(unnamed).find("no active point scalars") != std::string::npos);
+
   // Errors.
   vtkNew<vtkIsolineScoring> noStroke;
   noStroke->SetInputConnection(field->GetOutputPort());

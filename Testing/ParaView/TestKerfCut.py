@@ -221,6 +221,24 @@ class KerfCutTest(unittest.TestCase):
         # The candidate table is for the best-score mode only.
         self.assertEqual(servermanager.Fetch(self.pipeline.cut, idx=2).GetNumberOfRows(), 0)
 
+    def test_cut_created_before_its_input_ran(self):
+        # A script builds the whole pipeline before anything runs: the field selection keeps
+        # HarmonicField instead of whatever an empty array list would give.
+        constraints = simple.StrokeConstraints(Input=self.pipeline.camel)
+        constraints.SetPropertyWithName("StrokePoints", stroke_points())
+        field = simple.HarmonicField(Input=self.pipeline.camel, Constraints=constraints)
+        cut = simple.IsolineCut(Input=field)
+        try:
+            self.assertEqual(list(cut.Field), ["POINTS", "HarmonicField"])
+            cut.UpdatePipeline()
+            self.assert_no_errors()
+            _, points = self.fetch_cut(cut)
+            _, expected = self.fetch_cut(self.pipeline.cut)
+            numpy.testing.assert_allclose(points, expected, rtol=0.0, atol=1e-12)
+        finally:
+            for proxy in (cut, field, constraints):
+                simple.Delete(proxy)
+
     def test_stroke_constraints_as_the_stroke(self):
         self.assert_no_errors()
         cut = simple.IsolineCut(Input=self.pipeline.field, Stroke=self.pipeline.constraints)
