@@ -221,6 +221,13 @@ class KerfCutTest(unittest.TestCase):
         # The candidate table is for the best-score mode only.
         self.assertEqual(servermanager.Fetch(self.pipeline.cut, idx=2).GetNumberOfRows(), 0)
 
+    def assert_same_cut_as_the_pipeline(self, cut):
+        cut.UpdatePipeline()
+        self.assert_no_errors()
+        _, points = self.fetch_cut(cut)
+        _, expected = self.fetch_cut(self.pipeline.cut)
+        numpy.testing.assert_allclose(points, expected, rtol=0.0, atol=1e-12)
+
     def test_cut_created_before_its_input_ran(self):
         # A script builds the whole pipeline before anything runs: the field selection keeps
         # HarmonicField instead of whatever an empty array list would give.
@@ -230,11 +237,7 @@ class KerfCutTest(unittest.TestCase):
         cut = simple.IsolineCut(Input=field)
         try:
             self.assertEqual(list(cut.Field), ["POINTS", "HarmonicField"])
-            cut.UpdatePipeline()
-            self.assert_no_errors()
-            _, points = self.fetch_cut(cut)
-            _, expected = self.fetch_cut(self.pipeline.cut)
-            numpy.testing.assert_allclose(points, expected, rtol=0.0, atol=1e-12)
+            self.assert_same_cut_as_the_pipeline(cut)
         finally:
             for proxy in (cut, field, constraints):
                 simple.Delete(proxy)
@@ -245,11 +248,7 @@ class KerfCutTest(unittest.TestCase):
         try:
             cut.Mode = "Near stroke"
             self.pipeline.watch.add("second cut", cut)
-            cut.UpdatePipeline()
-            self.assert_no_errors()
-            _, points = self.fetch_cut(cut)
-            _, expected = self.fetch_cut(self.pipeline.cut)
-            numpy.testing.assert_allclose(points, expected, rtol=0.0, atol=1e-12)
+            self.assert_same_cut_as_the_pipeline(cut)
         finally:
             simple.Delete(cut)
 
