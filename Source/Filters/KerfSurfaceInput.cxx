@@ -315,7 +315,7 @@ bool SurfaceInput::Load(vtkPolyData* input, const MeshRequirements& requirements
     error = "out of memory while converting the input surface";
     return false;
   }
-  const std::string problems = describeProblems(this->Current->report, requirements);
+  const std::string problems = describeProblems(this->Current->report, requirements, &this->Current->source);
   if (!problems.empty())
   {
     error = "the input surface is not accepted: " + problems + ".";

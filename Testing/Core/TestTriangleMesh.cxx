@@ -311,3 +311,39 @@ TEST(PointWelding, IdenticalCoordinatesShareTheFirstIndex)
     ASSERT_EQ(rep[v + torus.vertexCount()], v);
   }
 }
+
+TEST(TriangleMesh, ProblemsNameTheirFirstPlaces)
+{
+  // Three triangles on edge 0-1, a zero-area triangle, a duplicate (which makes edge 8-9 non-manifold).
+  const TriangleMesh fan({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 2, 0, 0 },
+                           { 3, 0, 0 }, { 5, 5, 0 }, { 6, 5, 0 }, { 5, 6, 0 }, { 6, 6, 0 } },
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 }, { 1, 5, 6 }, { 7, 8, 9 }, { 8, 10, 9 }, { 9, 10, 8 } });
+  const MeshReport report = inspectMesh(fan);
+  EXPECT_EQ(report.nonManifoldEdgeIds, (std::vector<std::array<int, 2>>{ { 0, 1 }, { 8, 9 } }));
+  EXPECT_EQ(report.zeroAreaFaceIds, std::vector<int>{ 3 });
+  EXPECT_EQ(report.duplicateFaceIds, std::vector<int>{ 6 });
+  MeshRequirements strict;
+  strict.allowZeroAreaFaces = false;
+  const std::string named = describeProblems(report, strict);
+  EXPECT_NE(named.find("2 edges are non-manifold (shared by three or more triangles: points 0-1, 8-9)"), std::string::npos)
+    << named;
+  EXPECT_NE(named.find("1 triangle has zero area (collinear or coincident corners: triangles 3)"), std::string::npos)
+    << named;
+  const std::vector<long long> cells = { 10, 11, 12, 13, 14, 15, 16 };
+  EXPECT_NE(describeProblems(report, strict, &cells).find("same three points: cells 16"), std::string::npos);
+
+  // More defects than examples: the first five, then an ellipsis.
+  std::vector<Vector3> points;
+  std::vector<Triangle> triangles;
+  for (int i = 0; i < 8; ++i)
+  {
+    points.push_back({ 3.0 * i, 0, 0 });
+    points.push_back({ 3.0 * i + 1, 0, 0 });
+    points.push_back({ 3.0 * i + 2, 0, 0 });
+    triangles.push_back({ 3 * i, 3 * i + 1, 3 * i + 2 });
+  }
+  const std::string many = describeProblems(inspectMesh(TriangleMesh(points, triangles)), strict);
+  EXPECT_NE(many.find("8 triangles have zero area (collinear or coincident corners: triangles 0, 1, 2, 3, 4, ...)"),
+    std::string::npos)
+    << many;
+}

@@ -81,7 +81,8 @@ bool traverses(const Triangle& t, int a, int b)
   return false;
 }
 
-void add(std::ostringstream& out, int count, const char* singular, const char* plural, const char* why)
+void add(std::ostringstream& out, int count, const char* singular, const char* plural, const char* why,
+  const std::string& where = std::string())
 {
   if (count <= 0)
   {
@@ -92,10 +93,52 @@ void add(std::ostringstream& out, int count, const char* singular, const char* p
     out << "; ";
   }
   out << count << ' ' << (count == 1 ? singular : plural);
-  if (why[0] != '\0')
+  if (why[0] != '\0' || !where.empty())
   {
-    out << " (" << why << ')';
+    out << " (" << why << (why[0] != '\0' && !where.empty() ? ": " : "") << where << ')';
   }
+}
+
+template <typename T>
+void note(std::vector<T>& examples, const T& value)
+{
+  if (examples.size() < MeshReport::ExampleLimit)
+  {
+    examples.push_back(value);
+  }
+}
+
+// "points 3, 9" or "cells 7, 12, ..." (the ellipsis when there are more than the examples).
+std::string places(const char* what, const std::vector<int>& ids, int count, const std::vector<long long>* names = nullptr)
+{
+  if (ids.empty())
+  {
+    return std::string();
+  }
+  std::ostringstream out;
+  out << what << ' ';
+  for (std::size_t i = 0; i < ids.size(); ++i)
+  {
+    out << (i ? ", " : "") << (names ? (*names)[static_cast<std::size_t>(ids[i])] : ids[i]);
+  }
+  out << (count > static_cast<int>(ids.size()) ? ", ..." : "");
+  return out.str();
+}
+
+std::string edgePlaces(const std::vector<std::array<int, 2>>& edges, int count)
+{
+  if (edges.empty())
+  {
+    return std::string();
+  }
+  std::ostringstream out;
+  out << "points ";
+  for (std::size_t i = 0; i < edges.size(); ++i)
+  {
+    out << (i ? ", " : "") << edges[i][0] << '-' << edges[i][1];
+  }
+  out << (count > static_cast<int>(edges.size()) ? ", ..." : "");
+  return out.str();
 }
 } // namespace
 
@@ -106,10 +149,19 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
   report.faces = mesh.faceCount();
   report.edges = mesh.edgeCount();
 
-  for (const Vector3& p : mesh.points())
+  for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    report.nonFinitePoints += p.allFinite() ? 0 : 1;
-    report.hugePoints += p.allFinite() && p.cwiseAbs().maxCoeff() > CoordinateLimit ? 1 : 0;
+    const Vector3& p = mesh.point(v);
+    if (!p.allFinite())
+    {
+      ++report.nonFinitePoints;
+      note(report.nonFinitePointIds, v);
+    }
+    else if (p.cwiseAbs().maxCoeff() > CoordinateLimit)
+    {
+      ++report.hugePoints;
+      note(report.hugePointIds, v);
+    }
   }
   if (report.nonFinitePoints == 0 && report.hugePoints == 0)
   {
@@ -122,6 +174,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
     if (repeatsVertex(t))
     {
       ++report.repeatedVertexFaces;
+      note(report.repeatedVertexFaceIds, f);
       continue;
     }
     const Vector3 a = mesh.point(t[1]) - mesh.point(t[0]);
@@ -131,6 +184,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
     if (isZeroArea(a.cross(b).norm(), longest))
     {
       ++report.zeroAreaFaces;
+      note(report.zeroAreaFaceIds, f);
     }
     // A duplicate shares all corners, so it is among the triangles around corner 0.
     const Triangle key = sortedCorners(t);
@@ -143,6 +197,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
       if (sortedCorners(mesh.triangle(g)) == key)
       {
         ++report.duplicateFaces;
+        note(report.duplicateFaceIds, f);
         break;
       }
     }
@@ -158,6 +213,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
     else if (count > 2)
     {
       ++report.nonManifoldEdges;
+      note(report.nonManifoldEdgeIds, mesh.edgeVertices(e));
     }
     else
     {
@@ -170,6 +226,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
       if (traverses(mesh.triangle(ef[0]), ev[0], ev[1]) == traverses(mesh.triangle(ef[1]), ev[0], ev[1]))
       {
         ++report.inconsistentEdges;
+        note(report.inconsistentEdgeIds, ev);
       }
     }
   }
@@ -187,6 +244,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
     if (fanCount(mesh, v, parent) > 1)
     {
       ++report.nonManifoldVertices;
+      note(report.nonManifoldVertexIds, v);
     }
   }
 
@@ -222,17 +280,19 @@ std::string MeshReport::summary() const
   return out.str();
 }
 
-std::string describeProblems(const MeshReport& report, const MeshRequirements& requirements)
+std::string describeProblems(
+  const MeshReport& report, const MeshRequirements& requirements, const std::vector<long long>* faceCells)
 {
+  const char* faces = faceCells ? "cells" : "triangles";
   std::ostringstream out;
   if (report.faces == 0)
   {
     return "the mesh has no triangles";
   }
   add(out, report.nonFinitePoints, "point has NaN or infinite coordinates",
-    "points have NaN or infinite coordinates", "");
+    "points have NaN or infinite coordinates", "", places("points", report.nonFinitePointIds, report.nonFinitePoints));
   add(out, report.hugePoints, "point has a coordinate beyond +-1e50",
-    "points have coordinates beyond +-1e50", "rescale the mesh");
+    "points have coordinates beyond +-1e50", "rescale the mesh", places("points", report.hugePointIds, report.hugePoints));
   if (report.nonFinitePoints == 0 && report.hugePoints == 0 && report.diagonal < 1.0 / CoordinateLimit)
   {
     if (out.tellp() > 0)
@@ -243,28 +303,30 @@ std::string describeProblems(const MeshReport& report, const MeshRequirements& r
         << " is below 1e-50 (rescale the mesh)";
   }
   add(out, report.repeatedVertexFaces, "triangle uses the same point twice",
-    "triangles use the same point twice", "topologically degenerate");
+    "triangles use the same point twice", "topologically degenerate",
+    places(faces, report.repeatedVertexFaceIds, report.repeatedVertexFaces, faceCells));
   if (!requirements.allowZeroAreaFaces)
   {
     add(out, report.zeroAreaFaces, "triangle has zero area", "triangles have zero area",
-      "collinear or coincident corners");
+      "collinear or coincident corners", places(faces, report.zeroAreaFaceIds, report.zeroAreaFaces, faceCells));
   }
   if (!requirements.allowDuplicateFaces)
   {
     add(out, report.duplicateFaces, "triangle duplicates another", "triangles duplicate others",
-      "same three points");
+      "same three points", places(faces, report.duplicateFaceIds, report.duplicateFaces, faceCells));
   }
   if (requirements.manifold)
   {
     add(out, report.nonManifoldEdges, "edge is non-manifold", "edges are non-manifold",
-      "shared by three or more triangles");
+      "shared by three or more triangles", edgePlaces(report.nonManifoldEdgeIds, report.nonManifoldEdges));
     add(out, report.nonManifoldVertices, "vertex is non-manifold", "vertices are non-manifold",
-      "its triangles form several fans");
+      "its triangles form several fans", places("points", report.nonManifoldVertexIds, report.nonManifoldVertices));
   }
   if (requirements.consistentOrientation)
   {
     add(out, report.inconsistentEdges, "edge joins inconsistently oriented triangles",
-      "edges join inconsistently oriented triangles", "flipped normals");
+      "edges join inconsistently oriented triangles", "flipped normals",
+      edgePlaces(report.inconsistentEdgeIds, report.inconsistentEdges));
   }
   if (!requirements.allowBoundary && report.boundaryEdges > 0)
   {

@@ -3,7 +3,9 @@
 
 #include "Mesh/TriangleMesh.h"
 
+#include <array>
 #include <string>
+#include <vector>
 
 namespace kerf
 {
@@ -29,6 +31,13 @@ struct MeshReport
   int components = 0;
   int eulerCharacteristic = 0;   ///< V - E + F over referenced vertices
 
+  /// The first few (up to ExampleLimit) of each defect, named in messages so a user can select
+  /// them: point ids, triangle ids, and edges as their two point ids.
+  std::vector<int> nonFinitePointIds, hugePointIds, nonManifoldVertexIds;
+  std::vector<int> repeatedVertexFaceIds, zeroAreaFaceIds, duplicateFaceIds;
+  std::vector<std::array<int, 2>> nonManifoldEdgeIds, inconsistentEdgeIds;
+  static constexpr std::size_t ExampleLimit = 5;
+
   /// One line listing the size and every non-zero count.
   std::string summary() const;
 };
@@ -49,8 +58,11 @@ struct MeshRequirements
 };
 
 /// An empty string when the report meets the requirements, otherwise a sentence naming every
-/// problem, for example "the mesh has 3 non-manifold edges (shared by three or more triangles)".
-std::string describeProblems(const MeshReport& report, const MeshRequirements& requirements);
+/// problem and its first few places, for example "3 edges are non-manifold (shared by three or
+/// more triangles: points 4-9, 9-12, 30-31)". Triangles are named by `faceCells[f]` ("cells 7,
+/// 12") when given (the cell each triangle came from), else by their index ("triangles 7, 12").
+std::string describeProblems(
+  const MeshReport& report, const MeshRequirements& requirements, const std::vector<long long>* faceCells = nullptr);
 
 /// Coordinates are refused beyond +-CoordinateLimit, and meshes whose bounding-box diagonal is
 /// below 1 / CoordinateLimit: squared lengths, areas and their products stay far from overflow
