@@ -77,6 +77,25 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(result.returncode, 1)
         self.assertIn("--weighting must be", result.stderr)
 
+    def test_cut_ending_on_a_hole_has_no_sliver_segment(self):
+        # The camel with the triangles round neck vertex 8101 removed: the concavity-aware cut runs
+        # through the hole, and a triangle it crosses there, with its uncrossed edge on the hole,
+        # touches neither side. It joins a side instead of being a one-triangle third segment.
+        with open(os.path.join(SOURCE, "Data", "camel.off")) as off:
+            lines = [line for line in off.read().split("\n") if line.strip()]
+        counts = lines[1].split()
+        points = int(counts[0])
+        faces = [line for line in lines[2 + points:2 + points + int(counts[1])] if "8101" not in line.split()[1:]]
+        self.assertEqual(len(faces), 19536 - 6)
+        holed = os.path.join(self.folder, "camel-hole.off")
+        with open(holed, "w") as off:
+            off.write("OFF\n%d %d 0\n" % (points, len(faces)))
+            off.write("\n".join(lines[2:2 + points] + faces) + "\n")
+        result = run("cut", holed, "--stroke", os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"),
+                     "--weighting", "concavity")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("2 segments (5862, 13668 triangles)", result.stdout)
+
     def test_convert_round_trip_keeps_the_surface(self):
         for extension in (".ply", ".obj", ".stl", ".vtk", ".vtp", ".off"):
             converted = os.path.join(self.folder, "hand" + extension)

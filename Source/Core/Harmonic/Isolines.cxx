@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
 
 namespace kerf
 {
@@ -274,6 +275,96 @@ int nearestIsoline(const std::vector<Isoline>& isolines, const std::vector<Vecto
   }
   return best;
 }
+
+namespace
+{
+// A region made only of faces a cut runs through is a sliver along the cut, not a segment: where
+// the cut ends on a hole, a crossed face whose uncrossed edge is on the boundary is cut off from
+// both sides. Each sliver joins the neighbouring region it shares the most edges with (the lower
+// label on ties), regions with faces off the cut first; then regions are numbered again in order
+// of their first face.
+template <typename OnCut>
+std::vector<int> mergeSlivers(const TriangleMesh& mesh, std::vector<int> labels, int regions, OnCut onCut)
+{
+  std::vector<char> sliver(regions, 1);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    if (!onCut(f))
+    {
+      sliver[labels[f]] = 0;
+    }
+  }
+  if (std::find(sliver.begin(), sliver.end(), 0) == sliver.end())
+  {
+    return labels; // everything is on the cut: nothing to join
+  }
+  // Shared edge counts of each sliver with its neighbours; slivers joined repeatedly until each
+  // reaches a region off the cut (a chain of slivers is resolved one link per pass).
+  std::vector<int> target(regions);
+  std::iota(target.begin(), target.end(), 0);
+  for (bool changed = true; changed;)
+  {
+    changed = false;
+    std::vector<std::map<int, int>> shared(regions);
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      const int a = target[labels[f]];
+      if (!sliver[a])
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = mesh.faceNeighbor(f, k);
+        if (g >= 0 && target[labels[g]] != a)
+        {
+          ++shared[a][target[labels[g]]];
+        }
+      }
+    }
+    for (int r = 0; r < regions; ++r)
+    {
+      if (target[r] != r || !sliver[r] || shared[r].empty())
+      {
+        continue;
+      }
+      int best = -1, bestCount = 0;
+      for (const auto& [neighbour, count] : shared[r])
+      {
+        const bool better = best < 0 || (sliver[best] && !sliver[neighbour]) ||
+          (sliver[best] == sliver[neighbour] && count > bestCount);
+        if (better)
+        {
+          best = neighbour;
+          bestCount = count;
+        }
+      }
+      while (target[best] != best)
+      {
+        best = target[best]; // merged earlier in this pass
+      }
+      if (best == r)
+      {
+        continue;
+      }
+      for (int& t : target)
+      {
+        t = t == r ? best : t;
+      }
+      changed = true;
+    }
+  }
+  std::vector<int> renumber(regions, -1);
+  int next = 0;
+  for (int& label : labels)
+  {
+    int& number = renumber[target[label]];
+    number = number < 0 ? next++ : number;
+    label = number;
+  }
+  return labels;
+}
+} // namespace
 
 std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>& cuts)
 {
@@ -602,7 +693,17 @@ std::vector<int> labelStrokeCuts(
 std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
   const std::vector<const Isoline*>& cut)
 {
-  return labelCuts(mesh, { FieldCut{ &field, value, cut } });
+  std::vector<int> labels = labelCuts(mesh, { FieldCut{ &field, value, cut } });
+  std::vector<char> onCut(static_cast<std::size_t>(mesh.faceCount()), 0);
+  for (const Isoline* line : cut)
+  {
+    for (int f : line->faces)
+    {
+      onCut[f] = 1;
+    }
+  }
+  const int regions = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
+  return mergeSlivers(mesh, std::move(labels), regions, [&](int f) { return onCut[f] != 0; });
 }
 
 } // namespace kerf

@@ -96,7 +96,9 @@ struct CutWithStroke
 std::vector<int> labelStrokeCuts(
   const TriangleMesh& mesh, const std::vector<CutWithStroke>& cuts, double supportDistance);
 
-/// labelCuts for a single cut.
+/// labelCuts for a single cut, without slivers: a region made only of faces the cut runs through
+/// (cut off from both sides where the cut ends on a hole) joins the neighbour it shares the most
+/// edges with.
 std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
   const std::vector<const Isoline*>& cut);
 
