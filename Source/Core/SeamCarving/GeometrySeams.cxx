@@ -6,6 +6,7 @@
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
+#include "Mesh/Submesh.h"
 
 // Boost 1.74's edge iterators trip GCC 12's -Wmaybe-uninitialized inside the max-flow code.
 #pragma GCC diagnostic push
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace kerf
@@ -31,20 +33,6 @@ int regionOfValue(double value)
 std::string regionName(int label)
 {
   return label == 2 ? "handle" : label == 1 ? "modeling" : "fixed";
-}
-
-// The edge joining vertices a and b, or -1.
-int edgeBetween(const TriangleMesh& mesh, int a, int b)
-{
-  const IndexRange neighbors = mesh.vertexNeighbors(a);
-  for (std::size_t i = 0; i < neighbors.size(); ++i)
-  {
-    if (neighbors[i] == b)
-    {
-      return mesh.vertexEdges(a)[i];
-    }
-  }
-  return -1;
 }
 
 // The per-vertex labels (-1 for points used by no triangle), checked.
@@ -66,7 +54,9 @@ std::vector<int> readRegions(const TriangleMesh& mesh, const std::vector<double>
     labels[v] = regionOfValue(region[v]);
     if (labels[v] < 0)
     {
-      throw Error("point " + std::to_string(v) + " has the region value " + std::to_string(region[v]) +
+      std::ostringstream value;
+      value << region[v];
+      throw Error("point " + std::to_string(v) + " has the region value " + value.str() +
         "; the values are 0 (fixed), 1 (modeling) and 2 (handle)");
     }
     ++counts[labels[v]];
@@ -99,46 +89,27 @@ std::vector<int> readRegions(const TriangleMesh& mesh, const std::vector<double>
 // The modeling region as a mesh of its own, with the maps back to the input mesh.
 struct ModelingRegion
 {
-  TriangleMesh mesh;
-  std::vector<int> faces;    // input triangle of each region triangle
-  std::vector<int> vertices; // input vertex of each region vertex
-  std::vector<int> edges;    // input edge of each region edge
+  Submesh sub;
+  std::vector<int> edges; // input edge of each region edge
   std::vector<int> handleLoop, fixedLoop;
 };
 
 // The triangles with a modeling point, checked to form a ring (Dekkers and Kobbelt 2014, 3.1).
 ModelingRegion makeModelingRegion(const TriangleMesh& mesh, const std::vector<int>& labels)
 {
-  ModelingRegion region;
-  std::vector<int> local(labels.size(), -1);
-  std::vector<Triangle> triangles;
+  std::vector<int> faces;
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
     const Triangle& t = mesh.triangle(f);
-    if (labels[t[0]] != 1 && labels[t[1]] != 1 && labels[t[2]] != 1)
+    if (labels[t[0]] == 1 || labels[t[1]] == 1 || labels[t[2]] == 1)
     {
-      continue;
+      faces.push_back(f);
     }
-    Triangle mapped;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (local[t[k]] < 0)
-      {
-        local[t[k]] = static_cast<int>(region.vertices.size());
-        region.vertices.push_back(t[k]);
-      }
-      mapped[k] = local[t[k]];
-    }
-    region.faces.push_back(f);
-    triangles.push_back(mapped);
   }
-  std::vector<Vector3> points;
-  for (int v : region.vertices)
-  {
-    points.push_back(mesh.point(v));
-  }
-  region.mesh = TriangleMesh(std::move(points), std::move(triangles));
-  const TriangleMesh& r = region.mesh;
+  ModelingRegion region;
+  region.sub = extractSubmesh(mesh, faces);
+  const std::vector<int>& global = region.sub.globalVertex;
+  const TriangleMesh& r = region.sub.mesh;
   if (r.componentCount() != 1)
   {
     throw Error("the modeling region (region value 1) has " + std::to_string(r.componentCount()) +
@@ -147,15 +118,15 @@ ModelingRegion makeModelingRegion(const TriangleMesh& mesh, const std::vector<in
   std::vector<const std::vector<int>*> loops[3];
   for (const std::vector<int>& loop : r.boundaryLoops())
   {
-    int kind = labels[region.vertices[loop.front()]];
+    int kind = labels[global[loop.front()]];
     for (int v : loop)
     {
-      if (labels[region.vertices[v]] == 1)
+      if (labels[global[v]] == 1)
       {
         throw Error("the modeling region reaches the surface's border at point " +
-          std::to_string(region.vertices[v]) + "; it must be surrounded by the handle and the fixed region");
+          std::to_string(global[v]) + "; it must be surrounded by the handle and the fixed region");
       }
-      kind = labels[region.vertices[v]];
+      kind = labels[global[v]];
     }
     loops[kind].push_back(&loop);
   }
@@ -178,7 +149,7 @@ ModelingRegion makeModelingRegion(const TriangleMesh& mesh, const std::vector<in
   for (int e = 0; e < r.edgeCount(); ++e)
   {
     const auto& ends = r.edgeVertices(e);
-    region.edges.push_back(edgeBetween(mesh, region.vertices[ends[0]], region.vertices[ends[1]]));
+    region.edges.push_back(edgeBetween(mesh, global[ends[0]], global[ends[1]]));
   }
   return region;
 }
@@ -318,7 +289,7 @@ MinCut minimumCut(const TriangleMesh& mesh, const std::vector<double>& capacity,
 std::vector<std::vector<int>> traceSectorContours(
   const ModelingRegion& region, const std::vector<std::vector<int>>& isoVertices, int sectorCount)
 {
-  const TriangleMesh& mesh = region.mesh;
+  const TriangleMesh& mesh = region.sub.mesh;
   std::vector<std::vector<double>> distance;
   for (std::size_t j = 1; j < isoVertices.size(); ++j)
   {
@@ -463,7 +434,7 @@ std::vector<int> labelSectors(const TriangleMesh& mesh, const std::vector<std::v
 
 std::vector<int> checkSeamRegions(const TriangleMesh& mesh, const std::vector<double>& region)
 {
-  return makeModelingRegion(mesh, readRegions(mesh, region)).faces;
+  return makeModelingRegion(mesh, readRegions(mesh, region)).sub.globalFace;
 }
 
 GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::vector<double>& region,
@@ -477,7 +448,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   }
   const std::vector<int> labels = readRegions(mesh, region);
   const ModelingRegion modeling = makeModelingRegion(mesh, labels);
-  const TriangleMesh& r = modeling.mesh;
+  const TriangleMesh& r = modeling.sub.mesh;
   GeometrySeamsResult result;
 
   // Harmonic field with the uniform Laplacian, 0 on the handle and 1 on the fixed region
@@ -502,11 +473,11 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   std::vector<double> field(r.vertexCount()), angle(r.vertexCount());
   for (int v = 0; v < r.vertexCount(); ++v)
   {
-    field[v] = result.harmonicField[modeling.vertices[v]];
-    angle[v] = normalConeAngle[modeling.vertices[v]];
+    field[v] = result.harmonicField[modeling.sub.globalVertex[v]];
+    angle[v] = normalConeAngle[modeling.sub.globalVertex[v]];
     if (!std::isfinite(angle[v]))
     {
-      throw Error("the normal-cone angle of point " + std::to_string(modeling.vertices[v]) + " is not a number");
+      throw Error("the normal-cone angle of point " + std::to_string(modeling.sub.globalVertex[v]) + " is not a number");
     }
   }
 
@@ -605,7 +576,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
     {
       sum += kappa[r.faceEdge(f, k)] / weightSum;
     }
-    result.faceCost[modeling.faces[f]] = sum / 3.0;
+    result.faceCost[modeling.sub.globalFace[f]] = sum / 3.0;
   }
 
   // Sector contours and sectors; L is the contour of least integrated saliency (3.2.3).
@@ -629,14 +600,14 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   result.sector.assign(mesh.vertexCount(), -1);
   for (int v = 0; v < r.vertexCount(); ++v)
   {
-    if (labels[modeling.vertices[v]] == 1)
+    if (labels[modeling.sub.globalVertex[v]] == 1)
     {
       int sector = std::numeric_limits<int>::max();
       for (int f : r.vertexFaces(v))
       {
         sector = std::min(sector, faceSector[f]);
       }
-      result.sector[modeling.vertices[v]] = sector;
+      result.sector[modeling.sub.globalVertex[v]] = sector;
     }
   }
   if (result.cutContour.size() < 2)
@@ -715,7 +686,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
       const Triangle& t = r.triangle(f);
       if (best.sourceSide[t[0]] != best.sourceSide[t[1]] || best.sourceSide[t[0]] != best.sourceSide[t[2]])
       {
-        result.ring[modeling.faces[f]] = k;
+        result.ring[modeling.sub.globalFace[f]] = k;
         for (int j = 0; j < 3; ++j)
         {
           capacity[r.faceEdge(f, j)] = infinite;
@@ -730,7 +701,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   }
   for (int& v : result.cutContour)
   {
-    v = modeling.vertices[v];
+    v = modeling.sub.globalVertex[v];
   }
   return result;
 }
