@@ -418,7 +418,7 @@ TEST(GeometrySeams, BadRegionsAreRefused)
   expectError(seams(twoBands), "2 separate parts");
   std::vector<double> odd = heightBandRegions(mesh, 1.0, 3.0);
   odd[100] = 3.0;
-  expectError(seams(odd), "region value 3");
+  expectError(seams(odd), "region value 3; the values");
   expectError(seams(std::vector<double>(5, 1.0)), "5 values for");
   // A modeling band reaching the border of a plane is not a ring.
   const TriangleMesh grid = makeGrid(4.0, 1.0, 16, 4);
