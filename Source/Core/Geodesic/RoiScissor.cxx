@@ -7,6 +7,7 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
+#include "Mesh/Submesh.h"
 #include "Session/Surface.h"
 
 #include <algorithm>
@@ -108,48 +109,6 @@ std::vector<int> labelCurveSides(const TriangleMesh& mesh, const std::vector<Sur
 
 namespace
 {
-// The submesh of some faces: its vertices renumbered in increasing global order.
-struct Submesh
-{
-  TriangleMesh mesh;
-  std::vector<int> globalVertex; // local -> global
-  std::vector<int> localVertex;  // global -> local or -1
-  std::vector<int> globalFace;   // local -> global
-};
-
-Submesh extractSubmesh(const TriangleMesh& mesh, const std::vector<int>& faces)
-{
-  Submesh sub;
-  sub.localVertex.assign(mesh.vertexCount(), -1);
-  std::vector<char> used(mesh.vertexCount(), 0);
-  for (int f : faces)
-  {
-    for (int v : mesh.triangle(f))
-    {
-      used[v] = 1;
-    }
-  }
-  std::vector<Vector3> points;
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-  {
-    if (used[v])
-    {
-      sub.localVertex[v] = static_cast<int>(sub.globalVertex.size());
-      sub.globalVertex.push_back(v);
-      points.push_back(mesh.point(v));
-    }
-  }
-  std::vector<Triangle> triangles;
-  for (int f : faces)
-  {
-    const Triangle& t = mesh.triangle(f);
-    triangles.push_back({ sub.localVertex[t[0]], sub.localVertex[t[1]], sub.localVertex[t[2]] });
-    sub.globalFace.push_back(f);
-  }
-  sub.mesh = TriangleMesh(std::move(points), std::move(triangles));
-  return sub;
-}
-
 // The weight of each submesh edge: the whole surface's weight of the same vertex pair.
 std::vector<double> submeshWeights(const TriangleMesh& mesh, const Submesh& sub, const std::vector<double>& weights)
 {
@@ -158,14 +117,7 @@ std::vector<double> submeshWeights(const TriangleMesh& mesh, const Submesh& sub,
   {
     const int a = sub.globalVertex[sub.mesh.edgeVertices(e)[0]];
     const int b = sub.globalVertex[sub.mesh.edgeVertices(e)[1]];
-    const IndexRange neighbors = mesh.vertexNeighbors(a);
-    for (std::size_t i = 0; i < neighbors.size(); ++i)
-    {
-      if (neighbors[i] == b)
-      {
-        local[e] = weights[mesh.vertexEdges(a)[i]];
-      }
-    }
+    local[e] = weights[edgeBetween(mesh, a, b)];
   }
   return local;
 }

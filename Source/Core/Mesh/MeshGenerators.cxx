@@ -136,6 +136,43 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings)
   return TriangleMesh(std::move(points), std::move(triangles));
 }
 
+TriangleMesh makeBumpyCylinder(double radius, double height, int around, int rings, int bumps,
+  double bumpHeight, double bumpRadius, double bumpSize)
+{
+  const TriangleMesh cylinder = makeCylinder(radius, height, around, rings);
+  if (bumps < 0 || !(bumpRadius > 0.0))
+  {
+    throw Error("a bumpy cylinder needs a bump count >= 0 and a positive bump radius");
+  }
+  std::vector<Vector3> points = cylinder.points();
+  for (Vector3& p : points)
+  {
+    const double u = std::atan2(p.y(), p.x());
+    double offset = 0.0;
+    for (int b = 0; b < bumps; ++b)
+    {
+      double du = std::remainder(u - 2.0 * Pi * b / bumps, 2.0 * Pi);
+      const double d2 = (radius * du) * (radius * du) + (p.z() - bumpHeight) * (p.z() - bumpHeight);
+      const double s = 1.0 - d2 / (bumpRadius * bumpRadius);
+      offset = std::max(offset, s > 0.0 ? bumpSize * s * s : 0.0);
+    }
+    const double scale = (radius + offset) / radius;
+    p.x() *= scale;
+    p.y() *= scale;
+  }
+  return TriangleMesh(std::move(points), cylinder.triangles());
+}
+
+std::vector<double> heightBandRegions(const TriangleMesh& mesh, double handleTop, double fixedBottom)
+{
+  std::vector<double> region;
+  for (const Vector3& p : mesh.points())
+  {
+    region.push_back(p.z() <= handleTop ? 2.0 : p.z() >= fixedBottom ? 0.0 : 1.0);
+  }
+  return region;
+}
+
 TriangleMesh makeGrid(double width, double height, int columns, int rows)
 {
   if (columns < 1 || rows < 1)

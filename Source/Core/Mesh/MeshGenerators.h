@@ -3,6 +3,8 @@
 
 #include "Mesh/TriangleMesh.h"
 
+#include <vector>
+
 namespace kerf
 {
 
@@ -18,6 +20,16 @@ TriangleMesh makeTorus(double majorRadius, double minorRadius, int around, int t
 /// Open cylinder of the given radius around the z axis from z = 0 to z = height, with `around`
 /// vertices per ring and `rings` rings (two boundary loops), outward oriented.
 TriangleMesh makeCylinder(double radius, double height, int around, int rings);
+
+/// makeCylinder with `bumps` round bumps evenly spaced around z (the first on the +x axis) at
+/// height `bumpHeight`: a point at distance d (measured on the unrolled cylinder) from the nearest
+/// bump's centre moves outward by bumpSize * (1 - (d / bumpRadius)^2)^2 where d < bumpRadius.
+TriangleMesh makeBumpyCylinder(double radius, double height, int around, int rings, int bumps,
+  double bumpHeight, double bumpRadius, double bumpSize);
+
+/// Per-vertex seam-carving regions along z (Dekkers and Kobbelt 2014, 3.1): 2 (handle) where
+/// z <= handleTop, 0 (fixed) where z >= fixedBottom, 1 (modeling) between.
+std::vector<double> heightBandRegions(const TriangleMesh& mesh, double handleTop, double fixedBottom);
 
 /// Planar grid over [0, width] x [0, height] in z = 0 with (columns + 1) x (rows + 1) vertices,
 /// each quad split along its diagonal. Vertex (i, j) has index j * (columns + 1) + i.

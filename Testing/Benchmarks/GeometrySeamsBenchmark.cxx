@@ -1,0 +1,173 @@
+// Benchmarks of the geometry-seam preprocessing: the filter, Core, and the paper's exhaustive candidate loop.
+//
+// Every benchmark runs on a generated cylinder with a ring of eight bumps in the middle
+// (kerf::makeBumpyCylinder, nearly square quads), the handle on the lower 35% of its height, the
+// fixed region on the upper 35% and the modeling region (30% of the triangles) between. Sizes:
+// about 10k and 100k triangles (the 100k one has a 30k-triangle modeling region). For each size:
+//   BM_GeometrySeamsFilter/<size>      vtkGeometrySeams, 15 rings, the whole RequestData path
+//                                      (conversion, validation, descriptors, Core, output arrays)
+//   BM_GeometrySeamsCore/<size>        kerf::computeGeometrySeams, 15 rings (global cut first)
+//   BM_GeometrySeamsExhaustive/<size>  the same with the paper's loop, one max-flow per edge of
+//                                      the sector contour, for the first ring only (15 rings take
+//                                      about 15 times as long: each ring repeats the loop)
+// The meshes, normal-cone angles and vtkPolyData are built once per size, outside the timed loops.
+#include "BenchmarkPolyData.h"
+#include "KerfBenchmarks.h"
+#include "vtkGeometrySeams.h"
+
+#include "Geometry/SurfaceDescriptors.h"
+#include "Mesh/MeshGenerators.h"
+#include "SeamCarving/GeometrySeams.h"
+
+#include <benchmark/benchmark.h>
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace
+{
+
+struct CylinderSize
+{
+  const char* label;
+  int around;
+  int rings;
+  double height;
+  double minimumSeconds;
+};
+
+// 2 * 64 * 79 = 10,112 and 2 * 200 * 250 = 100,000 triangles; height keeps the quads square.
+const std::array<CylinderSize, 2> Sizes = { { { "10k", 64, 80, 7.85, 0.5 }, { "100k", 200, 251, 7.85, 2.0 } } };
+
+struct SeamScene
+{
+  kerf::TriangleMesh mesh;
+  std::vector<double> regions;
+  std::vector<double> normalConeAngle;
+  vtkSmartPointer<vtkPolyData> polyData;
+  int modelingTriangles = 0;
+};
+
+const SeamScene& sceneOfSize(const CylinderSize& size)
+{
+  static std::map<std::string, std::unique_ptr<SeamScene>> scenes;
+  std::unique_ptr<SeamScene>& scene = scenes[size.label];
+  if (!scene)
+  {
+    auto built = std::make_unique<SeamScene>();
+    built->mesh = kerf::makeBumpyCylinder(1.0, size.height, size.around, size.rings, 8, 0.5 * size.height, 0.4, 0.2);
+    built->regions = kerf::heightBandRegions(built->mesh, 0.35 * size.height, 0.65 * size.height);
+    built->normalConeAngle = kerf::computeSurfaceDescriptors(built->mesh).normalConeAngle;
+    built->modelingTriangles = static_cast<int>(kerf::checkSeamRegions(built->mesh, built->regions).size());
+    built->polyData = kerf::benchmarks::MakePolyData(built->mesh);
+    vtkNew<vtkDoubleArray> array;
+    array->SetName("Region");
+    for (double value : built->regions)
+    {
+      array->InsertNextValue(value);
+    }
+    built->polyData->GetPointData()->AddArray(array);
+    scene = std::move(built);
+  }
+  return *scene;
+}
+
+void setCounters(benchmark::State& state, const SeamScene& scene)
+{
+  state.counters["triangles"] = scene.mesh.faceCount();
+  state.counters["modeling_triangles"] = scene.modelingTriangles;
+}
+
+void geometrySeamsFilter(benchmark::State& state, const CylinderSize& size)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const SeamScene& { return sceneOfSize(size); },
+    [](benchmark::State& st, const SeamScene& scene) {
+      vtkNew<vtkGeometrySeams> filter;
+      filter->SetInputData(scene.polyData);
+      for (auto _ : st)
+      {
+        // New coordinates as far as every cache can tell: each run pays the whole path.
+        scene.polyData->GetPoints()->GetData()->Modified();
+        scene.polyData->Modified();
+        filter->Update();
+      }
+      vtkDataArray* count = filter->GetOutput()->GetFieldData()->GetArray("RingCount");
+      if (!count || count->GetComponent(0, 0) != 15.0)
+      {
+        kerf::benchmarks::Fail(st, "vtkGeometrySeams did not find 15 rings");
+      }
+    },
+    setCounters);
+}
+
+void geometrySeamsCore(benchmark::State& state, const CylinderSize& size, kerf::RingCandidateSearch search, int rings)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const SeamScene& { return sceneOfSize(size); },
+    [&](benchmark::State& st, const SeamScene& scene) {
+      kerf::GeometrySeamsOptions options;
+      options.search = search;
+      options.ringCount = rings;
+      std::size_t found = 0;
+      int flows = 0;
+      for (auto _ : st)
+      {
+        const kerf::GeometrySeamsResult result =
+          kerf::computeGeometrySeams(scene.mesh, scene.regions, scene.normalConeAngle, options);
+        found = result.ringCost.size();
+        flows = result.maxFlowCount;
+        benchmark::DoNotOptimize(result.ring.data());
+      }
+      if (found != static_cast<std::size_t>(rings))
+      {
+        kerf::benchmarks::Fail(st, "kerf::computeGeometrySeams found " + std::to_string(found) + " rings");
+      }
+      st.counters["max_flows"] = flows;
+    },
+    setCounters);
+}
+
+} // namespace
+
+namespace kerf
+{
+namespace benchmarks
+{
+
+void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes)
+{
+  for (const CylinderSize& size : Sizes)
+  {
+    const std::string label = size.label;
+    std::vector<benchmark::internal::Benchmark*> registered = {
+      benchmark::RegisterBenchmark(("BM_GeometrySeamsFilter/" + label).c_str(), geometrySeamsFilter, size),
+      benchmark::RegisterBenchmark(("BM_GeometrySeamsCore/" + label).c_str(),
+        [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::GlobalCutFirst, 15); }),
+      benchmark::RegisterBenchmark(("BM_GeometrySeamsExhaustive/" + label).c_str(),
+        [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::Exhaustive, 1); }),
+    };
+    for (benchmark::internal::Benchmark* benchmark : registered)
+    {
+      benchmark->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (useSizeMinimumTimes)
+      {
+        benchmark->MinTime(size.minimumSeconds);
+      }
+    }
+  }
+}
+
+} // namespace benchmarks
+} // namespace kerf
