@@ -45,7 +45,9 @@ double meanEdgeLength(const kerf::TriangleMesh& mesh)
 void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInput& surface, vtkPolyData* input,
   vtkPolyData* output)
 {
-  const kerf::TriangleMesh& mesh = result.mesh;
+  const kerf::TriangleMesh& original = surface.Mesh();
+  const kerf::TriangleMesh& mesh = kerf::exportedMesh(result, original);
+  const bool split = !result.originalPointIds.empty(); // scissor: new points and triangles
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(mesh.vertexCount());
@@ -63,7 +65,6 @@ void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInpu
   output->SetPoints(points);
   output->SetPolys(polys);
 
-  const kerf::TriangleMesh& original = surface.Mesh();
   vtkPointData* inPoints = input->GetPointData();
   vtkPointData* outPoints = output->GetPointData();
   outPoints->InterpolateAllocate(inPoints, mesh.vertexCount());
@@ -71,7 +72,7 @@ void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInpu
   corners->SetNumberOfIds(3);
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    const int id = result.originalPointIds[static_cast<std::size_t>(v)];
+    const int id = split ? result.originalPointIds[static_cast<std::size_t>(v)] : v;
     if (id >= 0)
     {
       outPoints->CopyData(inPoints, id, v);
@@ -91,7 +92,8 @@ void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInpu
   outCells->CopyAllocate(inCells, mesh.faceCount());
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
-    outCells->CopyData(inCells, surface.SourceCells()[static_cast<std::size_t>(result.originalFaces[static_cast<std::size_t>(f)])], f);
+    const int face = split ? result.originalFaces[static_cast<std::size_t>(f)] : f;
+    outCells->CopyData(inCells, surface.SourceCells()[static_cast<std::size_t>(face)], f);
   }
 
   vtkNew<vtkIntArray> charts;
@@ -108,7 +110,7 @@ void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInpu
   originalIds->SetNumberOfValues(mesh.vertexCount());
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    originalIds->SetValue(v, result.originalPointIds[static_cast<std::size_t>(v)]);
+    originalIds->SetValue(v, split ? result.originalPointIds[static_cast<std::size_t>(v)] : v);
   }
   outPoints->AddArray(originalIds);
   vtkFieldData* field = output->GetFieldData();
@@ -119,15 +121,16 @@ void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInpu
 }
 
 // Output 1: each cut edge as a line between output 0's points.
-void writeCutEdges(const kerf::CurveExportResult& result, vtkPolyData* output, vtkPolyData* edges)
+void writeCutEdges(const kerf::CurveExportResult& result, const kerf::TriangleMesh& mesh, vtkPolyData* output,
+  vtkPolyData* edges)
 {
   edges->SetPoints(output->GetPoints());
   vtkNew<vtkCellArray> lines;
-  for (int e = 0; e < result.mesh.edgeCount(); ++e)
+  for (int e = 0; e < mesh.edgeCount(); ++e)
   {
     if (result.cutEdges[static_cast<std::size_t>(e)])
     {
-      const vtkIdType ids[2] = { result.mesh.edgeVertices(e)[0], result.mesh.edgeVertices(e)[1] };
+      const vtkIdType ids[2] = { mesh.edgeVertices(e)[0], mesh.edgeVertices(e)[1] };
       lines->InsertNextCell(2, ids);
     }
   }
@@ -183,7 +186,7 @@ int vtkCurveExport::RequestData(vtkInformation*, vtkInformationVector** inputVec
     options.mode = static_cast<kerf::CurveExportMode>(this->Mode);
     const kerf::CurveExportResult result = kerf::exportCurves(surface.mesh(), curves, options);
     writeSurface(result, this->State->surface, input, output);
-    writeCutEdges(result, output, vtkPolyData::GetData(outputVector, 1));
+    writeCutEdges(result, kerf::exportedMesh(result, surface.mesh()), output, vtkPolyData::GetData(outputVector, 1));
   });
 }
 

@@ -256,8 +256,9 @@ TEST(CurveExport, SnapKeepsTheMeshAndFollowsEdgesNearTheCurve)
   CurveExportOptions options;
   options.mode = CurveExportMode::Snap;
   const CurveExportResult result = exportCurves(sphere, curves, options);
-  EXPECT_EQ(result.mesh.points(), sphere.points());
-  EXPECT_EQ(result.mesh.triangles(), sphere.triangles());
+  EXPECT_TRUE(result.mesh.empty()); // the output is the input mesh
+  EXPECT_EQ(&exportedMesh(result, sphere), &sphere);
+  EXPECT_EQ(result.cutEdges.size(), static_cast<std::size_t>(sphere.edgeCount()));
   EXPECT_EQ(result.chartCount, 3);
   const double edge = longestEdge(sphere);
   int chainEdges = 0;

@@ -482,10 +482,63 @@ private:
     return static_cast<int>(work.points.size()) - 1;
   }
 
+  // The common cases without the general triangulation: one point on a side and no curve
+  // segment (the triangle beside a crossed edge), or one segment between two sides (a curve
+  // crossing the triangle): the corner cut off, and the quadrilateral left split along its
+  // shorter diagonal.
+  bool splitSimply(int face, const FaceWork& work, std::vector<Triangle>& triangles,
+    std::vector<int>& originalFaces, std::vector<std::pair<int, int>>& cuts) const
+  {
+    const std::vector<LocalPoint>& pts = work.points;
+    const Triangle& corner = this->Mesh.triangle(face);
+    if (pts.size() == 4 && work.constraints.empty() && pts[3].side >= 0)
+    {
+      const int k = pts[3].side, p = pts[3].id;
+      triangles.push_back(Triangle{ corner[k], p, corner[(k + 2) % 3] });
+      triangles.push_back(Triangle{ p, corner[(k + 1) % 3], corner[(k + 2) % 3] });
+      originalFaces.insert(originalFaces.end(), 2, face);
+      return true;
+    }
+    if (pts.size() != 5 || work.constraints.size() != 1)
+    {
+      return false;
+    }
+    int a = work.constraints[0].first, b = work.constraints[0].second;
+    if (pts[a].side < 0 || pts[b].side < 0 || pts[a].side == pts[b].side)
+    {
+      return false;
+    }
+    if (pts[b].side != (pts[a].side + 1) % 3)
+    {
+      std::swap(a, b);
+    }
+    // a on side i (corners i, i+1), b on side i+1 (corners i+1, i+2): corner i+1 is cut off.
+    const int i = pts[a].side, pa = pts[a].id, pb = pts[b].id;
+    const int ci = corner[i], cj = corner[(i + 1) % 3], ck = corner[(i + 2) % 3];
+    triangles.push_back(Triangle{ pa, cj, pb });
+    if ((this->Points[ci] - this->Points[pb]).squaredNorm() <= (this->Points[pa] - this->Points[ck]).squaredNorm())
+    {
+      triangles.push_back(Triangle{ ci, pa, pb });
+      triangles.push_back(Triangle{ ci, pb, ck });
+    }
+    else
+    {
+      triangles.push_back(Triangle{ pa, pb, ck });
+      triangles.push_back(Triangle{ pa, ck, ci });
+    }
+    originalFaces.insert(originalFaces.end(), 3, face);
+    cuts.emplace_back(pa, pb);
+    return true;
+  }
+
   void triangulate(int face, FaceWork& work, std::vector<Triangle>& triangles, std::vector<int>& originalFaces,
     std::vector<std::pair<int, int>>& cuts)
   {
     std::vector<LocalPoint>& pts = work.points;
+    if (this->splitSimply(face, work, triangles, originalFaces, cuts))
+    {
+      return;
+    }
     // Constraints split at the points they pass through, then at their crossings.
     std::vector<std::pair<int, int>> constraints;
     std::vector<std::pair<int, int>> pending = work.constraints;
@@ -610,7 +663,12 @@ private:
     for (int a = 0; a < n; ++a)
     {
       auto& list = around[static_cast<std::size_t>(a)];
-      auto angle = [&](int b) { return std::atan2(pts[b].y - pts[a].y, pts[b].x - pts[a].x); };
+      // A pseudo-angle: increases with the angle like atan2, without its cost.
+      auto angle = [&](int b) {
+        const double dx = pts[b].x - pts[a].x, dy = pts[b].y - pts[a].y;
+        const double p = dx / (std::abs(dx) + std::abs(dy));
+        return dy < 0.0 ? p - 1.0 : 1.0 - p;
+      };
       std::sort(list.begin(), list.end(), [&](int p, int q) { return angle(p) < angle(q); });
       for (std::size_t i = 0; i < list.size(); ++i)
       {
@@ -908,9 +966,10 @@ CurveExportResult exportCurves(
       }
     }
     result.droppedPoints = pointCount - static_cast<int>(winners.size());
-    std::vector<Vector3> points = mesh.points();
+    std::vector<Vector3> points;
     if (options.mode == CurveExportMode::InverseSnap)
     {
+      points = mesh.points();
       for (const auto& [v, winner] : winners)
       {
         const Vector3 previous = points[static_cast<std::size_t>(v)];
@@ -935,8 +994,12 @@ CurveExportResult exportCurves(
         }
       }
     }
-    result.mesh = TriangleMesh(points, mesh.triangles());
-    EdgePathFinder paths(result.mesh);
+    if (options.mode == CurveExportMode::InverseSnap)
+    {
+      result.mesh = mesh.withPoints(std::move(points));
+    }
+    const TriangleMesh& output = exportedMesh(result, mesh);
+    EdgePathFinder paths(output);
     result.cutEdges.assign(static_cast<std::size_t>(mesh.edgeCount()), 0);
     for (std::size_t c = 0; c < curves.size(); ++c)
     {
@@ -965,33 +1028,18 @@ CurveExportResult exportCurves(
       for (std::size_t i = 0; i < segments && !chain.empty(); ++i)
       {
         const int a = chain[i], b = chain[(i + 1) % chain.size()];
-        const IndexRange neighbors = result.mesh.vertexNeighbors(a);
+        const IndexRange neighbors = output.vertexNeighbors(a);
         for (std::size_t k = 0; k < neighbors.size(); ++k)
         {
           if (neighbors[k] == b)
           {
-            result.cutEdges[static_cast<std::size_t>(result.mesh.vertexEdges(a)[k])] = 1;
+            result.cutEdges[static_cast<std::size_t>(output.vertexEdges(a)[k])] = 1;
           }
         }
       }
     }
-    result.originalPointIds.resize(static_cast<std::size_t>(mesh.vertexCount()));
-    result.pointOrigins.resize(static_cast<std::size_t>(mesh.vertexCount()));
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-    {
-      result.originalPointIds[static_cast<std::size_t>(v)] = v;
-      if (!mesh.vertexFaces(v).empty())
-      {
-        result.pointOrigins[static_cast<std::size_t>(v)] = vertexSurfacePoint(mesh, v);
-      }
-    }
-    result.originalFaces.resize(static_cast<std::size_t>(mesh.faceCount()));
-    for (int f = 0; f < mesh.faceCount(); ++f)
-    {
-      result.originalFaces[static_cast<std::size_t>(f)] = f;
-    }
   }
-  result.chartCount = labelCharts(result.mesh, result.cutEdges, result.charts);
+  result.chartCount = labelCharts(exportedMesh(result, mesh), result.cutEdges, result.charts);
   return result;
 }
 

@@ -51,20 +51,30 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
   const TriangleMesh& mesh, const std::vector<SurfaceCurve>& curves, double tolerance);
 
 /// An exported mesh and the edges the curves became.
+///
+/// Snap leaves the mesh as it is: `mesh` stays empty and the output is the input mesh (so a snap
+/// copies nothing of it). The index maps are filled by Scissor only; elsewhere they are the
+/// identity and stay empty.
 struct CurveExportResult
 {
-  TriangleMesh mesh;
-  std::vector<char> cutEdges;          ///< per edge of `mesh`: 1 where a curve runs along it
+  TriangleMesh mesh;                   ///< Scissor: the split mesh; InverseSnap: the moved mesh; Snap: empty
+  std::vector<char> cutEdges;          ///< per edge of the output mesh: 1 where a curve runs along it
   std::vector<int> charts;             ///< per face: connected components across uncut edges
   int chartCount = 0;
-  std::vector<int> originalPointIds;   ///< per vertex: the input vertex, -1 for a new scissor vertex
-  std::vector<SurfacePoint> pointOrigins; ///< per vertex: where it was on the input mesh
-  std::vector<int> originalFaces;      ///< per face: the input triangle it lies in
+  std::vector<int> originalPointIds;   ///< Scissor, per vertex: the input vertex, -1 for a new one
+  std::vector<SurfacePoint> pointOrigins; ///< Scissor, per vertex: where it lies on the input mesh
+  std::vector<int> originalFaces;      ///< Scissor, per face: the input triangle it lies in
   std::vector<std::vector<int>> curveVertices; ///< per curve: its vertices in order (closed: first not repeated)
   int movedVertices = 0;  ///< inverse snap: vertices moved onto a curve point
   int droppedPoints = 0;  ///< snap modes: points whose nearest vertex went to a nearer point
   int refusedFlips = 0;   ///< inverse snap: moves refused because a triangle would flip
 };
+
+/// The output mesh of an export of `input`: result.mesh, or `input` itself after a snap.
+inline const TriangleMesh& exportedMesh(const CurveExportResult& result, const TriangleMesh& input)
+{
+  return result.mesh.empty() ? input : result.mesh;
+}
 
 /// Exports curves on a mesh as mesh edges (SeamCut, section 4):
 ///
