@@ -2,6 +2,7 @@
 #include "Export/CurveExport.h"
 
 #include "Error.h"
+#include "Mesh/FaceRegions.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>
@@ -873,34 +874,8 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
 
 int labelCharts(const TriangleMesh& mesh, const std::vector<char>& cutEdges, std::vector<int>& charts)
 {
-  charts.assign(static_cast<std::size_t>(mesh.faceCount()), -1);
-  int count = 0;
-  std::vector<int> stack;
-  for (int seed = 0; seed < mesh.faceCount(); ++seed)
-  {
-    if (charts[static_cast<std::size_t>(seed)] >= 0)
-    {
-      continue;
-    }
-    charts[static_cast<std::size_t>(seed)] = count;
-    stack.push_back(seed);
-    while (!stack.empty())
-    {
-      const int f = stack.back();
-      stack.pop_back();
-      for (int k = 0; k < 3; ++k)
-      {
-        const int g = mesh.faceNeighbor(f, k);
-        if (g >= 0 && charts[static_cast<std::size_t>(g)] < 0 && !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))])
-        {
-          charts[static_cast<std::size_t>(g)] = count;
-          stack.push_back(g);
-        }
-      }
-    }
-    ++count;
-  }
-  return count;
+  return labelFaceRegions(
+    mesh, [&](int f, int k) { return !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))]; }, charts);
 }
 
 CurveExportResult exportCurves(
