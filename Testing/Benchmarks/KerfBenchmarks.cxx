@@ -76,6 +76,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterMeshReaderBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterGeometrySeamsBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterCurveExportBenchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

@@ -45,6 +45,7 @@ void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes);
 void RegisterHarmonicSolverBenchmarks();
 void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes);
 void RegisterMeshReaderBenchmarks(bool useSizeMinimumTimes);
+void RegisterCurveExportBenchmarks();
 void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes);
 

@@ -2,6 +2,7 @@
 #include "Harmonic/Isolines.h"
 
 #include "Error.h"
+#include "Mesh/FaceRegions.h"
 
 #include <algorithm>
 #include <cmath>
@@ -398,33 +399,8 @@ std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>
     }
     return false;
   };
-  std::vector<int> labels(faces, -1);
-  std::vector<int> stack;
-  int next = 0;
-  for (int seed = 0; seed < faces; ++seed)
-  {
-    if (labels[seed] >= 0)
-    {
-      continue;
-    }
-    labels[seed] = next;
-    stack.push_back(seed);
-    while (!stack.empty())
-    {
-      const int f = stack.back();
-      stack.pop_back();
-      for (int k = 0; k < 3; ++k)
-      {
-        const int g = mesh.faceNeighbor(f, k);
-        if (g >= 0 && labels[g] < 0 && !separated(f, g))
-        {
-          labels[g] = next;
-          stack.push_back(g);
-        }
-      }
-    }
-    ++next;
-  }
+  std::vector<int> labels;
+  labelFaceRegions(mesh, [&](int f, int k) { return !separated(f, mesh.faceNeighbor(f, k)); }, labels);
   return labels;
 }
 

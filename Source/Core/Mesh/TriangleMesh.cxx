@@ -71,6 +71,18 @@ void TriangleMesh::checkIndices(const std::vector<Triangle>& triangles, int poin
   }
 }
 
+TriangleMesh TriangleMesh::withPoints(std::vector<Vector3> points) const
+{
+  if (points.size() != this->Points.size())
+  {
+    throw Error("the mesh has " + std::to_string(this->Points.size()) + " points, not " +
+      std::to_string(points.size()));
+  }
+  TriangleMesh moved(*this);
+  moved.Points = std::move(points);
+  return moved;
+}
+
 double TriangleMesh::boundingBoxDiagonal() const
 {
   Vector3 lo = Vector3::Constant(std::numeric_limits<double>::infinity());

@@ -50,6 +50,10 @@ public:
   /// not smaller than the number of points.
   TriangleMesh(std::vector<Vector3> points, std::vector<Triangle> triangles);
 
+  /// The same triangles and adjacency with other coordinates (one per point), without building
+  /// the adjacency again. Throws kerf::Error for another number of points.
+  TriangleMesh withPoints(std::vector<Vector3> points) const;
+
   /// Throws kerf::Error naming the first triangle that uses an index outside [0, pointCount).
   static void checkIndices(const std::vector<Triangle>& triangles, int pointCount);
 
