@@ -65,7 +65,7 @@ int vtkGeometrySeams::RequestData(vtkInformation*, vtkInformationVector** inputV
     kerf::SurfaceInput& surface = this->State->surface;
     kerf::LoadSurface(surface, input, requirements);
     const std::vector<double> region =
-      kerf::ReadInputArray(this, 0, this->GetInputArrayToProcess(0, inputVector), input->GetNumberOfPoints(), "the surface");
+      kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
 
     kerf::GeometrySeamsOptions options;
     options.ringCount = this->NumberOfRings;
