@@ -75,6 +75,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterSegmentationEvaluationBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterMeshReaderBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterChartParameterizationBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

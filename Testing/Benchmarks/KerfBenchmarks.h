@@ -46,6 +46,7 @@ void RegisterHarmonicSolverBenchmarks();
 void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes);
 void RegisterMeshReaderBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
+void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks
 } // namespace kerf

@@ -108,6 +108,24 @@ TEST(SplitAlongFaceLabels, DuplicatesTheBorderBetweenTwoLabels)
   EXPECT_EQ(split.mesh.componentCount(), 2);
 }
 
+TEST(SplitAlongFaceLabels, SeparatesFansOfOneLabelOnRequest)
+{
+  // Two triangles of one label touching at vertex 0 only, and a third of another label.
+  const TriangleMesh bowtie({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 0, 0 }, { -1, -1, 0 }, { 0, 1, 0 } },
+    { { { 0, 1, 2 } }, { { 0, 3, 4 } }, { { 0, 2, 5 } } });
+  const std::vector<int> labels = { 4, 4, 1 };
+  const SplitMesh kept = splitAlongFaceLabels(bowtie, labels);
+  EXPECT_EQ(kept.mesh.vertexCount(), 8); // vertices 0 and 2 copied for label 1
+  EXPECT_EQ(kept.mesh.componentCount(), 2);
+  const SplitMesh separated = splitAlongFaceLabels(bowtie, labels, LabelFans::Separate);
+  EXPECT_EQ(separated.mesh.vertexCount(), 9);
+  EXPECT_EQ(separated.mesh.componentCount(), 3);
+  // Copies of vertex 0: label 1 first, then label 4's fans by their first face.
+  EXPECT_EQ(separated.mesh.triangle(2)[0], 0);
+  EXPECT_EQ(separated.mesh.triangle(0)[0], 1);
+  EXPECT_EQ(separated.mesh.triangle(1)[0], 2);
+}
+
 TEST(SplitAlongFaceLabels, RefusesALabelCountOtherThanTheFaceCount)
 {
   const TriangleMesh grid = makeGrid(1.0, 1.0, 2, 2);

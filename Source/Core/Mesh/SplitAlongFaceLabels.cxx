@@ -1,16 +1,33 @@
-// splitAlongFaceLabels: one copy of a vertex per label of the faces around it.
+// splitAlongFaceLabels: one copy of a vertex per label (or per fan of a label) of the faces around it.
 #include "Mesh/SplitAlongFaceLabels.h"
 
 #include "Error.h"
 
 #include <algorithm>
+#include <numeric>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace kerf
 {
+namespace
+{
+// True if triangles a and b share the vertex `other` besides v (then they share the edge v-other).
+bool shareEdgeAt(const Triangle& a, const Triangle& b, int v)
+{
+  for (int x : a)
+  {
+    if (x != v && std::find(b.begin(), b.end(), x) != b.end())
+    {
+      return true;
+    }
+  }
+  return false;
+}
+} // namespace
 
-SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>& faceLabels)
+SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>& faceLabels, LabelFans fans)
 {
   if (static_cast<int>(faceLabels.size()) != mesh.faceCount())
   {
@@ -19,38 +36,67 @@ SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>&
   }
   SplitMesh split;
   std::vector<Vector3> points;
-  // For each input vertex its copies as (label, new vertex), sorted by label.
-  std::vector<int> copyOffsets(static_cast<std::size_t>(mesh.vertexCount()) + 1, 0);
-  std::vector<std::pair<int, int>> copies;
-  std::vector<int> labels;
+  std::vector<Triangle> triangles = mesh.triangles();
+  // Around each vertex: its faces as (label, group, face), the group the first face of its fan
+  // (or of its label), so that sorting numbers the copies by label, then fan.
+  std::vector<std::tuple<int, int, int>> around;
+  std::vector<int> group;
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    labels.clear();
-    for (int f : mesh.vertexFaces(v))
+    const IndexRange faces = mesh.vertexFaces(v);
+    const std::size_t count = faces.size();
+    group.resize(count);
+    std::iota(group.begin(), group.end(), 0);
+    // Union of faces of one label, through a shared edge at v when fans are separated.
+    for (std::size_t i = 0; i < count; ++i)
     {
-      labels.push_back(faceLabels[static_cast<std::size_t>(f)]);
+      for (std::size_t j = 0; j < i; ++j)
+      {
+        const int fi = faces[i], fj = faces[j];
+        if (faceLabels[static_cast<std::size_t>(fi)] != faceLabels[static_cast<std::size_t>(fj)] ||
+          (fans == LabelFans::Separate && !shareEdgeAt(mesh.triangle(fi), mesh.triangle(fj), v)))
+        {
+          continue;
+        }
+        std::size_t a = i, b = j;
+        while (group[a] != a)
+        {
+          a = group[a];
+        }
+        while (group[b] != b)
+        {
+          b = group[b];
+        }
+        group[std::max(a, b)] = std::min(a, b);
+      }
     }
-    std::sort(labels.begin(), labels.end());
-    labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
-    for (int label : labels)
+    around.clear();
+    for (std::size_t i = 0; i < count; ++i)
     {
-      copies.emplace_back(label, static_cast<int>(points.size()));
-      points.push_back(mesh.point(v));
-      split.originalPoint.push_back(v);
+      std::size_t root = i;
+      while (group[root] != root)
+      {
+        root = group[root];
+      }
+      around.emplace_back(faceLabels[static_cast<std::size_t>(faces[i])], faces[root], faces[i]);
     }
-    copyOffsets[static_cast<std::size_t>(v) + 1] = static_cast<int>(copies.size());
-  }
-  std::vector<Triangle> triangles(static_cast<std::size_t>(mesh.faceCount()));
-  for (int f = 0; f < mesh.faceCount(); ++f)
-  {
-    const int label = faceLabels[static_cast<std::size_t>(f)];
-    for (int k = 0; k < 3; ++k)
+    std::sort(around.begin(), around.end());
+    for (std::size_t i = 0; i < around.size(); ++i)
     {
-      const int v = mesh.triangle(f)[static_cast<std::size_t>(k)];
-      const auto first = copies.begin() + copyOffsets[static_cast<std::size_t>(v)];
-      const auto last = copies.begin() + copyOffsets[static_cast<std::size_t>(v) + 1];
-      const auto copy = std::lower_bound(first, last, std::make_pair(label, -1));
-      triangles[static_cast<std::size_t>(f)][static_cast<std::size_t>(k)] = copy->second;
+      if (i == 0 || std::get<1>(around[i]) != std::get<1>(around[i - 1]) ||
+        std::get<0>(around[i]) != std::get<0>(around[i - 1]))
+      {
+        points.push_back(mesh.point(v));
+        split.originalPoint.push_back(v);
+      }
+      const int f = std::get<2>(around[i]);
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        if (mesh.triangle(f)[k] == v)
+        {
+          triangles[static_cast<std::size_t>(f)][k] = static_cast<int>(points.size()) - 1;
+        }
+      }
     }
   }
   split.mesh = TriangleMesh(std::move(points), std::move(triangles));

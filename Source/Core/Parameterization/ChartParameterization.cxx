@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numeric>
 #include <set>
@@ -44,7 +45,7 @@ int farthestBoundaryVertex(const TriangleMesh& chart, const std::vector<int>& lo
 
 Eigen::VectorXd solveSystem(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rhs, ChartSolver solver)
 {
-  if (solver == ChartSolver::CHOLMOD)
+  if (solver == ChartSolver::RealCHOLMOD)
   {
     SparseCholesky cholesky;
     if (!cholesky.factor(lower))
@@ -151,6 +152,85 @@ std::string chartTopologyProblem(const TriangleMesh& chart)
   return {};
 }
 
+namespace
+{
+// The conformal energy as the Hermitian form z^H H z / 2 in z = u + i v: H = L - i C, L the
+// cotangent Laplacian and C the antisymmetric boundary term of the real form, so H has the
+// Laplacian's pattern and half the real form's unknowns.
+std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::vector<int>& loop, int pinA, int pinB, double pinDistance)
+{
+  using Complex = std::complex<double>;
+  const int n = chart.vertexCount();
+  std::vector<int> freeIndex(static_cast<std::size_t>(n), -1);
+  int freeCount = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    if (v != pinA && v != pinB)
+    {
+      freeIndex[static_cast<std::size_t>(v)] = freeCount++;
+    }
+  }
+  std::vector<Complex> pinned(static_cast<std::size_t>(n), Complex(0.0, 0.0));
+  pinned[static_cast<std::size_t>(pinB)] = Complex(pinDistance, 0.0);
+  std::vector<Eigen::Triplet<Complex>> triplets;
+  triplets.reserve(static_cast<std::size_t>(chart.faceCount()) * 6 + loop.size());
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(freeCount);
+  // Entry (a, b) of H, and (b, a) = conj(value) when a != b.
+  auto add = [&](int a, int b, Complex value) {
+    const int fa = freeIndex[static_cast<std::size_t>(a)];
+    const int fb = freeIndex[static_cast<std::size_t>(b)];
+    if (fa >= 0 && fb >= 0)
+    {
+      triplets.emplace_back(std::max(fa, fb), std::min(fa, fb), fa >= fb ? value : std::conj(value));
+    }
+    else if (fa >= 0)
+    {
+      rhs[fa] -= value * pinned[static_cast<std::size_t>(b)];
+    }
+    else if (fb >= 0 && a != b)
+    {
+      rhs[fb] -= std::conj(value) * pinned[static_cast<std::size_t>(a)];
+    }
+  };
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = t[static_cast<std::size_t>((k + 1) % 3)];
+      const int j = t[static_cast<std::size_t>((k + 2) % 3)];
+      const Vector3 a = chart.point(i) - chart.point(t[static_cast<std::size_t>(k)]);
+      const Vector3 b = chart.point(j) - chart.point(t[static_cast<std::size_t>(k)]);
+      const double weight = 0.5 * a.dot(b) / a.cross(b).norm();
+      add(i, i, weight);
+      add(j, j, weight);
+      add(i, j, -weight);
+    }
+  }
+  // C_ij = -1/2 for a boundary edge i -> j, so H_ij = -i C_ij = i / 2.
+  for (std::size_t e = 0; e < loop.size(); ++e)
+  {
+    add(loop[e], loop[(e + 1) % loop.size()], Complex(0.0, 0.5));
+  }
+  Eigen::SparseMatrix<Complex> lower(freeCount, freeCount);
+  lower.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> ldlt(lower);
+  if (ldlt.info() != Eigen::Success)
+  {
+    throw Error("the conformal map's system is not positive definite");
+  }
+  const Eigen::VectorXcd solution = ldlt.solve(rhs);
+  std::vector<Vector2> uv(static_cast<std::size_t>(n));
+  for (int v = 0; v < n; ++v)
+  {
+    const int fv = freeIndex[static_cast<std::size_t>(v)];
+    const Complex z = fv < 0 ? pinned[static_cast<std::size_t>(v)] : solution[fv];
+    uv[static_cast<std::size_t>(v)] = Vector2(z.real(), z.imag());
+  }
+  return uv;
+}
+} // namespace
+
 std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver)
 {
   const std::string problem = chartTopologyProblem(chart);
@@ -163,6 +243,18 @@ std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSo
   const int pinA = farthestBoundaryVertex(chart, loop, farthestBoundaryVertex(chart, loop, loop.front()));
   const int pinB = farthestBoundaryVertex(chart, loop, pinA);
   const double pinDistance = (chart.point(pinA) - chart.point(pinB)).norm();
+  if (solver == ChartSolver::ComplexLDLT)
+  {
+    std::vector<Vector2> uv = complexConformalMap(chart, loop, pinA, pinB, pinDistance);
+    for (std::size_t v = 0; v < uv.size(); ++v)
+    {
+      if (!uv[v].allFinite())
+      {
+        throw Error("the conformal map is not finite at vertex " + std::to_string(v) + " of the chart");
+      }
+    }
+    return uv;
+  }
 
   // Unknowns u_i, v_i interleaved (index 2i, 2i+1) without the four pinned coordinates.
   std::vector<int> freeIndex(2 * static_cast<std::size_t>(n), -1);
@@ -453,20 +545,44 @@ ChartParameterizationResult parameterizeCharts(
     throw Error("the margin between charts is " + std::to_string(options.margin) + ", outside [0, 0.25]");
   }
   ChartParameterizationResult result;
-  result.split = splitAlongFaceLabels(mesh, faceLabels);
+  // Pinched vertices are cut (one copy per fan), so each chart is a piece joined by edges.
+  result.split = splitAlongFaceLabels(mesh, faceLabels, LabelFans::Separate);
   const TriangleMesh& split = result.split.mesh;
 
-  // Charts in increasing label order, each with its faces in mesh order.
-  std::vector<int> labels = faceLabels;
-  std::sort(labels.begin(), labels.end());
-  labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
+  // Charts: the connected pieces, in increasing label order, then piece order; faces in mesh order.
+  std::vector<std::pair<int, int>> pieces; // (label, component)
+  for (int f = 0; f < split.faceCount(); ++f)
+  {
+    pieces.emplace_back(faceLabels[static_cast<std::size_t>(f)], split.faceComponent(f));
+  }
+  std::sort(pieces.begin(), pieces.end());
+  pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
+  std::vector<int> labels(pieces.size());
+  std::vector<int> componentChart(static_cast<std::size_t>(split.componentCount()));
+  for (std::size_t c = 0; c < pieces.size(); ++c)
+  {
+    labels[c] = pieces[c].first;
+    componentChart[static_cast<std::size_t>(pieces[c].second)] = static_cast<int>(c);
+  }
   std::vector<int> faceChart(faceLabels.size());
   std::vector<std::vector<int>> chartFaces(labels.size());
-  for (std::size_t f = 0; f < faceLabels.size(); ++f)
+  for (int f = 0; f < split.faceCount(); ++f)
   {
-    faceChart[f] = static_cast<int>(std::lower_bound(labels.begin(), labels.end(), faceLabels[f]) - labels.begin());
-    chartFaces[static_cast<std::size_t>(faceChart[f])].push_back(static_cast<int>(f));
+    faceChart[static_cast<std::size_t>(f)] = componentChart[static_cast<std::size_t>(split.faceComponent(f))];
+    chartFaces[static_cast<std::size_t>(faceChart[static_cast<std::size_t>(f)])].push_back(f);
   }
+  // "chart 3", or "chart 3 (piece 2 of 4)" for a label in several pieces.
+  auto chartName = [&](std::size_t c) {
+    const auto first = std::lower_bound(labels.begin(), labels.end(), labels[c]);
+    const auto last = std::upper_bound(labels.begin(), labels.end(), labels[c]);
+    std::string name = "chart " + std::to_string(labels[c]);
+    if (last - first > 1)
+    {
+      name += " (piece " + std::to_string(labels.begin() + static_cast<long>(c) - first + 1) + " of " +
+        std::to_string(last - first) + ")";
+    }
+    return name;
+  };
 
   // Each chart as its own mesh (vertices in split-mesh order), checked before any is solved.
   std::vector<int> localIndex(static_cast<std::size_t>(split.vertexCount()), -1);
@@ -500,7 +616,7 @@ ChartParameterizationResult parameterizeCharts(
     const std::string problem = chartTopologyProblem(charts[c]);
     if (!problem.empty())
     {
-      problems += (problems.empty() ? "" : "; ") + std::string("chart ") + std::to_string(labels[c]) + ": " + problem;
+      problems += (problems.empty() ? "" : "; ") + chartName(c) + ": " + problem;
     }
   }
   if (!problems.empty())
@@ -528,7 +644,7 @@ ChartParameterizationResult parameterizeCharts(
     }
     if (!(std::abs(areaUV) > 0.0))
     {
-      throw Error("the flattened chart " + std::to_string(labels[c]) + " has no area");
+      throw Error("the flattened " + chartName(c) + " has no area");
     }
     // The conformal energy prefers the orientation of the triangles; a mirrored result is turned back.
     const double mirror = areaUV < 0.0 ? -1.0 : 1.0;

@@ -14,12 +14,16 @@ namespace kerf
 
 using Vector2 = Eigen::Vector2d;
 
-/// The sparse solver of the LSCM systems (both exact; CHOLMOD is the faster, see
-/// Documentation/filters/ChartParameterization.md).
+/// How the LSCM system is solved (both exact; timings in Documentation/filters/ChartParameterization.md).
 enum class ChartSolver
 {
-  CHOLMOD,       ///< kerf::SparseCholesky (Eigen's SimplicialLDLT when built without CHOLMOD)
-  SimplicialLDLT ///< Eigen's SimplicialLDLT
+  /// The energy as a Hermitian form in z = u + i v: n complex unknowns with the Laplacian's
+  /// pattern, Eigen's SimplicialLDLT.
+  ComplexLDLT,
+  /// The real form in (u, v): 2n unknowns, kerf::SparseCholesky (CHOLMOD, supernodal).
+  RealCHOLMOD,
+  /// The real form with Eigen's SimplicialLDLT.
+  RealLDLT
 };
 
 /// Parameters of parameterizeCharts.
@@ -28,7 +32,7 @@ struct ChartParameterizationOptions
   /// Gap left between charts and between a chart and the border of the unit square, as a
   /// fraction of the square's side, in [0, 0.25]. Default 0.01.
   double margin = 0.01;
-  ChartSolver solver = ChartSolver::CHOLMOD;
+  ChartSolver solver = ChartSolver::ComplexLDLT;
   /// Side, in texels, of the grid on which countChartOverlaps samples the layout. Default 1024.
   int overlapResolution = 1024;
 };
@@ -59,10 +63,10 @@ struct DistortionSummary
   double area = 0.0; ///< 3D area of the triangles summarized
 };
 
-/// One chart of the result.
+/// One chart of the result: a connected piece of the faces of one label.
 struct ChartSummary
 {
-  int label = 0;
+  int label = 0; ///< a label whose faces form several pieces has one chart per piece
   int faceCount = 0;
   int vertexCount = 0;
   DistortionSummary distortion;
@@ -75,7 +79,7 @@ struct ChartParameterizationResult
   SplitMesh split;                   ///< the surface cut open along the chart borders
   std::vector<Vector2> uv;           ///< per vertex of split.mesh, inside [margin, 1 - margin]^2
   std::vector<FaceDistortion> faces; ///< per face of split.mesh
-  std::vector<ChartSummary> charts;  ///< in increasing label order
+  std::vector<ChartSummary> charts;  ///< in increasing label order, then piece order
   DistortionSummary distortion;      ///< all charts
   int overlappingChartPairs = 0;     ///< countChartOverlaps of the packed layout
   double texelScale = 0.0;           ///< texture length per unit of 3D length, equal for every chart
@@ -90,7 +94,7 @@ std::string chartTopologyProblem(const TriangleMesh& chart);
 /// E = E_Dirichlet - A(u, v) (Mullen et al. 2008, section 3), with the two boundary vertices farthest apart (two
 /// sweeps) pinned at (0, 0) and (d, 0), d their 3D distance. Returns one point per vertex. Throws
 /// kerf::Error for a chart that is not a disk or a system the solver cannot factor.
-std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::CHOLMOD);
+std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexLDLT);
 
 /// Distortion of the affine map from triangle (p0, p1, p2) to (t0, t1, t2): the singular values
 /// s1 >= s2 of its Jacobian.
@@ -118,11 +122,14 @@ std::vector<Vector2> packBoxes(const std::vector<Vector2>& sizes, double margin,
 int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangle>& triangles,
   const std::vector<int>& faceChart, int resolution);
 
-/// Cuts the mesh open along the borders of faceLabels (splitAlongFaceLabels), flattens each
-/// label's chart with leastSquaresConformalMap, scales each so its texture area equals its 3D
+/// Cuts the mesh open along the borders of faceLabels and at pinched vertices
+/// (splitAlongFaceLabels with LabelFans::Separate); each connected piece of a label is a chart
+/// (a label in several pieces gives several charts). Flattens each chart with
+/// leastSquaresConformalMap, scales each so its texture area equals its 3D
 /// area, measures the distortion, turns each chart to its minimal bounding box and packs them
 /// into the unit square with one scale for all (equal texel density). Throws kerf::Error listing
-/// every chart that is not a disk (by label, with what it is), for a label count other than the
+/// every chart that is not a disk (by label, and piece if the label has several, with what it
+/// is: boundary loops and genus, non-manifold edges, zero-area triangles), for a label count other than the
 /// face count, an empty mesh or a margin outside [0, 0.25].
 ChartParameterizationResult parameterizeCharts(
   const TriangleMesh& mesh, const std::vector<int>& faceLabels, const ChartParameterizationOptions& options = {});
