@@ -359,7 +359,7 @@ FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector
   const double s1 = Q + R;
   const double s2 = std::abs(Q - R);
   FaceDistortion distortion;
-  distortion.stretch = std::sqrt(0.5 * (s1 * s1 + s2 * s2)); // Sander et al. 2001, Eq. 3
+  distortion.stretch = std::sqrt(0.5 * (s1 * s1 + s2 * s2)); // Sander et al. 2001, section 3
   distortion.shear = s2 > 0.0 ? s1 / s2 : std::numeric_limits<double>::infinity();
   // The inverse map's singular values are 1 / s2 and 1 / s1.
   distortion.inverseStretch = s2 > 0.0 ? std::sqrt(0.5 * (1.0 / (s1 * s1) + 1.0 / (s2 * s2))) : std::numeric_limits<double>::infinity();

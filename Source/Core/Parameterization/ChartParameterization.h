@@ -40,10 +40,10 @@ struct ChartParameterizationOptions
 /// Distortion of the map from a triangle to its texture image.
 struct FaceDistortion
 {
-  double stretch = 1.0; ///< sqrt((s1^2 + s2^2) / 2) (Sander et al. 2001, Eq. 3)
+  double stretch = 1.0; ///< sqrt((s1^2 + s2^2) / 2) (Sander et al. 2001, section 3)
   double shear = 1.0;   ///< s1 / s2 (infinite for a triangle collapsed in the texture)
   /// sqrt((1 / s1^2 + 1 / s2^2) / 2): the stretch of the inverse map, from the texture to the
-  /// surface, which Sander et al. 2001 (Eq. 3) average (infinite for a collapsed triangle)
+  /// surface, which Sander et al. 2001 (section 3) average (infinite for a collapsed triangle)
   double inverseStretch = 1.0;
   bool flipped = false; ///< the texture image has the opposite orientation
 };
