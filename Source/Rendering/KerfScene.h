@@ -64,11 +64,11 @@ struct SceneOptions
   double zoom = 1.25;
   /// For categorical cell colouring: draw the boundaries between differently labelled cells.
   bool outlineSegments = true;
+  /// Render offscreen (no window appears).
+  bool offscreen = true;
   /// If > 0: the surface is textured with a checkerboard of this many squares per side of the
   /// unit texture square, through its texture coordinates (an error if it has none).
   int checkerboardSquares = 0;
-  /// Render offscreen (no window appears).
-  bool offscreen = true;
 };
 
 /// Builds and renders the scene. Returns nullptr and sets `error` if the colour or direction

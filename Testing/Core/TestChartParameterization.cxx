@@ -18,18 +18,6 @@ std::vector<int> oneLabel(const TriangleMesh& mesh, int label = 0)
   return std::vector<int>(static_cast<std::size_t>(mesh.faceCount()), label);
 }
 
-// Label of each face by the octant of its centroid.
-std::vector<int> octantLabels(const TriangleMesh& mesh)
-{
-  std::vector<int> labels;
-  for (const Triangle& t : mesh.triangles())
-  {
-    const Vector3 c = mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2]);
-    labels.push_back((c.x() > 0 ? 1 : 0) + (c.y() > 0 ? 2 : 0) + (c.z() > 0 ? 4 : 0));
-  }
-  return labels;
-}
-
 void expectInsideSquare(const ChartParameterizationResult& result, double margin)
 {
   for (const Vector2& p : result.uv)

@@ -19,18 +19,6 @@ double triangleArea(const TriangleMesh& mesh, int f)
   return 0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
 }
 
-// Octant of each face's centroid: 8 labels on a sphere.
-std::vector<int> octantLabels(const TriangleMesh& mesh)
-{
-  std::vector<int> labels;
-  for (const Triangle& t : mesh.triangles())
-  {
-    const Vector3 c = mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2]);
-    labels.push_back((c.x() > 0 ? 1 : 0) + (c.y() > 0 ? 2 : 0) + (c.z() > 0 ? 4 : 0));
-  }
-  return labels;
-}
-
 TEST(SplitAlongFaceLabels, EachLabelIsOnePieceWithTheSameFacesAndArea)
 {
   const TriangleMesh sphere = makeIcosphere(1.0, 3);

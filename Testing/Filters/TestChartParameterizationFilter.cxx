@@ -32,17 +32,6 @@ vtkSmartPointer<vtkPolyData> labelled(const kerf::TriangleMesh& mesh, const std:
   return surface;
 }
 
-std::vector<int> octants(const kerf::TriangleMesh& mesh)
-{
-  std::vector<int> labels;
-  for (const kerf::Triangle& t : mesh.triangles())
-  {
-    const kerf::Vector3 c = mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2]);
-    labels.push_back((c.x() > 0 ? 1 : 0) + (c.y() > 0 ? 2 : 0) + (c.z() > 0 ? 4 : 0));
-  }
-  return labels;
-}
-
 double fieldValue(vtkPolyData* data, const char* name)
 {
   vtkDataArray* array = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
@@ -83,7 +72,7 @@ bool segmentsMatchTheCore()
 {
   bool ok = true;
   const kerf::TriangleMesh sphere = kerf::makeIcosphere(1.0, 3);
-  const std::vector<int> labels = octants(sphere);
+  const std::vector<int> labels = kerf::octantLabels(sphere);
   vtkSmartPointer<vtkPolyData> input = labelled(sphere, labels, "Segment");
   vtkNew<vtkChartParameterization> filter;
   filter->SetInputData(input);

@@ -19,10 +19,9 @@ int TestChartParameterizationImage(int argc, char* argv[])
   vtkSmartPointer<vtkPolyData> surface = kerf::test::ToPolyData(sphere);
   vtkNew<vtkIntArray> charts;
   charts->SetName("Chart");
-  for (const kerf::Triangle& t : sphere.triangles())
+  for (int label : kerf::octantLabels(sphere))
   {
-    const kerf::Vector3 c = sphere.point(t[0]) + sphere.point(t[1]) + sphere.point(t[2]);
-    charts->InsertNextValue((c.x() > 0 ? 1 : 0) + (c.y() > 0 ? 2 : 0) + (c.z() > 0 ? 4 : 0));
+    charts->InsertNextValue(label);
   }
   surface->GetCellData()->AddArray(charts);
   vtkNew<vtkChartParameterization> atlas;

@@ -190,6 +190,18 @@ TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outer
   return TriangleMesh(std::move(points), grid.triangles());
 }
 
+std::vector<int> octantLabels(const TriangleMesh& mesh)
+{
+  std::vector<int> labels;
+  labels.reserve(static_cast<std::size_t>(mesh.faceCount()));
+  for (const Triangle& t : mesh.triangles())
+  {
+    const Vector3 c = mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2]);
+    labels.push_back((c.x() > 0 ? 1 : 0) + (c.y() > 0 ? 2 : 0) + (c.z() > 0 ? 4 : 0));
+  }
+  return labels;
+}
+
 TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed)
 {
   const TriangleMesh grid = makeGrid(cells, cells, cells, cells);

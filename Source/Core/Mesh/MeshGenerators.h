@@ -3,6 +3,8 @@
 
 #include "Mesh/TriangleMesh.h"
 
+#include <vector>
+
 namespace kerf
 {
 
@@ -40,6 +42,10 @@ TriangleMesh makeSlitCylinder(double radius, double height, int around, int ring
 /// apex span a plane): it unrolls without distortion.
 TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outerDistance, double angle,
   int columns, int rows);
+
+/// Per triangle, the octant of its centroid (1 if x > 0, plus 2 if y > 0, plus 4 if z > 0): chart
+/// labels for tests, eight disks on a sphere centred at the origin.
+std::vector<int> octantLabels(const TriangleMesh& mesh);
 
 /// Two lobes joined by a neck: an icosphere (`levels` subdivisions) stretched along z to
 /// [-halfLength, halfLength], with radius `lobeRadii[0]` below the neck and `lobeRadii[1]` above

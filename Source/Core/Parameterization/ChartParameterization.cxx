@@ -26,6 +26,25 @@ double cross2(const Vector2& a, const Vector2& b)
   return a.x() * b.y() - a.y() * b.x();
 }
 
+// Calls edge(i, j, w) for each triangle's edge i-j with its share w = cot(angle opposite) / 2 of
+// the cotangent Laplacian's weight.
+template <typename EdgeFunction>
+void forEachCotangentWeight(const TriangleMesh& chart, EdgeFunction edge)
+{
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = t[static_cast<std::size_t>((k + 1) % 3)];
+      const int j = t[static_cast<std::size_t>((k + 2) % 3)];
+      const Vector3 a = chart.point(i) - chart.point(t[static_cast<std::size_t>(k)]);
+      const Vector3 b = chart.point(j) - chart.point(t[static_cast<std::size_t>(k)]);
+      edge(i, j, 0.5 * a.dot(b) / a.cross(b).norm());
+    }
+  }
+}
+
 // The boundary vertex farthest from `from` in 3D (the first of equals).
 int farthestBoundaryVertex(const TriangleMesh& chart, const std::vector<int>& loop, int from)
 {
@@ -192,21 +211,11 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
       rhs[fb] -= std::conj(value) * pinned[static_cast<std::size_t>(a)];
     }
   };
-  for (int f = 0; f < chart.faceCount(); ++f)
-  {
-    const Triangle& t = chart.triangle(f);
-    for (int k = 0; k < 3; ++k)
-    {
-      const int i = t[static_cast<std::size_t>((k + 1) % 3)];
-      const int j = t[static_cast<std::size_t>((k + 2) % 3)];
-      const Vector3 a = chart.point(i) - chart.point(t[static_cast<std::size_t>(k)]);
-      const Vector3 b = chart.point(j) - chart.point(t[static_cast<std::size_t>(k)]);
-      const double weight = 0.5 * a.dot(b) / a.cross(b).norm();
-      add(i, i, weight);
-      add(j, j, weight);
-      add(i, j, -weight);
-    }
-  }
+  forEachCotangentWeight(chart, [&](int i, int j, double weight) {
+    add(i, i, weight);
+    add(j, j, weight);
+    add(i, j, -weight);
+  });
   // C_ij = -1/2 for a boundary edge i -> j, so H_ij = -i C_ij = i / 2.
   for (std::size_t e = 0; e < loop.size(); ++e)
   {
@@ -291,24 +300,14 @@ std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSo
     }
   };
   // Dirichlet energy: the cotangent Laplacian on u and on v.
-  for (int f = 0; f < chart.faceCount(); ++f)
-  {
-    const Triangle& t = chart.triangle(f);
-    for (int k = 0; k < 3; ++k)
+  forEachCotangentWeight(chart, [&](int i, int j, double weight) {
+    for (int c = 0; c < 2; ++c)
     {
-      const int i = t[static_cast<std::size_t>((k + 1) % 3)];
-      const int j = t[static_cast<std::size_t>((k + 2) % 3)];
-      const Vector3 a = chart.point(i) - chart.point(t[static_cast<std::size_t>(k)]);
-      const Vector3 b = chart.point(j) - chart.point(t[static_cast<std::size_t>(k)]);
-      const double weight = 0.5 * a.dot(b) / a.cross(b).norm();
-      for (int c = 0; c < 2; ++c)
-      {
-        add(2 * i + c, 2 * i + c, weight);
-        add(2 * j + c, 2 * j + c, weight);
-        add(2 * i + c, 2 * j + c, -weight);
-      }
+      add(2 * i + c, 2 * i + c, weight);
+      add(2 * j + c, 2 * j + c, weight);
+      add(2 * i + c, 2 * j + c, -weight);
     }
-  }
+  });
   // Minus twice the signed area's matrix: A = sum over boundary edges i -> j of (u_i v_j - u_j v_i) / 2.
   for (std::size_t e = 0; e < loop.size(); ++e)
   {
