@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <new>
 
 namespace kerf
@@ -203,6 +204,25 @@ std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
   return checkedValues(array,
     "the " + std::string(kind) + " array '" + (array->GetName() ? array->GetName() : "") + "' of " + owner + where,
     expected, kind);
+}
+
+std::vector<int> ReadTriangleLabels(vtkAlgorithm* algorithm, int index,
+  const SurfaceInput& surface, vtkIdType cells, const std::string& owner)
+{
+  const std::vector<double> perCell = ReadInputArray(algorithm, index, cells, owner);
+  std::vector<int> labels(perCell.size());
+  for (std::size_t c = 0; c < perCell.size(); ++c)
+  {
+    const double value = perCell[c];
+    if (!std::isfinite(value) || value != std::floor(value) || value < -1.0 ||
+      value > std::numeric_limits<int>::max())
+    {
+      throw Error("cell " + std::to_string(c) + " of " + owner + " holds " + std::to_string(value) +
+        ", which is not a label (an integer >= -1)");
+    }
+    labels[c] = static_cast<int>(value);
+  }
+  return surface.CellValuesToTriangles(labels);
 }
 
 std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner)

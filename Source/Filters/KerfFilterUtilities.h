@@ -63,6 +63,12 @@ double RelativeDistance(double fraction, double diagonal, const char* parameter)
 std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
   vtkIdType expected, const std::string& owner);
 
+/// Per-triangle labels from the input array `index`, a cell array of `cells` integer labels >= -1
+/// (each polygon's label on each of its triangles); throws kerf::Error as ReadInputArray does, and
+/// naming the first cell that holds anything else.
+std::vector<int> ReadTriangleLabels(vtkAlgorithm* algorithm, int index,
+  const SurfaceInput& surface, vtkIdType cells, const std::string& owner);
+
 /// The one-component point array `name` of a point set, one value per point; throws kerf::Error
 /// naming it and its owner when it is missing or has another shape. (Arrays of a filter's first
 /// input are selected with SetInputArrayToProcess and read with ReadInputArray; arrays of other

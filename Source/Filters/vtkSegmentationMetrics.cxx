@@ -31,27 +31,6 @@ struct vtkSegmentationMetrics::Internals
 
 namespace
 {
-// Per-triangle labels from the input array `index` (a per-cell array of labels).
-std::vector<int> triangleLabels(vtkAlgorithm* algorithm, int index,
-  const kerf::SurfaceInput& surface, vtkIdType cells, const char* role)
-{
-  const std::vector<double> perCell =
-    kerf::ReadInputArray(algorithm, index, cells, std::string("the ") + role + " segmentation");
-  std::vector<int> labels(perCell.size());
-  for (std::size_t c = 0; c < perCell.size(); ++c)
-  {
-    const double value = perCell[c];
-    if (!std::isfinite(value) || value != std::floor(value) || value < -1.0 ||
-      value > std::numeric_limits<int>::max())
-    {
-      throw kerf::Error("cell " + std::to_string(c) + " of the " + role + " segmentation holds " +
-        std::to_string(value) + ", which is not a label (an integer >= -1)");
-    }
-    labels[c] = static_cast<int>(value);
-  }
-  return surface.CellValuesToTriangles(labels);
-}
-
 bool sameMesh(vtkPolyData* a, vtkPolyData* b)
 {
   if (a->GetNumberOfPoints() != b->GetNumberOfPoints() || a->GetNumberOfCells() != b->GetNumberOfCells())
@@ -133,9 +112,9 @@ int vtkSegmentationMetrics::RequestData(
     kerf::SurfaceInput& surface = this->State->surface;
     kerf::LoadSurface(surface, mesh, requirements);
     const std::vector<int> evaluated =
-      triangleLabels(this, 0, surface, mesh->GetNumberOfCells(), "evaluated");
+      kerf::ReadTriangleLabels(this, 0, surface, mesh->GetNumberOfCells(), "the evaluated segmentation");
     const std::vector<int> referenceLabels =
-      triangleLabels(this, 1, surface, mesh->GetNumberOfCells(), "reference");
+      kerf::ReadTriangleLabels(this, 1, surface, mesh->GetNumberOfCells(), "the reference segmentation");
     this->UpdateProgress(0.3);
 
     const kerf::SegmentationEvaluator evaluator(surface.Mesh());

@@ -12,6 +12,7 @@
 #include <vtkDataObject.h>
 #include <vtkDiscretizableColorTransferFunction.h>
 #include <vtkIdList.h>
+#include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -25,6 +26,7 @@
 #include <vtkScalarBarActor.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTexture.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
@@ -134,6 +136,30 @@ vtkSmartPointer<vtkPolyData> directionStrokes(vtkPolyData* surface, vtkDataArray
 
 namespace
 {
+// A texture of squares x squares dark and light squares over the unit square, 16 texels each.
+vtkSmartPointer<vtkTexture> checkerboardTexture(int squares)
+{
+  const int side = 16 * squares;
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(side, side, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int y = 0; y < side; ++y)
+  {
+    for (int x = 0; x < side; ++x)
+    {
+      const bool dark = ((x / 16) + (y / 16)) % 2 == 0;
+      unsigned char* texel = static_cast<unsigned char*>(image->GetScalarPointer(x, y, 0));
+      texel[0] = dark ? 40 : 235;
+      texel[1] = dark ? 60 : 225;
+      texel[2] = dark ? 110 : 200;
+    }
+  }
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOff();
+  return texture;
+}
+
 // A renderer showing the surface as the options say, or nullptr and `error`.
 vtkSmartPointer<vtkRenderer> makeRenderer(
   vtkPolyData* surface, const SceneOptions& options, std::string& error)
@@ -319,6 +345,16 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
   actor->GetProperty()->SetColor(0.85, 0.85, 0.82);
   actor->GetProperty()->SetSpecular(0.15);
   actor->GetProperty()->SetSpecularPower(20.0);
+  if (options.checkerboardSquares > 0)
+  {
+    if (!surface->GetPointData()->GetTCoords())
+    {
+      error = "the surface has no texture coordinates for the checkerboard";
+      return nullptr;
+    }
+    actor->SetTexture(checkerboardTexture(options.checkerboardSquares));
+    actor->GetProperty()->SetColor(1.0, 1.0, 1.0);
+  }
   renderer->AddActor(actor);
 
   if (!options.directionArray.empty())
@@ -391,6 +427,31 @@ vtkSmartPointer<vtkRenderWindow> makeWindow(const SceneOptions& options)
   window->SetMultiSamples(0);
   return window;
 }
+// Two views in one window, each half of the left options' size, optionally with one camera.
+vtkSmartPointer<vtkRenderWindow> renderTwoViews(vtkPolyData* leftSurface, const SceneOptions& left,
+  vtkPolyData* rightSurface, const SceneOptions& right, bool shareCamera, std::string& error)
+{
+  SceneOptions leftHalf = left, rightHalf = right;
+  leftHalf.width = rightHalf.width = left.width / 2;
+  leftHalf.height = rightHalf.height = left.height;
+  vtkSmartPointer<vtkRenderer> a = makeRenderer(leftSurface, leftHalf, error);
+  vtkSmartPointer<vtkRenderer> b = a ? makeRenderer(rightSurface, rightHalf, error) : nullptr;
+  if (!a || !b)
+  {
+    return nullptr;
+  }
+  a->SetViewport(0.0, 0.0, 0.5, 1.0);
+  b->SetViewport(0.5, 0.0, 1.0, 1.0);
+  if (shareCamera)
+  {
+    b->SetActiveCamera(a->GetActiveCamera());
+  }
+  vtkSmartPointer<vtkRenderWindow> window = makeWindow(left);
+  window->AddRenderer(a);
+  window->AddRenderer(b);
+  window->Render();
+  return window;
+}
 } // namespace
 
 vtkSmartPointer<vtkRenderWindow> RenderScene(
@@ -410,23 +471,13 @@ vtkSmartPointer<vtkRenderWindow> RenderScene(
 vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
   const SceneOptions& right, std::string& error)
 {
-  SceneOptions leftHalf = left, rightHalf = right;
-  leftHalf.width = rightHalf.width = left.width / 2;
-  leftHalf.height = rightHalf.height = left.height;
-  vtkSmartPointer<vtkRenderer> a = makeRenderer(surface, leftHalf, error);
-  vtkSmartPointer<vtkRenderer> b = a ? makeRenderer(surface, rightHalf, error) : nullptr;
-  if (!a || !b)
-  {
-    return nullptr;
-  }
-  a->SetViewport(0.0, 0.0, 0.5, 1.0);
-  b->SetViewport(0.5, 0.0, 1.0, 1.0);
-  b->SetActiveCamera(a->GetActiveCamera());
-  vtkSmartPointer<vtkRenderWindow> window = makeWindow(left);
-  window->AddRenderer(a);
-  window->AddRenderer(b);
-  window->Render();
-  return window;
+  return renderTwoViews(surface, left, surface, right, true, error);
+}
+
+vtkSmartPointer<vtkRenderWindow> RenderPair(vtkPolyData* leftSurface, const SceneOptions& left,
+  vtkPolyData* rightSurface, const SceneOptions& right, std::string& error)
+{
+  return renderTwoViews(leftSurface, left, rightSurface, right, false, error);
 }
 
 vtkSmartPointer<vtkRenderWindow> RenderCutScene(vtkPolyData* labelledSurface, vtkPolyData* stroke,

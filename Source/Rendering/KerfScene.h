@@ -66,6 +66,9 @@ struct SceneOptions
   bool outlineSegments = true;
   /// Render offscreen (no window appears).
   bool offscreen = true;
+  /// If > 0: the surface is textured with a checkerboard of this many squares per side of the
+  /// unit texture square, through its texture coordinates (an error if it has none).
+  int checkerboardSquares = 0;
 };
 
 /// Builds and renders the scene. Returns nullptr and sets `error` if the colour or direction
@@ -78,6 +81,10 @@ KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderScene(
 KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
   const SceneOptions& right, std::string& error);
 
+/// Two surfaces side by side, each with its own camera (a textured surface beside its texture
+/// layout, for example). The window takes the left options' size; each view gets half.
+KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderPair(vtkPolyData* leftSurface, const SceneOptions& left,
+  vtkPolyData* rightSurface, const SceneOptions& right, std::string& error);
 /// A harmonic cut in two views: on the left the field "HarmonicField" with isolines, the stroke
 /// (green) and its constraint points (yellow); on the right the cell array "Segment" and the cut
 /// curve (red). 1200 x 600 pixels.

@@ -77,6 +77,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterGeodesicsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterGeometrySeamsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterCurveExportBenchmarks();
+  kerf::benchmarks::RegisterChartParameterizationBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

@@ -48,6 +48,7 @@ void RegisterMeshReaderBenchmarks(bool useSizeMinimumTimes);
 void RegisterCurveExportBenchmarks();
 void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes);
+void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks
 } // namespace kerf

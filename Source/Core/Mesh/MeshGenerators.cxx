@@ -201,6 +201,44 @@ TriangleMesh makeGrid(double width, double height, int columns, int rows)
   return TriangleMesh(std::move(points), std::move(triangles));
 }
 
+TriangleMesh makeSlitCylinder(double radius, double height, int around, int rings)
+{
+  const TriangleMesh grid = makeGrid(2.0 * M_PI * radius, height, around, rings);
+  std::vector<Vector3> points = grid.points();
+  for (Vector3& p : points)
+  {
+    const double angle = p.x() / radius;
+    p = Vector3(radius * std::cos(angle), radius * std::sin(angle), p.y());
+  }
+  return TriangleMesh(std::move(points), grid.triangles());
+}
+
+TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outerDistance, double angle,
+  int columns, int rows)
+{
+  const TriangleMesh grid = makeGrid(outerDistance - innerDistance, angle, columns, rows);
+  std::vector<Vector3> points = grid.points();
+  for (Vector3& p : points)
+  {
+    const double distance = innerDistance + p.x();
+    const double around = p.y();
+    p = distance * Vector3(std::sin(halfAngle) * std::cos(around), std::sin(halfAngle) * std::sin(around), std::cos(halfAngle));
+  }
+  return TriangleMesh(std::move(points), grid.triangles());
+}
+
+std::vector<int> octantLabels(const TriangleMesh& mesh)
+{
+  std::vector<int> labels;
+  labels.reserve(static_cast<std::size_t>(mesh.faceCount()));
+  for (const Triangle& t : mesh.triangles())
+  {
+    const Vector3 c = mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2]);
+    labels.push_back((c.x() > 0 ? 1 : 0) + (c.y() > 0 ? 2 : 0) + (c.z() > 0 ? 4 : 0));
+  }
+  return labels;
+}
+
 TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed)
 {
   const TriangleMesh grid = makeGrid(cells, cells, cells, cells);

@@ -40,6 +40,23 @@ TriangleMesh makeGrid(double width, double height, int columns, int rows);
 /// Laplacian is not linearly precise, for the intrinsic Delaunay weighting's tests.
 TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed);
 
+/// A cylinder cut open along a line: makeGrid(2 pi radius, height, around, rings) wrapped around
+/// the z axis (grid point (x, y) to angle x / radius, height y), its first and last columns at the
+/// same positions but distinct vertices. A disk whose quads are planar rectangles: it unrolls
+/// onto the grid without distortion.
+TriangleMesh makeSlitCylinder(double radius, double height, int around, int rings);
+
+/// A sector of the cone with apex at the origin, axis z and half-angle `halfAngle`: makeGrid over
+/// distances [innerDistance, outerDistance] from the apex and angles [0, angle] about z,
+/// `columns` x `rows` cells. A disk whose quads are planar trapezoids (two rulings through the
+/// apex span a plane): it unrolls without distortion.
+TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outerDistance, double angle,
+  int columns, int rows);
+
+/// Per triangle, the octant of its centroid (1 if x > 0, plus 2 if y > 0, plus 4 if z > 0): chart
+/// labels for tests, eight disks on a sphere centred at the origin.
+std::vector<int> octantLabels(const TriangleMesh& mesh);
+
 /// Two lobes joined by a neck: an icosphere (`levels` subdivisions) stretched along z to
 /// [-halfLength, halfLength], with radius `lobeRadii[0]` below the neck and `lobeRadii[1]` above
 /// it (blended smoothly), pinched by the factor (1 - neckDepth) around z = neckHeight. A surface

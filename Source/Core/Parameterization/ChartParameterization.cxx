@@ -1,0 +1,704 @@
+// parameterizeCharts: split, disk check, LSCM, distortion, minimal boxes, shelf packing, overlap count.
+#include "Parameterization/ChartParameterization.h"
+
+#include "Error.h"
+#include "Harmonic/SparseCholesky.h"
+#include "Mesh/MeshValidation.h"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <numeric>
+#include <set>
+#include <utility>
+
+namespace kerf
+{
+namespace
+{
+
+double cross2(const Vector2& a, const Vector2& b)
+{
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+// Calls edge(i, j, w) for each triangle's edge i-j with its share w = cot(angle opposite) / 2 of
+// the cotangent Laplacian's weight.
+template <typename EdgeFunction>
+void forEachCotangentWeight(const TriangleMesh& chart, EdgeFunction edge)
+{
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int i = t[static_cast<std::size_t>((k + 1) % 3)];
+      const int j = t[static_cast<std::size_t>((k + 2) % 3)];
+      const Vector3 a = chart.point(i) - chart.point(t[static_cast<std::size_t>(k)]);
+      const Vector3 b = chart.point(j) - chart.point(t[static_cast<std::size_t>(k)]);
+      edge(i, j, 0.5 * a.dot(b) / a.cross(b).norm());
+    }
+  }
+}
+
+// The boundary vertex farthest from `from` in 3D (the first of equals).
+int farthestBoundaryVertex(const TriangleMesh& chart, const std::vector<int>& loop, int from)
+{
+  int best = loop.front();
+  double bestDistance = -1.0;
+  for (int v : loop)
+  {
+    const double distance = (chart.point(v) - chart.point(from)).squaredNorm();
+    if (distance > bestDistance)
+    {
+      bestDistance = distance;
+      best = v;
+    }
+  }
+  return best;
+}
+
+Eigen::VectorXd solveSystem(const Eigen::SparseMatrix<double>& lower, const Eigen::VectorXd& rhs, ChartSolver solver)
+{
+  if (solver == ChartSolver::RealCHOLMOD)
+  {
+    SparseCholesky cholesky;
+    if (!cholesky.factor(lower))
+    {
+      throw Error("the conformal map's system is not positive definite");
+    }
+    return cholesky.solve(rhs);
+  }
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Lower> ldlt(lower);
+  if (ldlt.info() != Eigen::Success)
+  {
+    throw Error("the conformal map's system is not positive definite");
+  }
+  return ldlt.solve(rhs);
+}
+
+double signedArea(const Vector2& a, const Vector2& b, const Vector2& c)
+{
+  return 0.5 * cross2(b - a, c - a);
+}
+
+// Adds one face's distortion to a summary (means are finished by finishSummary).
+void accumulate(DistortionSummary& summary, const FaceDistortion& face, double area)
+{
+  summary.meanStretch += area * face.stretch;
+  summary.surfaceStretch += area * face.inverseStretch * face.inverseStretch;
+  summary.meanShear += area * face.shear;
+  summary.maxStretch = std::max(summary.maxStretch, face.stretch);
+  summary.maxShear = std::max(summary.maxShear, face.shear);
+  summary.flippedFaces += face.flipped ? 1 : 0;
+  summary.area += area;
+}
+
+void finishSummary(DistortionSummary& summary)
+{
+  if (summary.area > 0.0)
+  {
+    summary.meanStretch /= summary.area;
+    summary.surfaceStretch = std::sqrt(summary.surfaceStretch / summary.area); // Sander et al. 2001, section 3
+    summary.meanShear /= summary.area;
+  }
+}
+
+// Lays boxes on shelves in a square of side `side`; false if they do not fit.
+bool shelfPack(const std::vector<Vector2>& sizes, const std::vector<int>& order, double side, double gap,
+  std::vector<Vector2>& corners)
+{
+  double x = gap;
+  double y = gap;
+  double shelfHeight = 0.0;
+  for (int i : order)
+  {
+    const Vector2& size = sizes[static_cast<std::size_t>(i)];
+    if (x + size.x() + gap > side && x > gap)
+    {
+      y += shelfHeight + gap;
+      x = gap;
+      shelfHeight = 0.0;
+    }
+    if (x + size.x() + gap > side || y + size.y() + gap > side)
+    {
+      return false;
+    }
+    corners[static_cast<std::size_t>(i)] = Vector2(x, y);
+    x += size.x() + gap;
+    shelfHeight = std::max(shelfHeight, size.y());
+  }
+  return true;
+}
+
+} // namespace
+
+std::string chartTopologyProblem(const TriangleMesh& chart)
+{
+  if (chart.empty())
+  {
+    return "it has no triangle";
+  }
+  const MeshReport report = inspectMesh(chart);
+  if (report.zeroAreaFaces > 0)
+  {
+    return "it has " + std::to_string(report.zeroAreaFaces) + " zero-area triangles";
+  }
+  if (report.nonManifoldEdges > 0 || report.nonManifoldVertices > 0)
+  {
+    return "it is not manifold (" + std::to_string(report.nonManifoldEdges) + " non-manifold edges, " +
+      std::to_string(report.nonManifoldVertices) + " non-manifold vertices)";
+  }
+  if (report.inconsistentEdges > 0)
+  {
+    return "its triangles are not consistently oriented";
+  }
+  if (report.components != 1)
+  {
+    return "it has " + std::to_string(report.components) + " separate pieces";
+  }
+  const int loops = report.boundaryLoops;
+  const int genus = (2 - report.eulerCharacteristic - loops) / 2;
+  if (loops != 1 || genus != 0)
+  {
+    return "it has " + std::to_string(loops) + " boundary loops and genus " + std::to_string(genus) +
+      " (a disk has one boundary loop and genus 0)";
+  }
+  return {};
+}
+
+namespace
+{
+// The conformal energy as the Hermitian form z^H H z / 2 in z = u + i v: H = L - i C, L the
+// cotangent Laplacian and C the antisymmetric boundary term of the real form, so H has the
+// Laplacian's pattern and half the real form's unknowns.
+std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::vector<int>& loop, int pinA, int pinB, double pinDistance)
+{
+  using Complex = std::complex<double>;
+  const int n = chart.vertexCount();
+  std::vector<int> freeIndex(static_cast<std::size_t>(n), -1);
+  int freeCount = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    if (v != pinA && v != pinB)
+    {
+      freeIndex[static_cast<std::size_t>(v)] = freeCount++;
+    }
+  }
+  std::vector<Complex> pinned(static_cast<std::size_t>(n), Complex(0.0, 0.0));
+  pinned[static_cast<std::size_t>(pinB)] = Complex(pinDistance, 0.0);
+  std::vector<Eigen::Triplet<Complex>> triplets;
+  triplets.reserve(static_cast<std::size_t>(chart.faceCount()) * 6 + loop.size());
+  Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(freeCount);
+  // Entry (a, b) of H, and (b, a) = conj(value) when a != b.
+  auto add = [&](int a, int b, Complex value) {
+    const int fa = freeIndex[static_cast<std::size_t>(a)];
+    const int fb = freeIndex[static_cast<std::size_t>(b)];
+    if (fa >= 0 && fb >= 0)
+    {
+      triplets.emplace_back(std::max(fa, fb), std::min(fa, fb), fa >= fb ? value : std::conj(value));
+    }
+    else if (fa >= 0)
+    {
+      rhs[fa] -= value * pinned[static_cast<std::size_t>(b)];
+    }
+    else if (fb >= 0 && a != b)
+    {
+      rhs[fb] -= std::conj(value) * pinned[static_cast<std::size_t>(a)];
+    }
+  };
+  forEachCotangentWeight(chart, [&](int i, int j, double weight) {
+    add(i, i, weight);
+    add(j, j, weight);
+    add(i, j, -weight);
+  });
+  // C_ij = -1/2 for a boundary edge i -> j, so H_ij = -i C_ij = i / 2.
+  for (std::size_t e = 0; e < loop.size(); ++e)
+  {
+    add(loop[e], loop[(e + 1) % loop.size()], Complex(0.0, 0.5));
+  }
+  Eigen::SparseMatrix<Complex> lower(freeCount, freeCount);
+  lower.setFromTriplets(triplets.begin(), triplets.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> ldlt(lower);
+  if (ldlt.info() != Eigen::Success)
+  {
+    throw Error("the conformal map's system is not positive definite");
+  }
+  const Eigen::VectorXcd solution = ldlt.solve(rhs);
+  std::vector<Vector2> uv(static_cast<std::size_t>(n));
+  for (int v = 0; v < n; ++v)
+  {
+    const int fv = freeIndex[static_cast<std::size_t>(v)];
+    const Complex z = fv < 0 ? pinned[static_cast<std::size_t>(v)] : solution[fv];
+    uv[static_cast<std::size_t>(v)] = Vector2(z.real(), z.imag());
+  }
+  return uv;
+}
+} // namespace
+
+std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver)
+{
+  const std::string problem = chartTopologyProblem(chart);
+  if (!problem.empty())
+  {
+    throw Error("the chart is not a disk: " + problem);
+  }
+  const int n = chart.vertexCount();
+  const std::vector<int>& loop = chart.boundaryLoops().front();
+  const int pinA = farthestBoundaryVertex(chart, loop, farthestBoundaryVertex(chart, loop, loop.front()));
+  const int pinB = farthestBoundaryVertex(chart, loop, pinA);
+  const double pinDistance = (chart.point(pinA) - chart.point(pinB)).norm();
+  if (solver == ChartSolver::ComplexLDLT)
+  {
+    std::vector<Vector2> uv = complexConformalMap(chart, loop, pinA, pinB, pinDistance);
+    for (std::size_t v = 0; v < uv.size(); ++v)
+    {
+      if (!uv[v].allFinite())
+      {
+        throw Error("the conformal map is not finite at vertex " + std::to_string(v) + " of the chart");
+      }
+    }
+    return uv;
+  }
+
+  // Unknowns u_i, v_i interleaved (index 2i, 2i+1) without the four pinned coordinates.
+  std::vector<int> freeIndex(2 * static_cast<std::size_t>(n), -1);
+  int freeCount = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    if (v != pinA && v != pinB)
+    {
+      freeIndex[2 * static_cast<std::size_t>(v)] = freeCount++;
+      freeIndex[2 * static_cast<std::size_t>(v) + 1] = freeCount++;
+    }
+  }
+  Eigen::VectorXd pinned = Eigen::VectorXd::Zero(2 * n);
+  pinned[2 * pinB] = pinDistance;
+
+  std::vector<Eigen::Triplet<double>> triplets;
+  triplets.reserve(static_cast<std::size_t>(chart.faceCount()) * 12 + loop.size() * 2);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(freeCount);
+  // Entry (a, b) of the symmetric 2n x 2n matrix Q of E = x^T Q x / 2, given once for a != b.
+  auto add = [&](int a, int b, double value) {
+    const int fa = freeIndex[static_cast<std::size_t>(a)];
+    const int fb = freeIndex[static_cast<std::size_t>(b)];
+    if (fa >= 0 && fb >= 0)
+    {
+      triplets.emplace_back(std::max(fa, fb), std::min(fa, fb), value);
+    }
+    else if (fa >= 0)
+    {
+      rhs[fa] -= value * pinned[b];
+    }
+    else if (fb >= 0 && a != b)
+    {
+      rhs[fb] -= value * pinned[a];
+    }
+  };
+  // Dirichlet energy: the cotangent Laplacian on u and on v.
+  forEachCotangentWeight(chart, [&](int i, int j, double weight) {
+    for (int c = 0; c < 2; ++c)
+    {
+      add(2 * i + c, 2 * i + c, weight);
+      add(2 * j + c, 2 * j + c, weight);
+      add(2 * i + c, 2 * j + c, -weight);
+    }
+  });
+  // Minus twice the signed area's matrix: A = sum over boundary edges i -> j of (u_i v_j - u_j v_i) / 2.
+  for (std::size_t e = 0; e < loop.size(); ++e)
+  {
+    const int i = loop[e];
+    const int j = loop[(e + 1) % loop.size()];
+    add(2 * i, 2 * j + 1, -0.5);
+    add(2 * j, 2 * i + 1, 0.5);
+  }
+  Eigen::SparseMatrix<double> lower(freeCount, freeCount);
+  lower.setFromTriplets(triplets.begin(), triplets.end());
+  const Eigen::VectorXd solution = solveSystem(lower, rhs, solver);
+
+  std::vector<Vector2> uv(static_cast<std::size_t>(n));
+  for (int v = 0; v < n; ++v)
+  {
+    const int fu = freeIndex[2 * static_cast<std::size_t>(v)];
+    uv[static_cast<std::size_t>(v)] = fu < 0 ? Vector2(pinned[2 * v], pinned[2 * v + 1]) : Vector2(solution[fu], solution[fu + 1]);
+    if (!uv[static_cast<std::size_t>(v)].allFinite())
+    {
+      throw Error("the conformal map is not finite at vertex " + std::to_string(v) + " of the chart");
+    }
+  }
+  return uv;
+}
+
+FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
+  const Vector2& t1, const Vector2& t2)
+{
+  // The triangle in an orthonormal frame of its plane, p0 at the origin and p1 on the x axis.
+  const Vector3 e1 = p1 - p0;
+  const Vector3 e2 = p2 - p0;
+  const double length = e1.norm();
+  const Vector3 x = e1 / length;
+  const Vector3 y = (e1.cross(e2)).cross(e1).normalized();
+  Eigen::Matrix2d local;
+  local << length, e2.dot(x), 0.0, e2.dot(y);
+  Eigen::Matrix2d image;
+  image.col(0) = t1 - t0;
+  image.col(1) = t2 - t0;
+  const Eigen::Matrix2d J = image * local.inverse();
+  // Singular values of a 2 x 2 matrix in closed form.
+  const double E = 0.5 * (J(0, 0) + J(1, 1));
+  const double F = 0.5 * (J(0, 0) - J(1, 1));
+  const double G = 0.5 * (J(1, 0) + J(0, 1));
+  const double H = 0.5 * (J(1, 0) - J(0, 1));
+  const double Q = std::hypot(E, H);
+  const double R = std::hypot(F, G);
+  const double s1 = Q + R;
+  const double s2 = std::abs(Q - R);
+  FaceDistortion distortion;
+  distortion.stretch = std::sqrt(0.5 * (s1 * s1 + s2 * s2)); // Sander et al. 2001, section 3
+  distortion.shear = s2 > 0.0 ? s1 / s2 : std::numeric_limits<double>::infinity();
+  // The inverse map's singular values are 1 / s2 and 1 / s1.
+  distortion.inverseStretch = s2 > 0.0 ? std::sqrt(0.5 * (1.0 / (s1 * s1) + 1.0 / (s2 * s2))) : std::numeric_limits<double>::infinity();
+  distortion.flipped = J.determinant() < 0.0;
+  return distortion;
+}
+
+std::vector<Vector2> convexHull(std::vector<Vector2> points)
+{
+  std::sort(points.begin(), points.end(), [](const Vector2& a, const Vector2& b) {
+    return a.y() < b.y() || (a.y() == b.y() && a.x() < b.x());
+  });
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() < 3)
+  {
+    return points;
+  }
+  // Monotone chain over the points sorted by (y, x): right chain upwards, left chain downwards.
+  std::vector<Vector2> hull(2 * points.size());
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    while (k >= 2 && cross2(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  for (std::size_t i = points.size() - 1, lower = k + 1; i-- > 0;)
+  {
+    while (k >= lower && cross2(hull[k - 1] - hull[k - 2], points[i] - hull[k - 2]) <= 0.0)
+    {
+      --k;
+    }
+    hull[k++] = points[i];
+  }
+  hull.resize(k - 1);
+  return hull;
+}
+
+double minimalBoundingBoxRotation(const std::vector<Vector2>& points)
+{
+  const std::vector<Vector2> hull = convexHull(points);
+  double bestAngle = 0.0;
+  double bestArea = std::numeric_limits<double>::infinity();
+  Vector2 bestSize(0.0, 0.0);
+  for (std::size_t e = 0; e < hull.size(); ++e)
+  {
+    const Vector2 edge = hull[(e + 1) % hull.size()] - hull[e];
+    if (edge.squaredNorm() == 0.0)
+    {
+      continue;
+    }
+    const Vector2 along = edge.normalized();
+    const Vector2 across(-along.y(), along.x());
+    double minAlong = std::numeric_limits<double>::infinity(), maxAlong = -minAlong;
+    double minAcross = minAlong, maxAcross = -minAlong;
+    for (const Vector2& p : hull)
+    {
+      minAlong = std::min(minAlong, p.dot(along));
+      maxAlong = std::max(maxAlong, p.dot(along));
+      minAcross = std::min(minAcross, p.dot(across));
+      maxAcross = std::max(maxAcross, p.dot(across));
+    }
+    const double area = (maxAlong - minAlong) * (maxAcross - minAcross);
+    // A relative tolerance keeps the choice among equal boxes (a rectangle's four sides) stable.
+    if (area < bestArea * (1.0 - 1e-12))
+    {
+      bestArea = area;
+      bestAngle = -std::atan2(along.y(), along.x());
+      bestSize = Vector2(maxAlong - minAlong, maxAcross - minAcross);
+    }
+  }
+  if (bestSize.y() > bestSize.x())
+  {
+    bestAngle += 0.5 * M_PI;
+  }
+  return bestAngle;
+}
+
+std::vector<Vector2> packBoxes(const std::vector<Vector2>& sizes, double margin, double& scale)
+{
+  if (!(margin >= 0.0 && margin <= 0.25))
+  {
+    throw Error("the margin between charts is " + std::to_string(margin) + ", outside [0, 0.25]");
+  }
+  double area = 0.0;
+  double widest = 0.0;
+  for (const Vector2& size : sizes)
+  {
+    if (!size.allFinite() || size.minCoeff() < 0.0)
+    {
+      throw Error("a chart's bounding box has a negative or non-finite size");
+    }
+    area += size.x() * size.y();
+    widest = std::max(widest, size.maxCoeff());
+  }
+  std::vector<Vector2> corners(sizes.size(), Vector2::Zero());
+  if (sizes.empty() || widest == 0.0)
+  {
+    scale = 1.0;
+    return corners;
+  }
+  std::vector<int> order(sizes.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const Vector2& sa = sizes[static_cast<std::size_t>(a)];
+    const Vector2& sb = sizes[static_cast<std::size_t>(b)];
+    return sa.y() > sb.y() || (sa.y() == sb.y() && sa.x() > sb.x());
+  });
+  // No square smaller than the boxes' total area or the widest box (with the margins) can hold them.
+  double side = std::max(std::sqrt(area), widest) / (1.0 - 2.0 * margin);
+  while (!shelfPack(sizes, order, side, margin * side, corners))
+  {
+    side *= 1.01;
+  }
+  scale = 1.0 / side;
+  for (Vector2& corner : corners)
+  {
+    corner *= scale;
+  }
+  return corners;
+}
+
+int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangle>& triangles,
+  const std::vector<int>& faceChart, int resolution)
+{
+  if (resolution < 1 || resolution > 65536)
+  {
+    throw Error("the overlap grid's resolution " + std::to_string(resolution) + " is outside [1, 65536]");
+  }
+  std::vector<int> owner(static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution), -1);
+  std::set<std::pair<int, int>> pairs;
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+  {
+    Vector2 t[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      t[k] = uv[static_cast<std::size_t>(triangles[f][static_cast<std::size_t>(k)])] * resolution;
+    }
+    if (signedArea(t[0], t[1], t[2]) < 0.0)
+    {
+      std::swap(t[1], t[2]);
+    }
+    const auto clampCell = [&](double value) {
+      return static_cast<int>(std::min(std::max(std::floor(value), 0.0), static_cast<double>(resolution - 1)));
+    };
+    const int x0 = clampCell(std::min({ t[0].x(), t[1].x(), t[2].x() }));
+    const int x1 = clampCell(std::max({ t[0].x(), t[1].x(), t[2].x() }));
+    const int y0 = clampCell(std::min({ t[0].y(), t[1].y(), t[2].y() }));
+    const int y1 = clampCell(std::max({ t[0].y(), t[1].y(), t[2].y() }));
+    const int chart = faceChart[f];
+    for (int y = y0; y <= y1; ++y)
+    {
+      for (int x = x0; x <= x1; ++x)
+      {
+        const Vector2 sample(x + 0.5, y + 0.5);
+        if (cross2(t[1] - t[0], sample - t[0]) > 0.0 && cross2(t[2] - t[1], sample - t[1]) > 0.0 &&
+          cross2(t[0] - t[2], sample - t[2]) > 0.0)
+        {
+          int& cell = owner[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(x)];
+          if (cell >= 0 && cell != chart)
+          {
+            pairs.emplace(std::min(cell, chart), std::max(cell, chart));
+          }
+          cell = chart;
+        }
+      }
+    }
+  }
+  return static_cast<int>(pairs.size());
+}
+
+ChartParameterizationResult parameterizeCharts(
+  const TriangleMesh& mesh, const std::vector<int>& faceLabels, const ChartParameterizationOptions& options)
+{
+  if (mesh.empty())
+  {
+    throw Error("the surface has no triangle");
+  }
+  if (!(options.margin >= 0.0 && options.margin <= 0.25))
+  {
+    throw Error("the margin between charts is " + std::to_string(options.margin) + ", outside [0, 0.25]");
+  }
+  ChartParameterizationResult result;
+  // Pinched vertices are cut (one copy per fan), so each chart is a piece joined by edges.
+  result.split = splitAlongFaceLabels(mesh, faceLabels, LabelFans::Separate);
+  const TriangleMesh& split = result.split.mesh;
+
+  // Charts: the connected pieces, in increasing label order, then piece order; faces in mesh order.
+  std::vector<std::pair<int, int>> pieces; // (label, component)
+  for (int f = 0; f < split.faceCount(); ++f)
+  {
+    pieces.emplace_back(faceLabels[static_cast<std::size_t>(f)], split.faceComponent(f));
+  }
+  std::sort(pieces.begin(), pieces.end());
+  pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
+  std::vector<int> labels(pieces.size());
+  std::vector<int> componentChart(static_cast<std::size_t>(split.componentCount()));
+  for (std::size_t c = 0; c < pieces.size(); ++c)
+  {
+    labels[c] = pieces[c].first;
+    componentChart[static_cast<std::size_t>(pieces[c].second)] = static_cast<int>(c);
+  }
+  std::vector<int> faceChart(faceLabels.size());
+  std::vector<std::vector<int>> chartFaces(labels.size());
+  for (int f = 0; f < split.faceCount(); ++f)
+  {
+    faceChart[static_cast<std::size_t>(f)] = componentChart[static_cast<std::size_t>(split.faceComponent(f))];
+    chartFaces[static_cast<std::size_t>(faceChart[static_cast<std::size_t>(f)])].push_back(f);
+  }
+  // "chart 3", or "chart 3 (piece 2 of 4)" for a label in several pieces.
+  auto chartName = [&](std::size_t c) {
+    const auto first = std::lower_bound(labels.begin(), labels.end(), labels[c]);
+    const auto last = std::upper_bound(labels.begin(), labels.end(), labels[c]);
+    std::string name = "chart " + std::to_string(labels[c]);
+    if (last - first > 1)
+    {
+      name += " (piece " + std::to_string(labels.begin() + static_cast<long>(c) - first + 1) + " of " +
+        std::to_string(last - first) + ")";
+    }
+    return name;
+  };
+
+  // Each chart as its own mesh (vertices in split-mesh order), checked before any is solved.
+  std::vector<int> localIndex(static_cast<std::size_t>(split.vertexCount()), -1);
+  std::vector<TriangleMesh> charts(labels.size());
+  std::vector<std::vector<int>> chartVertices(labels.size());
+  std::string problems;
+  for (std::size_t c = 0; c < labels.size(); ++c)
+  {
+    std::vector<int>& vertices = chartVertices[c];
+    for (int f : chartFaces[c])
+    {
+      vertices.insert(vertices.end(), split.triangle(f).begin(), split.triangle(f).end());
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    std::vector<Vector3> points(vertices.size());
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+    {
+      localIndex[static_cast<std::size_t>(vertices[i])] = static_cast<int>(i);
+      points[i] = split.point(vertices[i]);
+    }
+    std::vector<Triangle> triangles;
+    triangles.reserve(chartFaces[c].size());
+    for (int f : chartFaces[c])
+    {
+      const Triangle& t = split.triangle(f);
+      triangles.push_back({ { localIndex[static_cast<std::size_t>(t[0])], localIndex[static_cast<std::size_t>(t[1])],
+        localIndex[static_cast<std::size_t>(t[2])] } });
+    }
+    charts[c] = TriangleMesh(std::move(points), std::move(triangles));
+    const std::string problem = chartTopologyProblem(charts[c]);
+    if (!problem.empty())
+    {
+      problems += (problems.empty() ? "" : "; ") + chartName(c) + ": " + problem;
+    }
+  }
+  if (!problems.empty())
+  {
+    throw Error("these charts are not topological disks and cannot be flattened (cut them into disks first): " + problems);
+  }
+
+  // Flatten, scale each chart to its 3D area, measure, and find its minimal box.
+  result.uv.assign(static_cast<std::size_t>(split.vertexCount()), Vector2::Zero());
+  result.faces.resize(static_cast<std::size_t>(split.faceCount()));
+  result.charts.resize(labels.size());
+  std::vector<double> rotations(labels.size());
+  std::vector<Vector2> boxSizes(labels.size());
+  std::vector<Vector2> boxCorners(labels.size());
+  for (std::size_t c = 0; c < labels.size(); ++c)
+  {
+    const TriangleMesh& chart = charts[c];
+    std::vector<Vector2> uv = leastSquaresConformalMap(chart, options.solver);
+    double area3D = 0.0;
+    double areaUV = 0.0;
+    for (const Triangle& t : chart.triangles())
+    {
+      area3D += 0.5 * (chart.point(t[1]) - chart.point(t[0])).cross(chart.point(t[2]) - chart.point(t[0])).norm();
+      areaUV += signedArea(uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
+    }
+    if (!(std::abs(areaUV) > 0.0))
+    {
+      throw Error("the flattened " + chartName(c) + " has no area");
+    }
+    // The conformal energy prefers the orientation of the triangles; a mirrored result is turned back.
+    const double mirror = areaUV < 0.0 ? -1.0 : 1.0;
+    const double scale = std::sqrt(area3D / std::abs(areaUV));
+    for (Vector2& p : uv)
+    {
+      p = Vector2(p.x() * scale, p.y() * scale * mirror);
+    }
+    ChartSummary& summary = result.charts[c];
+    summary.label = labels[c];
+    summary.faceCount = chart.faceCount();
+    summary.vertexCount = chart.vertexCount();
+    for (int f = 0; f < chart.faceCount(); ++f)
+    {
+      const Triangle& t = chart.triangle(f);
+      const FaceDistortion distortion = faceDistortion(chart.point(t[0]), chart.point(t[1]), chart.point(t[2]),
+        uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
+      const double area =
+        0.5 * (chart.point(t[1]) - chart.point(t[0])).cross(chart.point(t[2]) - chart.point(t[0])).norm();
+      result.faces[static_cast<std::size_t>(chartFaces[c][static_cast<std::size_t>(f)])] = distortion;
+      accumulate(summary.distortion, distortion, area);
+      accumulate(result.distortion, distortion, area);
+    }
+    finishSummary(summary.distortion);
+
+    rotations[c] = minimalBoundingBoxRotation(uv);
+    summary.rotation = rotations[c];
+    const Eigen::Rotation2Dd rotation(rotations[c]);
+    Vector2 low = Vector2::Constant(std::numeric_limits<double>::infinity());
+    Vector2 high = -low;
+    for (Vector2& p : uv)
+    {
+      p = rotation * p;
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    boxSizes[c] = high - low;
+    for (std::size_t i = 0; i < uv.size(); ++i)
+    {
+      result.uv[static_cast<std::size_t>(chartVertices[c][i])] = uv[i] - low;
+    }
+  }
+  finishSummary(result.distortion);
+
+  boxCorners = packBoxes(boxSizes, options.margin, result.texelScale);
+  for (std::size_t c = 0; c < labels.size(); ++c)
+  {
+    for (int v : chartVertices[c])
+    {
+      Vector2& p = result.uv[static_cast<std::size_t>(v)];
+      p = p * result.texelScale + boxCorners[c];
+    }
+  }
+  result.overlappingChartPairs = countChartOverlaps(result.uv, split.triangles(), faceChart, options.overlapResolution);
+  return result;
+}
+
+} // namespace kerf

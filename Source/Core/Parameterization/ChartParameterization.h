@@ -1,0 +1,137 @@
+// Texture coordinates for a surface cut into charts: LSCM per chart, distortion, packing into the unit square.
+#pragma once
+
+#include "Mesh/SplitAlongFaceLabels.h"
+#include "Mesh/TriangleMesh.h"
+
+#include <Eigen/Core>
+
+#include <string>
+#include <vector>
+
+namespace kerf
+{
+
+using Vector2 = Eigen::Vector2d;
+
+/// How the LSCM system is solved (both exact; timings in Documentation/filters/ChartParameterization.md).
+enum class ChartSolver
+{
+  /// The energy as a Hermitian form in z = u + i v: n complex unknowns with the Laplacian's
+  /// pattern, Eigen's SimplicialLDLT.
+  ComplexLDLT,
+  /// The real form in (u, v): 2n unknowns, kerf::SparseCholesky (CHOLMOD, supernodal).
+  RealCHOLMOD,
+  /// The real form with Eigen's SimplicialLDLT.
+  RealLDLT
+};
+
+/// Parameters of parameterizeCharts.
+struct ChartParameterizationOptions
+{
+  /// Gap left between charts and between a chart and the border of the unit square, as a
+  /// fraction of the square's side, in [0, 0.25]. Default 0.01.
+  double margin = 0.01;
+  ChartSolver solver = ChartSolver::ComplexLDLT;
+  /// Side, in texels, of the grid on which countChartOverlaps samples the layout. Default 1024.
+  int overlapResolution = 1024;
+};
+
+/// Distortion of the map from a triangle to its texture image.
+struct FaceDistortion
+{
+  double stretch = 1.0; ///< sqrt((s1^2 + s2^2) / 2) (Sander et al. 2001, section 3)
+  double shear = 1.0;   ///< s1 / s2 (infinite for a triangle collapsed in the texture)
+  /// sqrt((1 / s1^2 + 1 / s2^2) / 2): the stretch of the inverse map, from the texture to the
+  /// surface, which Sander et al. 2001 (section 3) average (infinite for a collapsed triangle)
+  double inverseStretch = 1.0;
+  bool flipped = false; ///< the texture image has the opposite orientation
+};
+
+/// Area-weighted means (weights: the triangles' 3D areas) and maxima of the distortion.
+struct DistortionSummary
+{
+  double meanStretch = 0.0;
+  /// The L2 stretch of the whole surface, Sander et al. 2001 (section 3): sqrt(sum A_f
+  /// inverseStretch_f^2 / sum A_f). With the texture area equal to the 3D area it is at least 1,
+  /// and 1 only for an isometry (the mean of stretch is below 1 for a conformal map that scales).
+  double surfaceStretch = 0.0;
+  double maxStretch = 0.0;
+  double meanShear = 0.0;
+  double maxShear = 0.0;
+  int flippedFaces = 0;
+  double area = 0.0; ///< 3D area of the triangles summarized
+};
+
+/// One chart of the result: a connected piece of the faces of one label.
+struct ChartSummary
+{
+  int label = 0; ///< a label whose faces form several pieces has one chart per piece
+  int faceCount = 0;
+  int vertexCount = 0;
+  DistortionSummary distortion;
+  double rotation = 0.0; ///< radians the chart was turned by before it was packed
+};
+
+/// The result of parameterizeCharts.
+struct ChartParameterizationResult
+{
+  SplitMesh split;                   ///< the surface cut open along the chart borders
+  std::vector<Vector2> uv;           ///< per vertex of split.mesh, inside [margin, 1 - margin]^2
+  std::vector<FaceDistortion> faces; ///< per face of split.mesh
+  std::vector<ChartSummary> charts;  ///< in increasing label order, then piece order
+  DistortionSummary distortion;      ///< all charts
+  int overlappingChartPairs = 0;     ///< countChartOverlaps of the packed layout
+  double texelScale = 0.0;           ///< texture length per unit of 3D length, equal for every chart
+};
+
+/// An empty string if `chart` is a topological disk (one connected piece, manifold, consistently
+/// oriented, one boundary loop, genus 0, no zero-area triangle), else a sentence naming what it
+/// is instead (its boundary loops and genus, for example).
+std::string chartTopologyProblem(const TriangleMesh& chart);
+
+/// Least-squares conformal map of a disk (Levy et al. 2002, section 3), its energy written as
+/// E = E_Dirichlet - A(u, v) (Mullen et al. 2008, section 3), with the two boundary vertices farthest apart (two
+/// sweeps) pinned at (0, 0) and (d, 0), d their 3D distance. Returns one point per vertex. Throws
+/// kerf::Error for a chart that is not a disk or a system the solver cannot factor.
+std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexLDLT);
+
+/// Distortion of the affine map from triangle (p0, p1, p2) to (t0, t1, t2): the singular values
+/// s1 >= s2 of its Jacobian.
+FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
+  const Vector2& t1, const Vector2& t2);
+
+/// Convex hull of points, counter-clockwise from the lowest-then-leftmost point, without
+/// collinear points (Andrew's monotone chain).
+std::vector<Vector2> convexHull(std::vector<Vector2> points);
+
+/// Angle by which to turn `points` so that their axis-aligned bounding box has the least area
+/// (rotating calipers over the convex hull's edges; Toussaint 1983) and is at least as wide as tall.
+double minimalBoundingBoxRotation(const std::vector<Vector2>& points);
+
+/// Axis-aligned boxes (width, height) placed on shelves in a square of side 1 with `margin`
+/// between boxes and to the border: the tallest first, left to right, at the least square side
+/// found by a search in steps of 1%, then scaled to side 1. Returns each box's lower-left corner
+/// in the unit square and sets `scale` to the factor that maps the boxes' units to the unit
+/// square. Throws kerf::Error for a margin outside [0, 0.25] or a box with a non-finite or
+/// negative size.
+std::vector<Vector2> packBoxes(const std::vector<Vector2>& sizes, double margin, double& scale);
+
+/// Number of pairs of charts whose triangles cover a common sample of a resolution x resolution
+/// grid over the unit square (sample at each texel's centre, strictly inside a triangle).
+int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangle>& triangles,
+  const std::vector<int>& faceChart, int resolution);
+
+/// Cuts the mesh open along the borders of faceLabels and at pinched vertices
+/// (splitAlongFaceLabels with LabelFans::Separate); each connected piece of a label is a chart
+/// (a label in several pieces gives several charts). Flattens each chart with
+/// leastSquaresConformalMap, scales each so its texture area equals its 3D
+/// area, measures the distortion, turns each chart to its minimal bounding box and packs them
+/// into the unit square with one scale for all (equal texel density). Throws kerf::Error listing
+/// every chart that is not a disk (by label, and piece if the label has several, with what it
+/// is: boundary loops and genus, non-manifold edges, zero-area triangles), for a label count other than the
+/// face count, an empty mesh or a margin outside [0, 0.25].
+ChartParameterizationResult parameterizeCharts(
+  const TriangleMesh& mesh, const std::vector<int>& faceLabels, const ChartParameterizationOptions& options = {});
+
+} // namespace kerf

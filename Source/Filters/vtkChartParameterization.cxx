@@ -1,0 +1,180 @@
+// vtkChartParameterization: reads the chart labels, runs kerf::parameterizeCharts, writes the cut surface and its layout.
+#include "vtkChartParameterization.h"
+
+#include "KerfFilterUtilities.h"
+#include "KerfSurfaceInput.h"
+#include "Parameterization/ChartParameterization.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIdTypeArray.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+
+vtkStandardNewMacro(vtkChartParameterization);
+
+struct vtkChartParameterization::Internals
+{
+  kerf::SurfaceInput surface;
+};
+
+namespace
+{
+// The cut surface with the input's arrays carried to its points and triangles, and the result's arrays.
+void writeSurface(const kerf::ChartParameterizationResult& result, const kerf::SurfaceInput& surface,
+  vtkPolyData* input, const char* uvName, vtkPolyData* output)
+{
+  const kerf::TriangleMesh& mesh = result.split.mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(mesh.vertexCount());
+  vtkPointData* inputPoints = input->GetPointData();
+  output->GetPointData()->CopyAllocate(inputPoints, mesh.vertexCount());
+  vtkNew<vtkDoubleArray> uv;
+  uv->SetName(uvName);
+  uv->SetNumberOfComponents(2);
+  uv->SetNumberOfTuples(mesh.vertexCount());
+  vtkNew<vtkIdTypeArray> originalIds;
+  originalIds->SetName("OriginalPointId");
+  originalIds->SetNumberOfTuples(mesh.vertexCount());
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    points->SetPoint(v, mesh.point(v).data());
+    const int original = result.split.originalPoint[static_cast<std::size_t>(v)];
+    output->GetPointData()->CopyData(inputPoints, original, v);
+    uv->SetTuple(v, result.uv[static_cast<std::size_t>(v)].data());
+    originalIds->SetValue(v, original);
+  }
+  output->SetPoints(points);
+
+  vtkNew<vtkCellArray> polys;
+  vtkCellData* inputCells = input->GetCellData();
+  output->GetCellData()->CopyAllocate(inputCells, mesh.faceCount());
+  std::vector<double> stretch(static_cast<std::size_t>(mesh.faceCount()));
+  std::vector<double> shear(stretch.size());
+  std::vector<unsigned char> flipped(stretch.size());
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const kerf::Triangle& t = mesh.triangle(f);
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+    output->GetCellData()->CopyData(inputCells, surface.SourceCells()[static_cast<std::size_t>(f)], f);
+    const kerf::FaceDistortion& distortion = result.faces[static_cast<std::size_t>(f)];
+    stretch[static_cast<std::size_t>(f)] = distortion.stretch;
+    shear[static_cast<std::size_t>(f)] = distortion.shear;
+    flipped[static_cast<std::size_t>(f)] = distortion.flipped ? 1 : 0;
+  }
+  output->SetPolys(polys);
+  output->GetPointData()->SetTCoords(uv);
+  output->GetPointData()->AddArray(originalIds);
+  output->GetCellData()->AddArray(kerf::MakeIntArray("Chart", result.split.faceLabel));
+  output->GetCellData()->AddArray(kerf::MakeArray("Stretch", stretch));
+  output->GetCellData()->AddArray(kerf::MakeArray("Shear", shear));
+  output->GetCellData()->AddArray(kerf::MakeArray("Flipped", flipped));
+}
+
+void writeSummaries(const kerf::ChartParameterizationResult& result, vtkFieldData* field)
+{
+  const kerf::DistortionSummary& total = result.distortion;
+  field->AddArray(kerf::MakeFieldValue("MeanStretch", total.meanStretch));
+  field->AddArray(kerf::MakeFieldValue("L2Stretch", total.surfaceStretch));
+  field->AddArray(kerf::MakeFieldValue("MaxStretch", total.maxStretch));
+  field->AddArray(kerf::MakeFieldValue("MeanShear", total.meanShear));
+  field->AddArray(kerf::MakeFieldValue("MaxShear", total.maxShear));
+  field->AddArray(kerf::MakeFieldValue("FlippedFaces", total.flippedFaces));
+  field->AddArray(kerf::MakeFieldValue("OverlappingChartPairs", result.overlappingChartPairs));
+  field->AddArray(kerf::MakeFieldValue("ChartCount", static_cast<double>(result.charts.size())));
+  field->AddArray(kerf::MakeFieldValue("TexelScale", result.texelScale));
+  std::vector<int> labels, flipped;
+  std::vector<double> meanStretch, l2Stretch, maxStretch, meanShear, maxShear;
+  for (const kerf::ChartSummary& chart : result.charts)
+  {
+    labels.push_back(chart.label);
+    flipped.push_back(chart.distortion.flippedFaces);
+    meanStretch.push_back(chart.distortion.meanStretch);
+    l2Stretch.push_back(chart.distortion.surfaceStretch);
+    maxStretch.push_back(chart.distortion.maxStretch);
+    meanShear.push_back(chart.distortion.meanShear);
+    maxShear.push_back(chart.distortion.maxShear);
+  }
+  field->AddArray(kerf::MakeIntArray("ChartLabel", labels));
+  field->AddArray(kerf::MakeArray("ChartMeanStretch", meanStretch));
+  field->AddArray(kerf::MakeArray("ChartL2Stretch", l2Stretch));
+  field->AddArray(kerf::MakeArray("ChartMaxStretch", maxStretch));
+  field->AddArray(kerf::MakeArray("ChartMeanShear", meanShear));
+  field->AddArray(kerf::MakeArray("ChartMaxShear", maxShear));
+  field->AddArray(kerf::MakeIntArray("ChartFlippedFaces", flipped));
+}
+
+// The triangles of `surface` at their texture coordinates in z = 0, with its arrays.
+void writeLayout(const kerf::ChartParameterizationResult& result, vtkPolyData* surface, vtkPolyData* layout)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(result.uv.size()));
+  for (std::size_t v = 0; v < result.uv.size(); ++v)
+  {
+    points->SetPoint(static_cast<vtkIdType>(v), result.uv[v].x(), result.uv[v].y(), 0.0);
+  }
+  layout->SetPoints(points);
+  layout->SetPolys(surface->GetPolys());
+  layout->GetPointData()->ShallowCopy(surface->GetPointData());
+  layout->GetCellData()->ShallowCopy(surface->GetCellData());
+  layout->GetFieldData()->ShallowCopy(surface->GetFieldData());
+}
+} // namespace
+
+vtkChartParameterization::vtkChartParameterization()
+  : State(new Internals)
+{
+  this->SetNumberOfOutputPorts(2);
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Chart");
+  this->SetTextureCoordinatesName("UV");
+}
+
+vtkChartParameterization::~vtkChartParameterization()
+{
+  this->SetTextureCoordinatesName(nullptr);
+}
+
+int vtkChartParameterization::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return kerf::RunGuarded(this, "Cannot parameterize the charts", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* layout = vtkPolyData::GetData(outputVector, 1);
+    kerf::CheckOutputNames({ this->TextureCoordinatesName });
+    kerf::MeshRequirements requirements;
+    requirements.allowZeroAreaFaces = false;
+    kerf::LoadSurface(this->State->surface, input, requirements);
+    const std::vector<int> labels = kerf::ReadTriangleLabels(this, 0,
+      this->State->surface, input->GetNumberOfCells(), "the surface's chart labels");
+
+    kerf::ChartParameterizationOptions options;
+    options.margin = this->Margin;
+    const kerf::ChartParameterizationResult result =
+      kerf::parameterizeCharts(this->State->surface.Mesh(), labels, options);
+
+    writeSurface(result, this->State->surface, input, this->TextureCoordinatesName, output);
+    output->GetFieldData()->ShallowCopy(input->GetFieldData());
+    writeSummaries(result, output->GetFieldData());
+    writeLayout(result, output, layout);
+  });
+}
+
+void vtkChartParameterization::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Margin: " << this->Margin << "\n";
+  os << indent << "TextureCoordinatesName: " << (this->TextureCoordinatesName ? this->TextureCoordinatesName : "(none)") << "\n";
+}

@@ -1,0 +1,77 @@
+/**
+ * @class vtkChartParameterization
+ * @brief Texture coordinates for a surface cut into charts: each chart flattened by least-squares
+ * conformal maps (Levy et al. 2002) and packed into the unit square.
+ *
+ * Input: a triangle surface (polygons are triangulated) with a per-cell label array, selected with
+ * SetInputArrayToProcess (default the cell array "Chart"; "Segment" of the segmentation filters
+ * works as well). Each label is a chart; every chart must be a topological disk (one connected,
+ * manifold piece with one boundary loop and no handle).
+ *
+ * Output 0: the surface cut open along the chart borders (a point is duplicated for each chart
+ * that uses it), with the point arrays TextureCoordinatesName (default "UV", the texture
+ * coordinates, set as TCoords) and "OriginalPointId", the cell arrays "Chart" (the label),
+ * "Stretch" (sqrt((s1^2 + s2^2) / 2), Sander et al. 2001), "Shear" (s1 / s2) and "Flipped" (1
+ * where the texture image is mirrored), s1 >= s2 the singular values of the map from the triangle
+ * to its texture image after each chart is scaled to its 3D area; the input's point and cell
+ * arrays are kept (copied to the duplicated points). Field data: MeanStretch, MaxStretch,
+ * MeanShear, MaxShear (area-weighted means), L2Stretch (Sander et al. 2001's L2 norm of the
+ * inverse map, 1 only for an isometry), FlippedFaces, OverlappingChartPairs, ChartCount,
+ * TexelScale, and per chart (in increasing label order) ChartLabel, ChartMeanStretch,
+ * ChartL2Stretch, ChartMaxStretch, ChartMeanShear, ChartMaxShear, ChartFlippedFaces.
+ *
+ * Output 1: the same triangles at their texture coordinates in the plane z = 0, with the cell
+ * arrays of output 0: the layout, for display beside the surface.
+ *
+ * Errors (vtkErrorMacro, return 0): surfaces refused by validation (non-manifold, inconsistently
+ * oriented, zero-area triangles, NaN coordinates), a missing or non-integer label array, and
+ * charts that are not disks (every such chart named by its label, with its boundary loops and
+ * genus: cut it into disks first). Nothing is flattened with overlaps.
+ */
+#ifndef vtkChartParameterization_h
+#define vtkChartParameterization_h
+
+#include "KerfFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory>
+
+class KERFFILTERS_EXPORT vtkChartParameterization : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkChartParameterization* New();
+  vtkTypeMacro(vtkChartParameterization, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Gap between charts, and between a chart and the border of the unit square, as a fraction of
+  /// the square's side, in [0, 0.25]. Default 0.01.
+  vtkSetClampMacro(Margin, double, 0.0, 0.25);
+  vtkGetMacro(Margin, double);
+  ///@}
+
+  ///@{
+  /// Name of the output texture-coordinate array. Default "UV".
+  vtkSetStringMacro(TextureCoordinatesName);
+  vtkGetStringMacro(TextureCoordinatesName);
+  ///@}
+
+protected:
+  vtkChartParameterization();
+  ~vtkChartParameterization() override;
+
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+
+  double Margin = 0.01;
+  char* TextureCoordinatesName = nullptr;
+
+private:
+  vtkChartParameterization(const vtkChartParameterization&) = delete;
+  void operator=(const vtkChartParameterization&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> State;
+};
+
+#endif

@@ -1,0 +1,105 @@
+// Benchmarks of kerf::parameterizeCharts (split, LSCM per chart, distortion, packing, overlap count) with each solver.
+//
+// The surfaces are the benchmarks' cube dumbbells (BenchmarkMeshes.h) of 22,188 and 99,372
+// triangles, cut into 12 charts: each of the six cube faces it is made from (2 cells^2
+// consecutive triangles, row by row) cut in two halves of rows, each a disk.
+//   BM_ChartParameterization/<size>/<solver>   the whole of parameterizeCharts, one thread,
+//                                               with CHOLMOD or Eigen's SimplicialLDLT
+// The reference is libigl's igl::lscm, about 475 ms at 100k triangles on this machine (not
+// installed here, so not run beside).
+#include "BenchmarkMeshes.h"
+#include "KerfBenchmarks.h"
+
+#include "Parameterization/ChartParameterization.h"
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+struct ChartScene
+{
+  kerf::TriangleMesh mesh;
+  std::vector<int> labels;
+};
+
+const ChartScene& chartScene(int cells)
+{
+  static std::map<int, ChartScene> scenes;
+  auto found = scenes.find(cells);
+  if (found == scenes.end())
+  {
+    ChartScene scene;
+    scene.mesh = kerf::benchmarks::MakeBenchmarkDumbbell(cells);
+    for (int f = 0; f < scene.mesh.faceCount(); ++f)
+    {
+      scene.labels.push_back(f / (cells * cells));
+    }
+    found = scenes.emplace(cells, std::move(scene)).first;
+  }
+  return found->second;
+}
+
+void chartParameterization(benchmark::State& state, int cells, kerf::ChartSolver solver)
+{
+  kerf::ChartParameterizationResult result;
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ChartScene& { return chartScene(cells); },
+    [&](benchmark::State& s, const ChartScene& scene) {
+      kerf::ChartParameterizationOptions options;
+      options.solver = solver;
+      for (auto _ : s)
+      {
+        result = kerf::parameterizeCharts(scene.mesh, scene.labels, options);
+        benchmark::DoNotOptimize(result.uv.data());
+      }
+      if (result.charts.size() != 12 || result.overlappingChartPairs != 0 || result.distortion.flippedFaces != 0)
+      {
+        kerf::benchmarks::Fail(s, "expected 12 charts without overlaps or flips, got " +
+            std::to_string(result.charts.size()) + " charts, " + std::to_string(result.overlappingChartPairs) +
+            " overlapping pairs, " + std::to_string(result.distortion.flippedFaces) + " flipped triangles");
+      }
+    },
+    [&](benchmark::State& s, const ChartScene& scene) {
+      s.counters["triangles"] = scene.mesh.faceCount();
+      s.counters["charts"] = static_cast<double>(result.charts.size());
+      s.counters["L2stretch"] = result.distortion.surfaceStretch;
+      s.counters["meanShear"] = result.distortion.meanShear;
+      s.counters["flipped"] = result.distortion.flippedFaces;
+    });
+}
+
+} // namespace
+
+namespace kerf
+{
+namespace benchmarks
+{
+
+void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
+{
+  const std::pair<const char*, int> sizes[] = { { "22k", 43 }, { "100k", 91 } };
+  const std::pair<const char*, ChartSolver> solvers[] = { { "ComplexLDLT", ChartSolver::ComplexLDLT },
+    { "RealCHOLMOD", ChartSolver::RealCHOLMOD }, { "RealLDLT", ChartSolver::RealLDLT } };
+  for (const auto& [label, cells] : sizes)
+  {
+    for (const auto& [solverName, solver] : solvers)
+    {
+      const std::string name = std::string("BM_ChartParameterization/") + label + "/" + solverName;
+      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
+        name.c_str(), [cells = cells, solver = solver](benchmark::State& state) { chartParameterization(state, cells, solver); });
+      registered->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (useSizeMinimumTimes)
+      {
+        registered->MinTime(1.0);
+      }
+    }
+  }
+}
+
+} // namespace benchmarks
+} // namespace kerf
