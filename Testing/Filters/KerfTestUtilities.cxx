@@ -1,6 +1,8 @@
 // Helpers shared by Kerf's VTK filter tests.
 #include "KerfTestUtilities.h"
 
+#include "vtkMeshFileReader.h"
+
 #include "KerfErrorCollector.h"
 
 #include <vtkAlgorithm.h>
@@ -67,6 +69,14 @@ std::string SourcePath(int argc, char* argv[], const std::string& relative)
   std::string path(expanded);
   delete[] expanded;
   return path;
+}
+
+CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[])
+{
+  CamelWithNeckStroke files{ vtkSmartPointer<vtkMeshFileReader>::New(), vtkSmartPointer<vtkMeshFileReader>::New() };
+  files.camel->SetFileName(SourcePath(argc, argv, "Data/camel.off").c_str());
+  files.stroke->SetFileName(SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
+  return files;
 }
 
 std::string SharedDataPath(const std::string& relative)

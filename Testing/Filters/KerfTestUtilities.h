@@ -8,6 +8,7 @@
 #include <string>
 
 class vtkAlgorithm;
+class vtkMeshFileReader;
 class vtkPolyData;
 
 namespace kerf
@@ -24,6 +25,14 @@ vtkSmartPointer<vtkPolyData> CirclePolyline(double r, double z, int points);
 
 /// The path of a file in the source tree, given the -D argument of the test driver.
 std::string SourcePath(int argc, char* argv[], const std::string& relative);
+
+/// Readers of the bundled camel (Data/camel.off) and its neck stroke (Data/camel-neck-stroke.vtk).
+struct CamelWithNeckStroke
+{
+  vtkSmartPointer<vtkMeshFileReader> camel;
+  vtkSmartPointer<vtkMeshFileReader> stroke;
+};
+CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[]);
 
 /// The shared research data folder (../shared/data), or "" if absent.
 std::string SharedDataPath(const std::string& relative);

@@ -49,10 +49,9 @@ double fieldValue(vtkPolyData* data, const char* name)
 int TestCurveExportFilter(int argc, char* argv[])
 {
   bool ok = true;
-  vtkNew<vtkMeshFileReader> camel;
-  camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
-  vtkNew<vtkMeshFileReader> stroke;
-  stroke->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
+  const kerf::test::CamelWithNeckStroke files = kerf::test::ReadCamelWithNeckStroke(argc, argv);
+  vtkMeshFileReader* camel = files.camel;
+  vtkMeshFileReader* stroke = files.stroke;
   vtkNew<vtkStrokeCut> cut;
   cut->SetInputConnection(0, camel->GetOutputPort());
   cut->SetInputConnection(1, stroke->GetOutputPort());

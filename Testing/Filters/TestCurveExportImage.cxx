@@ -14,10 +14,9 @@
 
 int TestCurveExportImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> camel;
-  camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
-  vtkNew<vtkMeshFileReader> stroke;
-  stroke->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
+  const kerf::test::CamelWithNeckStroke files = kerf::test::ReadCamelWithNeckStroke(argc, argv);
+  vtkMeshFileReader* camel = files.camel;
+  vtkMeshFileReader* stroke = files.stroke;
   vtkNew<vtkStrokeCut> cut;
   cut->SetInputConnection(0, camel->GetOutputPort());
   cut->SetInputConnection(1, stroke->GetOutputPort());

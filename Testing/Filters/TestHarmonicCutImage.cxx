@@ -15,10 +15,9 @@
 
 int TestHarmonicCutImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> camel;
-  camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
-  vtkNew<vtkMeshFileReader> stroke;
-  stroke->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
+  const kerf::test::CamelWithNeckStroke files = kerf::test::ReadCamelWithNeckStroke(argc, argv);
+  vtkMeshFileReader* camel = files.camel;
+  vtkMeshFileReader* stroke = files.stroke;
   vtkNew<vtkStrokeConstraints> constraints;
   constraints->SetInputConnection(0, camel->GetOutputPort());
   constraints->SetInputConnection(1, stroke->GetOutputPort());
