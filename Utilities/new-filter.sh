@@ -3,7 +3,7 @@
 #   Utilities/new-filter.sh NAME AREA
 # NAME is the algorithm in CamelCase (VertexValence), AREA the Core folder (Geometry, Harmonic,
 # Geodesic, Segmentation, ...). It writes the Core function and its unit test, the filter and
-# its test, the ParaView proxy and the documentation page, and adds them to the one list of
+# its test, the ParaView proxy with its menu icon and the documentation page, and adds them to the one list of
 # filters (Source/Filters/CMakeLists.txt) and the lists of sources and tests. The result builds
 # and its tests pass; then replace the stub algorithm (each neighbour count) with the real one.
 set -euo pipefail
@@ -19,7 +19,8 @@ templates=Utilities/FilterTemplate
 label=$(echo "$name" | sed -E 's/([a-z0-9])([A-Z])/\1 \2/g')
 
 for existing in "Source/Core/$area/$name.h" "Source/Filters/vtk$name.h" "Plugins/ParaView/$name.xml" \
-  "Testing/Core/Test$name.cxx" "Testing/Filters/Test${name}Filter.cxx" "Documentation/filters/$name.md"; do
+  "Testing/Core/Test$name.cxx" "Testing/Filters/Test${name}Filter.cxx" "Documentation/filters/$name.md" \
+  "Plugins/ParaView/Icons/$name.svg"; do
   [ ! -e "$existing" ] || { echo "$existing exists already" >&2; exit 1; }
 done
 grep -q "\"$name:" Source/Filters/CMakeLists.txt && { echo "$name is already a filter" >&2; exit 1; }
@@ -36,6 +37,7 @@ render Filter.h.in "Source/Filters/vtk$name.h"
 render Filter.cxx.in "Source/Filters/vtk$name.cxx"
 render FilterTest.cxx.in "Testing/Filters/Test${name}Filter.cxx"
 render Proxy.xml.in "Plugins/ParaView/$name.xml"
+render Icon.svg.in "Plugins/ParaView/Icons/$name.svg"
 render Page.md.in "Documentation/filters/$name.md"
 
 # Adds `item` to the sorted list that starts at the line `opening` in `file`.
@@ -61,4 +63,5 @@ add_to_list Source/Core/CMakeLists.txt "set(core_sources" "$area/$name.cxx"
 add_to_list Testing/Core/CMakeLists.txt "set(core_tests" "Test$name.cxx"
 add_to_list Testing/Filters/CMakeLists.txt "set(filter_tests" "Test${name}Filter.cxx"
 echo "Next: write the algorithm (Source/Core/$area/$name.cxx) and its tests, then the filter's"
-echo "parameters, a Python or pvbatch test, an image test and the page (Documentation/new-filter.md)."
+echo "parameters, a Python or pvbatch test, an image test, the page and the menu icon"
+echo "(Plugins/ParaView/Icons/$name.svg; Documentation/new-filter.md)."

@@ -9,7 +9,9 @@ build_dir=${KERF_BUILD_DIR:-$source_dir/build}
 "$source_dir/Utilities/setup.sh"
 "$source_dir/Utilities/build.sh"
 status=0
-(cd "$build_dir" && xvfb-run -a ctest --output-on-failure -j"$(nproc)" "$@") || status=$?
+# A 24-bit screen: on xvfb-run's default 8-bit one ParaView's render windows fail to open
+# ("bad X server connection") now and then.
+(cd "$build_dir" && xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j"$(nproc)" "$@") || status=$?
 
 if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
   sanitize_dir=${KERF_SANITIZE_BUILD_DIR:-$source_dir/build-sanitize}

@@ -11,11 +11,16 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from cut_from_stroke import neck_stroke  # noqa: E402
 
 
+def best_isoline_pipeline(field):
+    """Isoline Cut in Best score mode with 50 candidates on `field`'s HarmonicField."""
+    return simple.IsolineCut(Input=field, Mode=1, NumberOfCandidates=50)
+
+
 def best_isoline():
     """Returns the chosen iso-value, its score, its length, its pieces and the candidates' count."""
     field = neck_stroke()
     field.UpdatePipeline()
-    isoline = simple.IsolineCut(Input=field, Mode=1, NumberOfCandidates=50)
+    isoline = best_isoline_pipeline(field)
     isoline.UpdatePipeline()
     candidates = isoline.GetDataInformation(2).GetNumberOfRows()
     return {"iso_value": isoline.CellData["IsoValue"].GetRange()[0],

@@ -7,17 +7,30 @@ import sys
 from paraview import servermanager, simple
 from vtkmodules.util.numpy_support import vtk_to_numpy
 
-DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data")
+DATA = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Data"))
 
 
 def neck_stroke():
-    """The camel and Cut From Stroke with the neck stroke's points, as a user would place them in
+    """The camel and Stroke Cut with the neck stroke's points, as a user would place them in
     the panel (P on the surface)."""
     camel = simple.OpenDataFile(os.path.join(DATA, "camel.off"))
     stroke = servermanager.Fetch(
         simple.LegacyVTKReader(FileNames=[os.path.join(DATA, "camel-neck-stroke.vtk")]))
     points = vtk_to_numpy(stroke.GetPoints().GetData()).ravel().tolist()
-    return simple.CutFromStroke(Input=camel, StrokePoints=points)
+    return simple.StrokeCut(Input=camel, StrokePoints=points)
+
+
+def show(cut, view, colour_by="Segment"):
+    """Shows the segments (or another cell array of the cut's surface) and the cut in `view`."""
+    display = simple.Show(cut, view)
+    simple.ColorBy(display, ("CELLS", colour_by))
+    curve = simple.Show(simple.OutputPort(cut, 1), view)
+    curve.ColorArrayName = ["POINTS", ""]
+    curve.AmbientColor = curve.DiffuseColor = [0.1, 0.1, 0.1]
+    curve.LineWidth = 3.0
+    view.CameraPosition = [1.2, 0.6, 2.2]
+    view.CameraFocalPoint = [0.0, 0.0, 0.0]
+    simple.ResetCamera(view)
 
 
 def cut_from_stroke(picture=None):
@@ -30,12 +43,7 @@ def cut_from_stroke(picture=None):
     length = float(vtk_to_numpy(curve.GetCellData().GetArray("Length")).sum())
     if picture:
         view = simple.CreateView("RenderView", ViewSize=[600, 600])
-        display = simple.Show(cut, view)
-        simple.ColorBy(display, ("CELLS", "Segment"))
-        simple.Show(simple.OutputPort(cut, 1), view).LineWidth = 3.0
-        view.CameraPosition = [0.0, 0.5, 2.5]
-        view.CameraFocalPoint = [0.0, 0.2, 0.0]
-        simple.ResetCamera(view)
+        show(cut, view)
         simple.SaveScreenshot(picture, view, ImageResolution=[600, 600])
     sizes = [int((segments == label).sum()) for label in sorted(set(segments.tolist()))]
     return {"segment_sizes": sizes, "cut_length": length,

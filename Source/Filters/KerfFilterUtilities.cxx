@@ -502,10 +502,17 @@ void WriteCutLines(const CutResult& cut, vtkPolyData* lines)
   lines->GetCellData()->AddArray(MakeArray("Score", cut.scores));
 }
 
-void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output)
+std::string ClampedFieldName(const char* name)
+{
+  return std::string(name) + "Clamped";
+}
+
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution,
+  const FieldConstraints& constraints, const char* name, vtkPolyData* output)
 {
   output->GetPointData()->AddArray(MakeArray(name, surface.ToInputPoints(solution.field)));
-  output->GetPointData()->SetActiveScalars(name);
+  output->GetPointData()->AddArray(MakeArray(ClampedFieldName(name).c_str(),
+    surface.ToInputPoints(clampToConstraintRange(solution.field, constraints))));
   output->GetFieldData()->AddArray(MakeFieldValue("RelativeResidual", solution.relativeResidual));
   output->GetFieldData()->AddArray(MakeFieldValue("SolverWork", SolverWorkName(solution.work)));
 }

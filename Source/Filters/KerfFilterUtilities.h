@@ -144,9 +144,15 @@ void WritePolylines(const std::vector<PolylineToWrite>& polylines, vtkPolyData* 
 /// IsoValue, Score, Length and Closed.
 void WriteCutLines(const CutResult& cut, vtkPolyData* lines);
 
-/// A solved field on the output: the point array `name` (its active scalars) and the field data
-/// RelativeResidual and SolverWork.
-void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const char* name, vtkPolyData* output);
+/// A solved field on the output: the point array `name`, the point array `name`Clamped (the
+/// field clamped to the range of its constraint values, kerf::clampToConstraintRange: what a
+/// colour map shows readably) and the field data RelativeResidual and SolverWork. Sets no active
+/// scalars: the caller says what ParaView colours by.
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution,
+  const FieldConstraints& constraints, const char* name, vtkPolyData* output);
+
+/// The name of the clamped copy WriteField writes beside the field `name`.
+std::string ClampedFieldName(const char* name);
 
 /// "factorization", "update" or "back-substitution".
 std::string SolverWorkName(HarmonicFieldSolution::Work work);

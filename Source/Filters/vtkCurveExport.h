@@ -4,7 +4,7 @@
  * operators, scissor, snap and inverse snap (SeamCut, section 4), and the charts they bound.
  *
  * Input 0: the surface. Input 1: the curves, polylines on the surface (isolines from Isoline
- * Scoring or Cut From Stroke, seams from Geodesic Seam); a polyline whose last point repeats its
+ * Cut or Stroke Cut, seams from Geodesic Seam); a polyline whose last point repeats its
  * first is closed. Each polyline is placed on the surface (kerf::PlaceLinesOnSurface): its
  * points are projected onto it, and consecutive points that share no triangle are joined across
  * the triangles between them.

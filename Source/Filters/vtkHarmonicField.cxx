@@ -115,7 +115,8 @@ int vtkHarmonicField::RequestData(
     kerf::CheckFinite({ &solution.field, &magnitudes }, solution.relativeResidual,
       "the field or its gradient overflows (hard or constraint values too large for double precision)");
     this->State->surface.MakeOutput(input, output);
-    kerf::WriteField(this->State->surface, solution, this->FieldArrayName, output);
+    kerf::WriteField(this->State->surface, solution, constraints, this->FieldArrayName, output);
+    output->GetPointData()->SetActiveScalars(kerf::ClampedFieldName(this->FieldArrayName).c_str());
     output->GetCellData()->AddArray(kerf::MakeArray(this->GradientArrayName, gradients));
     output->GetCellData()->AddArray(kerf::MakeArray(this->GradientMagnitudeArrayName, magnitudes));
   });

@@ -33,7 +33,10 @@
  *
  * Output: the surface with point array HarmonicField and cell arrays FieldGradient (3
  * components) and FieldGradientMagnitude (names are parameters). Points used by no triangle get
- * the value 0.
+ * the value 0. Beside the field, HarmonicFieldClamped (the field's name + "Clamped"): the field
+ * clamped to the range of the constraint values, the active scalars, so that a colour map over
+ * its range shows the two sides and the transition where cuts lie (a least-squares field
+ * overshoots its constraints far from them). It is for display; cut with the field itself.
  *
  * Errors (vtkErrorMacro, return 0, no NaN output): a connected component without any constraint,
  * no constraint at all, constraint points farther from the surface than

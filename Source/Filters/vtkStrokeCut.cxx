@@ -118,8 +118,9 @@ int vtkStrokeCut::RequestData(
     const kerf::CutResult cut = session.chooseCut(solution.field, cutOptions);
 
     this->State->surface.MakeOutput(input, output);
-    kerf::WriteField(this->State->surface, solution, "HarmonicField", output);
+    kerf::WriteField(this->State->surface, solution, constraints, "HarmonicField", output);
     output->GetCellData()->AddArray(kerf::MakeIntArray("Segment", cut.labels));
+    output->GetCellData()->SetActiveScalars("Segment"); // what ParaView colours by after Apply
     kerf::WriteCutLines(cut, vtkPolyData::GetData(outputVector, 1));
   });
 }

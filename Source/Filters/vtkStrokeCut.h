@@ -1,18 +1,19 @@
 /**
  * @class vtkStrokeCut
- * @brief Cut From Stroke: a mesh cut along a stroke in one filter (SeamCut, section 2.1): the
+ * @brief Stroke Cut: a mesh cut along a stroke in one filter (SeamCut, section 2.1): the
  * stroke's constraints, the harmonic field, the isoline nearest the stroke and the segments it
  * bounds.
  *
  * The common case of the three-filter pipeline vtkStrokeConstraints -> vtkHarmonicField ->
- * vtkIsolineScoring (which stays available for every other case), with the same Core
+ * vtkIsolineCut (which stays available for every other case), with the same Core
  * (kerf::HarmonicCutSession) and the same results. The stroke is the polylines of input 1 or,
  * without it, the points set with SetStrokePoint (in ParaView an interactive polyline: point at
  * the surface and press P to place a point, Ctrl+P to add one). Moving the stroke re-solves
  * with the kept factorization (an update); changing IsoValue only re-extracts the cut.
  *
- * Output 0: the surface with the point array "HarmonicField" (its active scalars), the cell
- * array "Segment" (the two sides of the cut, split further into connected components) and the
+ * Output 0: the surface with the point arrays "HarmonicField" and "HarmonicFieldClamped" (for
+ * display, see vtkHarmonicField), the cell array "Segment" (the two sides of the cut, split
+ * further into connected components; the active scalars, what ParaView colours by) and the
  * field data "SolverWork" and "RelativeResidual". Output 1: the cut as polylines (IsoValue,
  * Score, Length, Closed).
  *

@@ -20,9 +20,9 @@
 //                                            point scalars, for reference
 //   BM_CoreScoreIsovalues/<size>             kerf::scoreIsovalues, 50 candidates
 //   BM_HarmonicCutNewStroke/<size>           a new stroke through vtkStrokeConstraints ->
-//                                            vtkHarmonicField -> vtkIsolineScoring (NEAR_STROKE)
+//                                            vtkHarmonicField -> vtkIsolineCut (NEAR_STROKE)
 //                                            on an unchanged mesh (SolverWork "update")
-//   BM_HarmonicCutSliding/<size>             only vtkIsolineScoring's IsoValue changes
+//   BM_HarmonicCutSliding/<size>             only vtkIsolineCut's IsoValue changes
 //   BM_HarmonicCutRefinement/<size>          a new refinement stroke at the slid cut's value,
 //                                            its constraints appended to the first stroke's
 //                                            (SolverWork "update"), and its cut
@@ -34,7 +34,7 @@
 #include "BenchmarkPolyData.h"
 #include "KerfBenchmarks.h"
 #include "vtkHarmonicField.h"
-#include "vtkIsolineScoring.h"
+#include "vtkIsolineCut.h"
 #include "vtkStrokeConstraints.h"
 
 #include "Geometry/ClosestPoint.h"
@@ -124,7 +124,7 @@ struct CutPipeline
   vtkNew<vtkStrokeConstraints> refinementConstraints;
   vtkNew<vtkAppendPolyData> bothStrokesConstraints;
   vtkNew<vtkHarmonicField> field;
-  vtkNew<vtkIsolineScoring> cut;
+  vtkNew<vtkIsolineCut> cut;
 
   CutPipeline(vtkPolyData* surface, const Strokes& strokes)
   {

@@ -1374,3 +1374,17 @@ TEST(ClosestPoint, EmptyMeshGivesNoFace)
   const ClosestPointLocator locator(empty);
   EXPECT_EQ(locator.closest(Vector3(1, 2, 3)).face, -1);
 }
+
+TEST(HarmonicField, ClampToConstraintRangeUsesHardAndSoftValues)
+{
+  FieldConstraints constraints;
+  const std::vector<double> field{ -12.0, -1.0, 0.25, 0.5, 26.0 };
+  EXPECT_EQ(clampToConstraintRange(field, constraints), field); // nothing to clamp to
+  constraints.soft.push_back({ 0, Vector3(1.0, 0.0, 0.0), 1.0 });
+  constraints.soft.push_back({ 0, Vector3(0.0, 1.0, 0.0), -1.0 });
+  EXPECT_EQ(clampToConstraintRange(field, constraints), (std::vector<double>{ -1.0, -1.0, 0.25, 0.5, 1.0 }));
+  constraints.soft.clear();
+  constraints.dirichletVertices = { 0, 1 };
+  constraints.dirichletValues = { 0.0, 0.5 };
+  EXPECT_EQ(clampToConstraintRange(field, constraints), (std::vector<double>{ 0.0, 0.0, 0.25, 0.5, 0.5 }));
+}

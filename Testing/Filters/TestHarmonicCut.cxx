@@ -1,10 +1,10 @@
-// The stroke pipeline (vtkStrokeConstraints -> vtkHarmonicField -> vtkIsolineScoring): the cut
+// The stroke pipeline (vtkStrokeConstraints -> vtkHarmonicField -> vtkIsolineCut): the cut
 // follows the stroke, sliding moves it without solving again, and ROI Scissor's best score finds
 // a neck.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkHarmonicField.h"
-#include "vtkIsolineScoring.h"
+#include "vtkIsolineCut.h"
 #include "vtkStrokeConstraints.h"
 
 #include <vtkCellArray.h>
@@ -87,7 +87,7 @@ int TestHarmonicCut(int, char*[])
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(0, cylinder);
   field->SetInputConnection(1, constraints->GetOutputPort());
-  vtkNew<vtkIsolineScoring> cut;
+  vtkNew<vtkIsolineCut> cut;
   cut->SetInputConnection(field->GetOutputPort());
   cut->SetInputData(1, stroke);
   cut->SetModeToNearStroke();
@@ -143,7 +143,7 @@ int TestHarmonicCut(int, char*[])
   neckField->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Tips");
   neckField->UseHardValuesOn();
   neckField->SetWeightingToConcavityAware();
-  vtkNew<vtkIsolineScoring> best;
+  vtkNew<vtkIsolineCut> best;
   best->SetInputConnection(neckField->GetOutputPort());
   best->SetModeToBestScore();
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(best).empty());
@@ -190,7 +190,7 @@ int TestHarmonicCut(int, char*[])
   activeField->SetName("Potential");
   renamed->GetPointData()->RemoveArray("HarmonicField");
   renamed->GetPointData()->SetScalars(activeField);
-  vtkNew<vtkIsolineScoring> unnamed;
+  vtkNew<vtkIsolineCut> unnamed;
   unnamed->SetInputData(renamed);
   unnamed->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "");
   unnamed->SetModeToBestScore();
@@ -200,11 +200,11 @@ int TestHarmonicCut(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(unnamed).find("no active point scalars") != std::string::npos);
 
   // Errors.
-  vtkNew<vtkIsolineScoring> noStroke;
+  vtkNew<vtkIsolineCut> noStroke;
   noStroke->SetInputConnection(field->GetOutputPort());
   noStroke->SetModeToNearStroke();
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(noStroke).find("needs a stroke") != std::string::npos);
-  vtkNew<vtkIsolineScoring> noField;
+  vtkNew<vtkIsolineCut> noField;
   noField->SetInputData(cylinder);
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(noField).find("one-component point array") != std::string::npos);
   vtkNew<vtkDoubleArray> constant;
@@ -214,7 +214,7 @@ int TestHarmonicCut(int, char*[])
   vtkNew<vtkPolyData> flat;
   flat->ShallowCopy(cylinder);
   flat->GetPointData()->AddArray(constant);
-  vtkNew<vtkIsolineScoring> flatScore;
+  vtkNew<vtkIsolineCut> flatScore;
   flatScore->SetInputData(flat);
   flatScore->SetModeToBestScore();
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(flatScore).find("constant") != std::string::npos);

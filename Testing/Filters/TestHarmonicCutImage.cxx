@@ -2,7 +2,7 @@
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkHarmonicField.h"
-#include "vtkIsolineScoring.h"
+#include "vtkIsolineCut.h"
 #include "vtkMeshFileReader.h"
 #include "vtkStrokeConstraints.h"
 
@@ -24,7 +24,7 @@ int TestHarmonicCutImage(int argc, char* argv[])
   vtkNew<vtkHarmonicField> field;
   field->SetInputConnection(0, camel->GetOutputPort());
   field->SetInputConnection(1, constraints->GetOutputPort());
-  vtkNew<vtkIsolineScoring> cut;
+  vtkNew<vtkIsolineCut> cut;
   cut->SetInputConnection(0, field->GetOutputPort());
   cut->SetInputConnection(1, stroke->GetOutputPort());
   cut->SetModeToNearStroke();

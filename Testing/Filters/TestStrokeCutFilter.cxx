@@ -1,9 +1,9 @@
-// Cut From Stroke (vtkStrokeCut): the same cut as the three-filter pipeline, stroke points from the
+// Stroke Cut (vtkStrokeCut): the same cut as the three-filter pipeline, stroke points from the
 // panel moved onto the surface, the factorization kept, and its errors.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkHarmonicField.h"
-#include "vtkIsolineScoring.h"
+#include "vtkIsolineCut.h"
 #include "vtkStrokeConstraints.h"
 #include "vtkStrokeCut.h"
 
@@ -66,7 +66,7 @@ int TestStrokeCutFilter(int, char*[])
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(0, cylinder);
   field->SetInputConnection(1, constraints->GetOutputPort());
-  vtkNew<vtkIsolineScoring> isoline;
+  vtkNew<vtkIsolineCut> isoline;
   isoline->SetInputConnection(0, field->GetOutputPort());
   isoline->SetInputData(1, stroke);
   isoline->SetModeToNearStroke();

@@ -1,15 +1,21 @@
-# The pvpython examples of Documentation/examples, run as a user would and checked by their numbers.
+# The examples of Documentation/examples, run as a user would and checked by their numbers: the
+# pvpython scripts, and the ParaView state files loaded from another folder with the Data folder
+# given for their files (what the GUI's "Search files under specified directory" does).
 import os
 import sys
 import unittest
 
-from paraview import simple
+from paraview import servermanager, simple
+from vtkmodules.util.numpy_support import vtk_to_numpy
 
-sys.path.insert(0, os.path.join(os.environ["KERF_SOURCE_DIR"], "Documentation", "examples"))
+EXAMPLES = os.path.join(os.environ["KERF_SOURCE_DIR"], "Documentation", "examples")
+sys.path.insert(0, EXAMPLES)
 simple.LoadPlugin(os.environ["KERF_PLUGIN"])
 
 import best_isoline  # noqa: E402
 import cut_from_stroke  # noqa: E402
+import descriptors  # noqa: E402
+import segmentation_metrics  # noqa: E402
 
 CAMEL_FACES = 19536
 
@@ -31,6 +37,55 @@ class ExamplesTest(unittest.TestCase):
         # stroke's own cut.
         self.assertEqual(result["pieces"], 1)
         self.assertAlmostEqual(result["length"], 0.284, delta=0.003)
+
+
+    def test_descriptors(self):
+        result = descriptors.descriptors()
+        self.assertEqual(result["points"], 9770)
+        # About a fifth of the camel's vertices are concave (creases at the legs, neck, humps).
+        self.assertAlmostEqual(result["concave_share"], 0.207062, places=5)
+        low, high = result["mean_curvature_5_95"]
+        self.assertAlmostEqual(low, -37.88, delta=0.01)
+        self.assertAlmostEqual(high, 92.78, delta=0.01)
+
+    def test_segmentation_metrics(self):
+        result = segmentation_metrics.segmentation_metrics()
+        # The stroke's cut and the plane of Data/camel-neck-plane.seg differ by a few faces at the
+        # neck: 5,828 and 5,831 faces on the head's side.
+        self.assertAlmostEqual(result["RandIndexError"], 0.000307, delta=2e-6)
+        self.assertAlmostEqual(result["HammingDistance"], 0.000199, delta=2e-6)
+        self.assertAlmostEqual(result["CutDiscrepancy"], 0.00206, delta=2e-5)
+
+    def load_state(self, name):
+        """Loads states/<name>.pvsm from the test's own folder, its files found under Data;
+        returns its proxies by XML name."""
+        before = set(simple.GetSources().values())
+        simple.LoadState(os.path.join(EXAMPLES, "states", name + ".pvsm"),
+                         data_directory=cut_from_stroke.DATA, restrict_to_data_directory=True)
+        loaded = {proxy.GetXMLName(): proxy for proxy in set(simple.GetSources().values()) - before}
+        for proxy in loaded.values():
+            proxy.UpdatePipeline()
+        reader = loaded["KerfOFFReader"]
+        self.assertEqual(reader.FileName, os.path.join(cut_from_stroke.DATA, "camel.off"))
+        return loaded
+
+    def test_states(self):
+        self.assertNotEqual(os.getcwd(), os.environ["KERF_SOURCE_DIR"])
+        with self.subTest(state="cut_from_stroke"):
+            segments = vtk_to_numpy(servermanager.Fetch(self.load_state("cut_from_stroke")["KerfStrokeCut"])
+                                    .GetCellData().GetArray("Segment"))
+            self.assertEqual(sorted(int((segments == label).sum()) for label in set(segments.tolist())), [5828, 13708])
+        with self.subTest(state="best_isoline"):
+            isoline = self.load_state("best_isoline")["KerfIsolineCut"]
+            self.assertEqual(isoline.GetDataInformation().GetNumberOfCells(), 1)
+            self.assertAlmostEqual(isoline.CellData["Length"].GetRange()[1], 0.284, delta=0.003)
+        with self.subTest(state="descriptors"):
+            result = servermanager.Fetch(self.load_state("descriptors")["KerfSurfaceDescriptors"])
+            concave = vtk_to_numpy(result.GetPointData().GetArray("Concave"))
+            self.assertAlmostEqual(float((concave > 0).mean()), 0.207062, places=5)
+        with self.subTest(state="segmentation_metrics"):
+            table = servermanager.Fetch(self.load_state("segmentation_metrics")["KerfSegmentationMetrics"])
+            self.assertAlmostEqual(table.GetColumnByName("RandIndexError").GetValue(0), 0.000307, delta=2e-6)
 
 
 if __name__ == "__main__":

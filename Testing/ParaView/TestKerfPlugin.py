@@ -1,5 +1,7 @@
 # The Kerf ParaView plugin end to end in pvbatch or pvpython: load it, run its proxies, check menus.
 import os
+import re
+import sys
 import unittest
 
 from paraview import servermanager
@@ -39,19 +41,19 @@ class KerfPluginTest(unittest.TestCase):
         self.assertLess(abs(mean * RADIUS - 1).mean(), 0.01)
 
     def test_off_files_open_with_the_kerf_reader(self):
-        for reader in (simple.OpenDataFile(CAMEL), simple.OFFMeshReader(FileName=CAMEL)):
+        for reader in (simple.OpenDataFile(CAMEL), simple.OFFReader(FileName=CAMEL)):
             self.assertEqual(reader.SMProxy.GetXMLName(), "KerfOFFReader")
             reader.UpdatePipeline()
             information = reader.GetDataInformation()
             self.assertEqual(information.GetNumberOfPoints(), 9770)
             self.assertEqual(information.GetNumberOfCells(), 19536)
 
-    def test_cut_from_stroke_applies_at_once(self):
-        """A first-time user adds Cut From Stroke to the camel and presses Apply: the stroke
+    def test_stroke_cut_applies_at_once(self):
+        """A first-time user adds Stroke Cut to the camel and presses Apply: the stroke
         starts across the middle of the surface, so a cut comes out without any error."""
         camel = simple.OpenDataFile(CAMEL)
         camel.UpdatePipeline()
-        cut = simple.CutFromStroke(Input=camel)
+        cut = simple.StrokeCut(Input=camel)
         points = list(cut.StrokePoints)
         bounds = camel.GetDataInformation().GetBounds()
         self.assertEqual(len(points), 6)
@@ -62,6 +64,26 @@ class KerfPluginTest(unittest.TestCase):
         self.assertEqual(len(segments), 19536)
         self.assertGreaterEqual(segments.max(), 1)
         self.assertGreaterEqual(servermanager.Fetch(cut, idx=1).GetNumberOfLines(), 1)
+
+    def test_what_paraview_colours_by_after_apply(self):
+        """Shown with their defaults, Stroke Cut's output is coloured by its segments, and Harmonic
+        Field's (with Stroke Constraints' default stroke, applied at once) by the field clamped to
+        its constraint values, -1..1, not by the field, whose least-squares values overshoot far
+        beyond them."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        view = simple.CreateRenderView()
+        cut = simple.StrokeCut(Input=camel)
+        self.assertEqual(list(simple.Show(cut, view).ColorArrayName), ["CELLS", "Segment"])
+        constraints = simple.StrokeConstraints(Input=camel)
+        field = simple.HarmonicField(Input=camel, Constraints=constraints)
+        self.assertEqual(list(simple.Show(field, view).ColorArrayName), ["POINTS", "HarmonicFieldClamped"])
+        colours = simple.GetColorTransferFunction("HarmonicFieldClamped").RGBPoints
+        self.assertEqual((colours[0], colours[-4]), (-1.0, 1.0))
+        low, high = field.PointData["HarmonicField"].GetRange()
+        self.assertLess(low, -10.0)
+        self.assertGreater(high, 10.0)
+        simple.Delete(view)
 
     def test_automatic_segmentation_proxies(self):
         """Each automatic-segmentation proxy, by its label, labels every camel face with the
@@ -128,6 +150,28 @@ class KerfPluginTest(unittest.TestCase):
         self.assertTrue(0 < segment.sum() < 0.1 * len(segment))
         boundary = servermanager.Fetch(cut, idx=1)
         self.assertEqual(boundary.GetNumberOfLines(), 1)
+
+    def test_one_name_everywhere(self):
+        """Every Kerf proxy's label, without spaces and punctuation, is its class's name without
+        the vtk prefix, and its proxy's name without the Kerf prefix: Isoline Cut is vtkIsolineCut
+        in C++ and in the kerf Python package, and IsolineCut() in paraview.simple."""
+        sys.path.insert(0, os.environ["PYTHONPATH"].split(os.pathsep)[0])
+        import kerf
+        names = []
+        for group in ("sources", "filters", "writers"):
+            for name, definition in proxy_definitions(group):
+                if not name.startswith("Kerf"):
+                    continue
+                label = definition.GetAttribute("label")
+                with self.subTest(proxy=name, label=label):
+                    one_name = re.sub(r"[^0-9A-Za-z]", "", label)
+                    self.assertEqual(definition.GetAttribute("class"), "vtk" + one_name)
+                    self.assertEqual(name, "Kerf" + one_name)
+                    self.assertTrue(hasattr(kerf, "vtk" + one_name))
+                    if group != "writers":
+                        self.assertTrue(hasattr(simple, one_name))
+                    names.append(one_name)
+        self.assertLessEqual({"StrokeCut", "IsolineCut", "OFFReader", "OFFWriter", "SurfaceDescriptors"}, set(names))
 
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}

@@ -236,7 +236,7 @@ class BadConstraintsTest(unittest.TestCase):
         surface = octahedron()
         surface.GetPointData().AddArray(point_set([], "HarmonicField", [1, -1, 0.5, -0.5, 0.2, -0.2])
                                         .GetPointData().GetArray("HarmonicField"))
-        cut = kerf.vtkIsolineScoring()
+        cut = kerf.vtkIsolineCut()
         cut.SetInputData(surface)
         cut.SetInputData(1, point_set([(math.nan, 0, 0)]))
         cut.SetModeToNearStroke()

@@ -93,7 +93,7 @@ def diagonal_of(data):
 
 
 class CutPipeline:
-    """camel.off and the neck stroke -> vtkStrokeConstraints -> vtkHarmonicField -> vtkIsolineScoring."""
+    """camel.off and the neck stroke -> vtkStrokeConstraints -> vtkHarmonicField -> vtkIsolineCut."""
 
     def __init__(self):
         self.errors = ErrorLog()
@@ -105,7 +105,7 @@ class CutPipeline:
         self.field = kerf.vtkHarmonicField()
         self.field.SetInputConnection(0, self.mesh.GetOutputPort())
         self.field.SetConstraintConnection(self.constraints.GetOutputPort())
-        self.cut = kerf.vtkIsolineScoring()
+        self.cut = kerf.vtkIsolineCut()
         self.cut.SetInputConnection(0, self.field.GetOutputPort())
         self.cut.SetStrokeConnection(self.stroke.GetOutputPort())
         self.cut.SetModeToNearStroke()
@@ -261,7 +261,7 @@ class HarmonicCutTest(unittest.TestCase):
         field.SetInputArrayToProcess(0, 0, 0, 0, "Tips")
         field.UseHardValuesOn()
         field.SetWeightingToConcavityAware()
-        best = kerf.vtkIsolineScoring()
+        best = kerf.vtkIsolineCut()
         best.SetInputConnection(field.GetOutputPort())
         best.SetModeToBestScore()
         errors = ErrorLog()

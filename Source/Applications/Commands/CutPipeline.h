@@ -3,7 +3,7 @@
 
 #include "KerfArguments.h"
 #include "vtkHarmonicField.h"
-#include "vtkIsolineScoring.h"
+#include "vtkIsolineCut.h"
 #include "vtkStrokeConstraints.h"
 #include "vtkSurfaceDescriptors.h"
 
@@ -23,7 +23,7 @@ struct CutPipeline
   vtkNew<vtkSurfaceDescriptors> descriptors;
   vtkNew<vtkStrokeConstraints> constraints;
   vtkNew<vtkHarmonicField> field;
-  vtkNew<vtkIsolineScoring> cut;
+  vtkNew<vtkIsolineCut> cut;
   std::map<std::string, double> milliseconds; ///< per stage
 
   /// mesh -> descriptors -> stroke constraints -> harmonic field -> cut nearest the stroke, with

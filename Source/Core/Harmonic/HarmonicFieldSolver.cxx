@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace kerf
@@ -674,6 +675,31 @@ HarmonicFieldSolution HarmonicFieldSolver::solve(
   solution.relativeResidual = this->relativeResidual(mesh, constraints, problem, hardRhs, x, offset);
   solution.field = this->assembleField(mesh, problem, x, offset);
   return solution;
+}
+
+std::vector<double> clampToConstraintRange(const std::vector<double>& field, const FieldConstraints& constraints)
+{
+  double low = std::numeric_limits<double>::infinity();
+  double high = -low;
+  for (const double value : constraints.dirichletValues)
+  {
+    low = std::min(low, value);
+    high = std::max(high, value);
+  }
+  for (const SoftConstraint& constraint : constraints.soft)
+  {
+    low = std::min(low, constraint.value);
+    high = std::max(high, constraint.value);
+  }
+  std::vector<double> clamped = field;
+  if (low <= high)
+  {
+    for (double& value : clamped)
+    {
+      value = std::clamp(value, low, high);
+    }
+  }
+  return clamped;
 }
 
 } // namespace kerf

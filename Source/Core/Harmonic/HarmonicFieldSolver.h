@@ -66,6 +66,13 @@ struct HarmonicFieldSolution
   Work work = Work::Factorization;
 };
 
+/// The field for display: each value clamped to the range of the constraint values (hard and
+/// soft). A least-squares field overshoots its constraints far from them (-12..26 for +-1 on the
+/// bundled camel, -4,413..29,910 with concavity-aware weights), so a colour map over its whole
+/// range shows one colour; clamped, it shows the two sides and the transition where cuts lie.
+/// Without constraints the field is returned as it is.
+std::vector<double> clampToConstraintRange(const std::vector<double>& field, const FieldConstraints& constraints);
+
 /// Solves for the field f, reusing its factorization while the mesh, the weights, the hard
 /// vertices and the formulation stay the same, and its low-rank term while the constraint
 /// locations do.

@@ -1,5 +1,5 @@
-// vtkIsolineScoring: reads the field and the stroke, chooses the cut with the surface's session, writes it.
-#include "vtkIsolineScoring.h"
+// vtkIsolineCut: reads the field and the stroke, chooses the cut with the surface's session, writes it.
+#include "vtkIsolineCut.h"
 
 #include "Harmonic/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
@@ -26,21 +26,21 @@
 #include <cmath>
 #include <limits>
 
-vtkStandardNewMacro(vtkIsolineScoring);
+vtkStandardNewMacro(vtkIsolineCut);
 
 // The mode codes are the Core enumeration's values.
-static_assert(static_cast<int>(kerf::CutMode::Value) == vtkIsolineScoring::VALUE &&
-    static_cast<int>(kerf::CutMode::BestScore) == vtkIsolineScoring::BEST_SCORE &&
-    static_cast<int>(kerf::CutMode::NearStroke) == vtkIsolineScoring::NEAR_STROKE,
-  "vtkIsolineScoring's Modes follow kerf::CutMode");
+static_assert(static_cast<int>(kerf::CutMode::Value) == vtkIsolineCut::VALUE &&
+    static_cast<int>(kerf::CutMode::BestScore) == vtkIsolineCut::BEST_SCORE &&
+    static_cast<int>(kerf::CutMode::NearStroke) == vtkIsolineCut::NEAR_STROKE,
+  "vtkIsolineCut's Modes follow kerf::CutMode");
 
-struct vtkIsolineScoring::Internals
+struct vtkIsolineCut::Internals
 {
   kerf::SurfaceInput surface;
   std::unique_ptr<kerf::HarmonicCutSession> session;
 };
 
-vtkIsolineScoring::vtkIsolineScoring()
+vtkIsolineCut::vtkIsolineCut()
   : State(new Internals)
 {
   this->SetNumberOfInputPorts(2);
@@ -49,27 +49,27 @@ vtkIsolineScoring::vtkIsolineScoring()
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "HarmonicField");
 }
 
-vtkIsolineScoring::~vtkIsolineScoring()
+vtkIsolineCut::~vtkIsolineCut()
 {
   this->SetSegmentArrayName(nullptr);
 }
 
-vtkPolyData* vtkIsolineScoring::GetLabelledSurface()
+vtkPolyData* vtkIsolineCut::GetLabelledSurface()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-vtkTable* vtkIsolineScoring::GetCandidates()
+vtkTable* vtkIsolineCut::GetCandidates()
 {
   return vtkTable::SafeDownCast(this->GetOutputDataObject(2));
 }
 
-int vtkIsolineScoring::FillInputPortInformation(int port, vtkInformation* info)
+int vtkIsolineCut::FillInputPortInformation(int port, vtkInformation* info)
 {
   return kerf::FillSurfaceAndOptionalPointsPorts(port, info);
 }
 
-int vtkIsolineScoring::FillOutputPortInformation(int port, vtkInformation* info)
+int vtkIsolineCut::FillOutputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkDataObject::DATA_TYPE_NAME(), port == 2 ? "vtkTable" : "vtkPolyData");
   return 1;
@@ -96,7 +96,7 @@ void writeCandidates(const kerf::CutResult& cut, vtkTable* table)
 }
 } // namespace
 
-int vtkIsolineScoring::RequestData(
+int vtkIsolineCut::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot extract isolines", [&]() {
@@ -127,7 +127,7 @@ int vtkIsolineScoring::RequestData(
   });
 }
 
-void vtkIsolineScoring::PrintSelf(ostream& os, vtkIndent indent)
+void vtkIsolineCut::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Mode: " << this->Mode << "\n";

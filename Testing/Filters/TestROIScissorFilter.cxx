@@ -1,8 +1,8 @@
-// ROI Scissor (vtkRoiScissor): the protrusion of a dumbbell against its known part (Rand index), the boundary in the crease, clicks as an input, kept click distances, errors.
+// ROI Scissor (vtkROIScissor): the protrusion of a dumbbell against its known part (Rand index), the boundary in the crease, clicks as an input, kept click distances, errors.
 #include "Evaluation/SegmentationMetrics.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
-#include "vtkRoiScissor.h"
+#include "vtkROIScissor.h"
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -59,7 +59,7 @@ std::vector<int> labelsOf(vtkPolyData* output)
 }
 } // namespace
 
-int TestRoiScissorFilter(int, char*[])
+int TestROIScissorFilter(int, char*[])
 {
   bool ok = true;
   const kerf::TriangleMesh mesh = kerf::makeDumbbell(HalfLength, Radii, NeckHeight, NeckDepth, 5);
@@ -75,7 +75,7 @@ int TestRoiScissorFilter(int, char*[])
 
   // One click at the protrusion's tip, radius half the diagonal (2.6): the region is the
   // protrusion.
-  vtkNew<vtkRoiScissor> roi;
+  vtkNew<vtkROIScissor> roi;
   roi->SetInputData(0, dumbbell);
   const double tip = HalfLength - 0.05;
   roi->SetClickPoint(kerf::dumbbellRadius(tip, HalfLength, Radii, NeckHeight, NeckDepth), 0.0, tip);

@@ -1,5 +1,5 @@
 /**
- * @class vtkIsolineScoring
+ * @class vtkIsolineCut
  * @brief Chooses a cut as an isoline of a scalar field: at a given value, the best-scored of
  * sampled values (ROI Scissor), or the component nearest to a stroke (SeamCut); labels the two
  * sides.
@@ -27,8 +27,8 @@
  * in BEST_SCORE mode, and surfaces refused by validation (the filter needs an edge-manifold,
  * consistently oriented surface).
  */
-#ifndef vtkIsolineScoring_h
-#define vtkIsolineScoring_h
+#ifndef vtkIsolineCut_h
+#define vtkIsolineCut_h
 
 #include "KerfFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
@@ -37,11 +37,11 @@
 
 class vtkTable;
 
-class KERFFILTERS_EXPORT vtkIsolineScoring : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkIsolineCut : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkIsolineScoring* New();
-  vtkTypeMacro(vtkIsolineScoring, vtkPolyDataAlgorithm);
+  static vtkIsolineCut* New();
+  vtkTypeMacro(vtkIsolineCut, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Modes
@@ -86,8 +86,8 @@ public:
   void SetStrokeConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
 
 protected:
-  vtkIsolineScoring();
-  ~vtkIsolineScoring() override;
+  vtkIsolineCut();
+  ~vtkIsolineCut() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int FillOutputPortInformation(int port, vtkInformation* info) override;
@@ -100,8 +100,8 @@ protected:
   char* SegmentArrayName = nullptr;
 
 private:
-  vtkIsolineScoring(const vtkIsolineScoring&) = delete;
-  void operator=(const vtkIsolineScoring&) = delete;
+  vtkIsolineCut(const vtkIsolineCut&) = delete;
+  void operator=(const vtkIsolineCut&) = delete;
 
   struct Internals;
   std::unique_ptr<Internals> State;

@@ -2,7 +2,7 @@
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkMeshFileReader.h"
-#include "vtkRoiScissor.h"
+#include "vtkROIScissor.h"
 
 #include <vtkNew.h>
 #include <vtkPoints.h>
@@ -12,7 +12,7 @@
 
 #include <iostream>
 
-int TestRoiScissorImage(int argc, char* argv[])
+int TestROIScissorImage(int argc, char* argv[])
 {
   vtkNew<vtkMeshFileReader> camel;
   camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
@@ -28,7 +28,7 @@ int TestRoiScissorImage(int argc, char* argv[])
   vtkNew<vtkPoints> clickPoints;
   clickPoints->InsertNextPoint(surface->GetPoint(tip));
   click->SetPoints(clickPoints);
-  vtkNew<vtkRoiScissor> roi;
+  vtkNew<vtkROIScissor> roi;
   roi->SetInputConnection(0, camel->GetOutputPort());
   roi->SetInputData(1, click);
   roi->SetRadius(0.2);

@@ -1,5 +1,5 @@
-// vtkRoiScissor: clicks placed on the surface, ROI Scissor through the Core with the surface's click distances kept, labels and boundary out.
-#include "vtkRoiScissor.h"
+// vtkROIScissor: clicks placed on the surface, ROI Scissor through the Core with the surface's click distances kept, labels and boundary out.
+#include "vtkROIScissor.h"
 
 #include "Error.h"
 #include "Geodesic/RoiScissor.h"
@@ -19,15 +19,15 @@
 
 #include <limits>
 
-vtkStandardNewMacro(vtkRoiScissor);
+vtkStandardNewMacro(vtkROIScissor);
 
-struct vtkRoiScissor::Internals
+struct vtkROIScissor::Internals
 {
   kerf::SurfaceInput surface;
   std::unique_ptr<kerf::ClickDistances> clickDistances;
 };
 
-vtkRoiScissor::vtkRoiScissor()
+vtkROIScissor::vtkROIScissor()
   : State(new Internals)
 {
   this->SetNumberOfInputPorts(2);
@@ -35,22 +35,22 @@ vtkRoiScissor::vtkRoiScissor()
   this->SetRegionArrayName("RoiRegion");
 }
 
-vtkRoiScissor::~vtkRoiScissor()
+vtkROIScissor::~vtkROIScissor()
 {
   this->SetRegionArrayName(nullptr);
 }
 
-vtkPolyData* vtkRoiScissor::GetBoundary()
+vtkPolyData* vtkROIScissor::GetBoundary()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int vtkRoiScissor::FillInputPortInformation(int port, vtkInformation* info)
+int vtkROIScissor::FillInputPortInformation(int port, vtkInformation* info)
 {
   return kerf::FillSurfaceAndOptionalPointsPorts(port, info);
 }
 
-int vtkRoiScissor::RequestData(
+int vtkROIScissor::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot select the region", [&]() {
@@ -110,7 +110,7 @@ int vtkRoiScissor::RequestData(
   });
 }
 
-void vtkRoiScissor::PrintSelf(ostream& os, vtkIndent indent)
+void vtkROIScissor::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ClickPoint: " << this->ClickPoint[0] << " " << this->ClickPoint[1] << " " << this->ClickPoint[2]

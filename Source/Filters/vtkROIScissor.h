@@ -1,5 +1,5 @@
 /**
- * @class vtkRoiScissor
+ * @class vtkROIScissor
  * @brief ROI Scissor: the feature region around a click, bounded where the surface is most
  * concave (ROI Scissor, sections 4.1-4.3).
  *
@@ -29,19 +29,19 @@
  * whole component or too small to hold its inner vertices, a field without a closed isoline,
  * NaN parameters.
  */
-#ifndef vtkRoiScissor_h
-#define vtkRoiScissor_h
+#ifndef vtkROIScissor_h
+#define vtkROIScissor_h
 
 #include "KerfFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory>
 
-class KERFFILTERS_EXPORT vtkRoiScissor : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkROIScissor : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkRoiScissor* New();
-  vtkTypeMacro(vtkRoiScissor, vtkPolyDataAlgorithm);
+  static vtkROIScissor* New();
+  vtkTypeMacro(vtkROIScissor, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -99,8 +99,8 @@ public:
   vtkPolyData* GetBoundary();
 
 protected:
-  vtkRoiScissor();
-  ~vtkRoiScissor() override;
+  vtkROIScissor();
+  ~vtkROIScissor() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
@@ -116,8 +116,8 @@ protected:
   char* RegionArrayName = nullptr;
 
 private:
-  vtkRoiScissor(const vtkRoiScissor&) = delete;
-  void operator=(const vtkRoiScissor&) = delete;
+  vtkROIScissor(const vtkROIScissor&) = delete;
+  void operator=(const vtkROIScissor&) = delete;
 
   struct Internals;
   std::unique_ptr<Internals> State;
