@@ -5,6 +5,7 @@
 #include "Export/CurveExport.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
+#include "Mesh/SplitAlongFaceLabels.h"
 #include "Session/Surface.h"
 
 #include <vtkCellArray.h>
@@ -120,17 +121,57 @@ void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInpu
   field->AddArray(kerf::MakeFieldValue("RefusedFlips", result.refusedFlips));
 }
 
-// Output 1: each cut edge as a line between output 0's points.
-void writeCutEdges(const kerf::CurveExportResult& result, const kerf::TriangleMesh& mesh, vtkPolyData* output,
-  vtkPolyData* edges)
+// Output 0 cut open where charts meet (kerf::splitAlongFaceLabels): its points copied once per
+// chart around them, with their point data; its triangles and cell data as they were.
+kerf::SplitMesh splitOpen(const kerf::CurveExportResult& result, const kerf::TriangleMesh& mesh, vtkPolyData* output)
 {
+  kerf::SplitMesh split = kerf::splitAlongFaceLabels(mesh, result.charts);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(split.mesh.vertexCount());
+  vtkNew<vtkPointData> pointData;
+  pointData->CopyAllocate(output->GetPointData(), split.mesh.vertexCount());
+  for (int v = 0; v < split.mesh.vertexCount(); ++v)
+  {
+    points->SetPoint(v, split.mesh.point(v).data());
+    pointData->CopyData(output->GetPointData(), split.originalPoint[static_cast<std::size_t>(v)], v);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(split.mesh.faceCount(), 3 * split.mesh.faceCount());
+  for (const kerf::Triangle& t : split.mesh.triangles())
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  output->GetPointData()->ShallowCopy(pointData);
+  return split;
+}
+
+// Output 1: each cut edge as a line between output 0's points; on a mesh cut open, once per side.
+void writeCutEdges(const kerf::CurveExportResult& result, const kerf::TriangleMesh& mesh,
+  const kerf::TriangleMesh& written, vtkPolyData* output, vtkPolyData* edges)
+{
+  std::vector<char> cut(static_cast<std::size_t>(written.edgeCount()), 0);
+  for (int f = 0; f < mesh.faceCount(); ++f) // faces keep their order and corners when cut open
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const int e = mesh.faceEdge(f, k);
+      if (e >= 0 && result.cutEdges[static_cast<std::size_t>(e)] && written.faceEdge(f, k) >= 0)
+      {
+        cut[static_cast<std::size_t>(written.faceEdge(f, k))] = 1;
+      }
+    }
+  }
   edges->SetPoints(output->GetPoints());
   vtkNew<vtkCellArray> lines;
-  for (int e = 0; e < mesh.edgeCount(); ++e)
+  for (int e = 0; e < written.edgeCount(); ++e)
   {
-    if (result.cutEdges[static_cast<std::size_t>(e)])
+    if (cut[static_cast<std::size_t>(e)])
     {
-      const vtkIdType ids[2] = { mesh.edgeVertices(e)[0], mesh.edgeVertices(e)[1] };
+      const vtkIdType ids[2] = { written.edgeVertices(e)[0], written.edgeVertices(e)[1] };
       lines->InsertNextCell(2, ids);
     }
   }
@@ -173,8 +214,8 @@ int vtkCurveExport::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkPolyData* lines = vtkPolyData::GetData(inputVector[1], 0);
     if (!lines)
     {
-      throw kerf::Error("there is no curve: connect polylines on the surface to input 1 (for example Cut From "
-                        "Stroke's cut or Geodesic Seam's seam)");
+      throw kerf::Error("there is no curve: connect polylines on the surface to input 1 (for example Stroke "
+                        "Cut's cut or Geodesic Seam's seam)");
     }
     const double tolerance = kerf::Finite(this->Tolerance, "Tolerance") *
       surface.derived<double>("mean edge length", [&]() { return meanEdgeLength(surface.mesh()); });
@@ -186,7 +227,17 @@ int vtkCurveExport::RequestData(vtkInformation*, vtkInformationVector** inputVec
     options.mode = static_cast<kerf::CurveExportMode>(this->Mode);
     const kerf::CurveExportResult result = kerf::exportCurves(surface.mesh(), curves, options);
     writeSurface(result, this->State->surface, input, output);
-    writeCutEdges(result, kerf::exportedMesh(result, surface.mesh()), output, vtkPolyData::GetData(outputVector, 1));
+    const kerf::TriangleMesh& exported = kerf::exportedMesh(result, surface.mesh());
+    vtkPolyData* cutEdges = vtkPolyData::GetData(outputVector, 1);
+    if (this->SplitOpen)
+    {
+      const kerf::SplitMesh split = splitOpen(result, exported, output);
+      writeCutEdges(result, exported, split.mesh, output, cutEdges);
+    }
+    else
+    {
+      writeCutEdges(result, exported, exported, output, cutEdges);
+    }
   });
 }
 
@@ -195,4 +246,5 @@ void vtkCurveExport::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Mode: " << this->Mode << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "SplitOpen: " << this->SplitOpen << "\n";
 }

@@ -66,6 +66,17 @@ public:
   vtkGetMacro(Tolerance, double);
   ///@}
 
+  ///@{
+  /// Cut the output open where charts meet: each point on a border between charts is copied once
+  /// per chart around it (point data and OriginalPointId copied with it), so that the charts share
+  /// no point and no edge, ready for texture coordinates or to be pulled apart; triangles and cell
+  /// data are unchanged, and output 1 has each cut edge once per side. A curve that separates no
+  /// charts (a seam ending inside one) stays closed. Default off.
+  vtkSetMacro(SplitOpen, bool);
+  vtkGetMacro(SplitOpen, bool);
+  vtkBooleanMacro(SplitOpen, bool);
+  ///@}
+
   /// The cut edges (output 1).
   vtkPolyData* GetCutEdges();
 
@@ -79,6 +90,7 @@ protected:
 
   int Mode = SCISSOR;
   double Tolerance = 0.5;
+  bool SplitOpen = false;
 
 private:
   vtkCurveExport(const vtkCurveExport&) = delete;

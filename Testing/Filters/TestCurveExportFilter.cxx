@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <set>
+#include <vector>
 
 namespace
 {
@@ -104,6 +105,39 @@ int TestCurveExportFilter(int argc, char* argv[])
   vtkPolyData* edges = scissor->GetCutEdges();
   ok &= KERF_CHECK(edges->GetNumberOfLines() >= curves->GetNumberOfPoints() - 1);
   ok &= KERF_CHECK(edges->GetPoints() == split->GetPoints());
+
+  // Split open: the triangles and the area kept, each point of the closed cut copied once more,
+  // no point used by both charts, each cut edge once per side.
+  const vtkIdType closedPoints = split->GetNumberOfPoints();
+  const vtkIdType closedCells = split->GetNumberOfCells();
+  const vtkIdType closedEdges = edges->GetNumberOfLines();
+  const double closedArea = surfaceArea(split);
+  scissor->SplitOpenOn();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(scissor).empty());
+  vtkPolyData* open = scissor->GetOutput();
+  ok &= KERF_CHECK(open->GetNumberOfCells() == closedCells);
+  ok &= KERF_CHECK(open->GetNumberOfPoints() == closedPoints + closedEdges); // one loop: as many points as edges
+  ok &= KERF_CHECK(std::abs(surfaceArea(open) - closedArea) <= 1e-12 * closedArea);
+  ok &= KERF_CHECK(scissor->GetCutEdges()->GetNumberOfLines() == 2 * closedEdges);
+  vtkDataArray* openCharts = open->GetCellData()->GetArray("Chart");
+  vtkDataArray* openOriginals = open->GetPointData()->GetArray("OriginalPointId");
+  ok &= KERF_CHECK(openCharts && openOriginals && openOriginals->GetNumberOfTuples() == open->GetNumberOfPoints());
+  std::vector<double> pointChart(static_cast<std::size_t>(open->GetNumberOfPoints()), -1.0);
+  vtkNew<vtkIdList> corners;
+  for (vtkIdType c = 0; openCharts && c < open->GetNumberOfCells(); ++c)
+  {
+    open->GetCellPoints(c, corners);
+    for (vtkIdType k = 0; k < corners->GetNumberOfIds(); ++k)
+    {
+      double& chart = pointChart[static_cast<std::size_t>(corners->GetId(k))];
+      ok &= KERF_CHECK(chart < 0.0 || chart == openCharts->GetComponent(c, 0));
+      chart = openCharts->GetComponent(c, 0);
+    }
+  }
+  scissor->SplitOpenOff();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(scissor).empty());
+  split = scissor->GetOutput();
+  edges = scissor->GetCutEdges();
 
   // Snap: the mesh kept, two charts; inverse snap: the connectivity kept, counts reported.
   vtkNew<vtkCurveExport> snap;

@@ -85,6 +85,31 @@ class KerfPluginTest(unittest.TestCase):
         self.assertGreater(high, 10.0)
         simple.Delete(view)
 
+    def test_curve_export_splits_the_camel_open_at_the_neck(self):
+        """Stroke Cut's cut exported by scissor into the camel's triangles: two charts; split open,
+        the same triangles with each point of the cut copied once more, and no point shared by
+        the two charts."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        cut = simple.StrokeCut(Input=camel)
+        export = simple.CurveExport(Input=cut, Curves=simple.OutputPort(cut, 1))
+        export.UpdatePipeline()
+        closed = servermanager.Fetch(export)
+        self.assertEqual(closed.GetFieldData().GetArray("ChartCount").GetValue(0), 2)
+        cut_edges = servermanager.Fetch(export, idx=1).GetNumberOfLines()
+        self.assertGreater(cut_edges, 10)
+        export.SplitOpen = 1
+        export.UpdatePipeline()
+        opened = servermanager.Fetch(export)
+        self.assertEqual(opened.GetNumberOfCells(), closed.GetNumberOfCells())
+        self.assertEqual(opened.GetNumberOfPoints(), closed.GetNumberOfPoints() + cut_edges)
+        self.assertEqual(servermanager.Fetch(export, idx=1).GetNumberOfLines(), 2 * cut_edges)
+        charts = vtk_to_numpy(opened.GetCellData().GetArray("Chart"))
+        corners = vtk_to_numpy(opened.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+        for chart in (0, 1):
+            others = set(corners[charts != chart].ravel().tolist())
+            self.assertFalse(others & set(corners[charts == chart].ravel().tolist()))
+
     def test_automatic_segmentation_proxies(self):
         """Each automatic-segmentation proxy, by its label, labels every camel face with the
         segments asked for."""
