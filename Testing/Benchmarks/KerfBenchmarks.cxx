@@ -78,6 +78,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterGeometrySeamsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterCurveExportBenchmarks();
   kerf::benchmarks::RegisterChartParameterizationBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterEasyMeshCuttingBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

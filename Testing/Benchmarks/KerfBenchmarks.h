@@ -49,6 +49,7 @@ void RegisterCurveExportBenchmarks();
 void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes);
 void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes);
+void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks
 } // namespace kerf
