@@ -59,7 +59,7 @@ std::vector<kerf::LabelledStroke> readLabelledStrokes(vtkPolyData* input, const 
 vtkEasyMeshCut::vtkEasyMeshCut()
   : State(new Internals)
 {
-  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(2);
   this->SetStrokeLabelArrayName("Label");
   this->SetSegmentArrayName("Segment");
@@ -79,7 +79,7 @@ vtkPolyData* vtkEasyMeshCut::GetBoundary()
 int vtkEasyMeshCut::FillInputPortInformation(int port, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
+  if (port >= 1)
   {
     info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // so that a missing stroke input is an error of ours
   }
@@ -110,6 +110,11 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     options.snake.convergence = kerf::Finite(this->SnakeConvergence, "SnakeConvergence");
     options.snake.curvatureOffset = kerf::Finite(this->SnakeCurvatureOffset, "SnakeCurvatureOffset");
     options.snake.slideSamples = this->SnakeSlideSamples;
+    if (vtkPolyData* overrides = vtkPolyData::GetData(inputVector[2], 0))
+    {
+      options.overrides = kerf::ReadPolylines(overrides, "the override strokes");
+      options.overrideRadius = kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
+    }
     this->UpdateProgress(0.1);
     const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes, options);
     this->UpdateProgress(0.9);
@@ -148,6 +153,7 @@ void vtkEasyMeshCut::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SnakeConvergence: " << this->SnakeConvergence << "\n";
   os << indent << "SnakeCurvatureOffset: " << this->SnakeCurvatureOffset << "\n";
   os << indent << "SnakeSlideSamples: " << this->SnakeSlideSamples << "\n";
+  os << indent << "OverrideRadius: " << this->OverrideRadius << "\n";
   os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

@@ -8,6 +8,8 @@
  * metric (Ji et al. 2006, sections 3 and 4.2), a length that grows with the change of the normal and,
  * strongly, with concave curvature, so parts meet along concave creases. With Refine, the
  * boundaries are then moved as snakes to where they are short, smooth and curved (section 5.1).
+ * Override strokes (polylines of the optional input 2) then edit the boundary (section 5.2): each
+ * replaces the part of the boundary within OverrideRadius of it by itself.
  *
  * Output 0: the surface with the cell array SegmentArrayName (the label of each triangle, -1 where
  * no stroke reaches: a component without strokes) and the point array "IsophoticDistance" (the
@@ -17,7 +19,8 @@
  *
  * Errors (vtkErrorMacro, return 0): no strokes, no line in input 1, a missing or malformed label
  * array, labels that are negative or not integers, strokes of a single label (no background or no
- * foreground), stroke points farther from the surface than MaximumProjectionDistance, surfaces
+ * foreground), stroke points farther from the surface than MaximumProjectionDistance, an
+ * override stroke away from every boundary or of a single point, surfaces
  * refused by validation (non-manifold, inconsistently oriented), NaN parameters.
  */
 #ifndef vtkEasyMeshCut_h
@@ -104,6 +107,13 @@ public:
   ///@}
 
   ///@{
+  /// How far from an override stroke (input 2) the boundary is replaced by it, as a fraction of the
+  /// bounding-box diagonal. Default 0.03.
+  vtkSetClampMacro(OverrideRadius, double, 1e-6, 1.0);
+  vtkGetMacro(OverrideRadius, double);
+  ///@}
+
+  ///@{
   /// The cell array of input 1 holding each stroke's label (named, not selected: see
   /// vtkHarmonicField). Default "Label".
   vtkSetStringMacro(StrokeLabelArrayName);
@@ -137,6 +147,7 @@ protected:
   double SnakeConvergence = 0.01;
   double SnakeCurvatureOffset = 1.0;
   int SnakeSlideSamples = 8;
+  double OverrideRadius = 0.03;
   char* StrokeLabelArrayName = nullptr;
   char* SegmentArrayName = nullptr;
 

@@ -154,6 +154,61 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(segmentsOf(again->GetOutput()) == labels);
     ok &= KERF_CHECK(coordinatesOf(again->GetBoundary()) == coordinatesOf(boundary));
   }
+  // Boundary editing: an override stroke, half a loop 0.1 above the crease on the side y > 0,
+  // replaces the refined boundary there; on the other side the boundary stays at the crease.
+  {
+    const double strokeZ = crease + 0.1;
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> line;
+    std::vector<vtkIdType> ids;
+    for (int i = 0; i <= 16; ++i)
+    {
+      const double angle = 3.141592653589793 * i / 16;
+      ids.push_back(points->InsertNextPoint(radius(strokeZ) * std::cos(angle), radius(strokeZ) * std::sin(angle), strokeZ));
+    }
+    line->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    vtkNew<vtkPolyData> override;
+    override->SetPoints(points);
+    override->SetLines(line);
+    vtkNew<vtkEasyMeshCut> edited;
+    edited->SetInputData(0, dumbbell);
+    edited->SetInputData(1, twoStrokes);
+    edited->SetInputData(2, override);
+    edited->SetOverrideRadius(0.15 / mesh.boundingBoxDiagonal());
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(edited).empty());
+    vtkPolyData* boundary = edited->GetBoundary();
+    ok &= KERF_CHECK(boundary->GetNumberOfCells() == 1);
+    int beside = 0, away = 0;
+    for (vtkIdType i = 0; i < boundary->GetNumberOfPoints(); ++i)
+    {
+      const double* p = boundary->GetPoint(i);
+      const double angle = std::atan2(p[1], p[0]);
+      if (angle > 0.3 && angle < 3.141592653589793 - 0.3)
+      {
+        ok &= KERF_CHECK(std::abs(p[2] - strokeZ) < 0.01);
+        ++beside;
+      }
+      else if (angle < -0.3 && angle > -3.141592653589793 + 0.3)
+      {
+        ok &= KERF_CHECK(std::abs(p[2] - crease) < 0.075);
+        ++away;
+      }
+    }
+    std::cout << "override: " << beside << " boundary points beside the stroke, " << away << " away" << std::endl;
+    ok &= KERF_CHECK(beside > 5 && away > 5);
+    // An override away from every boundary is refused.
+    points->SetPoint(0, radius(-1.5), 0.0, -1.5);
+    for (int i = 1; i <= 16; ++i)
+    {
+      const double angle = 3.141592653589793 * i / 16;
+      points->SetPoint(i, radius(-1.5) * std::cos(angle), radius(-1.5) * std::sin(angle), -1.5);
+    }
+    points->Modified();
+    int succeeded = 1;
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(edited, &succeeded).find("not near a boundary") != std::string::npos);
+    ok &= KERF_CHECK(succeeded == 0);
+  }
+
   ok &= KERF_CHECK(dumbbell->GetMTime() == inputTime);
   ok &= KERF_CHECK(dumbbell->GetCellData()->GetNumberOfArrays() == 0);
 

@@ -29,7 +29,7 @@ EasyMeshCutResult easyMeshCut(
   EasyMeshCutResult result;
   result.growing = growRegions(*surface, strokes, options.growing);
   result.distances = result.growing.distances;
-  if (!options.refine)
+  if (!options.refine && options.overrides.empty())
   {
     result.faceLabels = result.growing.faceLabels;
     for (const LabelBoundary& chain : labelBoundaries(mesh, result.faceLabels))
@@ -45,7 +45,14 @@ EasyMeshCutResult easyMeshCut(
     return result;
   }
   BoundarySnake snake(surface, result.growing.faceLabels);
-  result.snake = snake.refine(options.snake);
+  if (options.refine)
+  {
+    result.snake = snake.refine(options.snake);
+  }
+  for (const std::vector<Vector3>& stroke : options.overrides)
+  {
+    snake.overrideWithStroke(stroke, options.overrideRadius, options.growing.maximumDistance);
+  }
   result.faceLabels = snake.faceLabels();
   for (const SnakeCurve& curve : snake.curves())
   {

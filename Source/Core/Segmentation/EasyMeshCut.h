@@ -17,6 +17,12 @@ struct EasyMeshCutOptions
   /// Refine the grown boundaries as snakes (section 5.1). Default on, as in the paper.
   bool refine = true;
   SnakeOptions snake;
+  /// Override strokes (section 5.2), applied in order after the refinement (or to the grown
+  /// boundary without it): each replaces the boundary within `overrideRadius` of it by itself
+  /// (kerf::BoundarySnake::overrideWithStroke).
+  std::vector<std::vector<Vector3>> overrides;
+  /// Length units; must be positive when there are overrides.
+  double overrideRadius = 0.0;
 };
 
 /// One boundary between two labels, as points on the surface.
@@ -43,9 +49,10 @@ struct EasyMeshCutResult
 };
 
 /// Region growing from the strokes (kerf::growRegions), then, with options.refine, the boundaries
-/// as snakes (kerf::BoundarySnake::refine). Throws kerf::Error as growRegions and BoundarySnake do
-/// (no stroke, strokes of fewer than two labels, stroke points off the surface, edges shared by
-/// three triangles).
+/// as snakes (kerf::BoundarySnake::refine), then the override strokes. Throws kerf::Error as
+/// growRegions, BoundarySnake and overrideWithStroke do (no stroke, strokes of fewer than two
+/// labels, stroke points off the surface, edges shared by three triangles, an override away from
+/// every boundary or with a radius that is not positive).
 EasyMeshCutResult easyMeshCut(
   const std::shared_ptr<const Surface>& surface, const std::vector<LabelledStroke>& strokes, const EasyMeshCutOptions& options);
 
