@@ -169,6 +169,30 @@ double RelativeDistance(double fraction, double diagonal, const char* parameter)
   return fraction > 0.0 ? fraction * diagonal : 0.0;
 }
 
+double ProjectionLimit(double fraction, const Surface& surface, const char* parameter)
+{
+  const double limit = RelativeDistance(fraction, surface.mesh().boundingBoxDiagonal(), parameter);
+  return limit > 0.0 ? limit : std::numeric_limits<double>::infinity();
+}
+
+SurfacePoint PanelPointOnSurface(const Surface& surface, const Vector3& point, const std::string& what)
+{
+  return projectOntoSurface(surface, point, std::numeric_limits<double>::infinity(), what);
+}
+
+std::vector<SurfacePoint> ProjectPointsOntoSurface(
+  const Surface& surface, vtkPointSet* points, double maximumDistance, const std::string& noun)
+{
+  const std::vector<Vector3> positions = ReadPoints(points);
+  std::vector<SurfacePoint> projected;
+  projected.reserve(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i)
+  {
+    projected.push_back(projectOntoSurface(surface, positions[i], maximumDistance, noun + " " + std::to_string(i)));
+  }
+  return projected;
+}
+
 std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
   vtkIdType expected, const std::string& owner)
 {

@@ -55,6 +55,21 @@ double StrokeIsoValue(double value);
 /// limit). Throws for NaN.
 double RelativeDistance(double fraction, double diagonal, const char* parameter);
 
+/// MaximumProjectionDistance as a length: `fraction` of the surface's bounding-box diagonal, or
+/// infinity for 0 (no limit). Throws naming `parameter` for NaN.
+double ProjectionLimit(double fraction, const Surface& surface, const char* parameter);
+
+/// A point set in a filter's panel (ParaView's handle and polyline widgets) on the surface: the
+/// nearest surface point, whatever its distance, because the widgets' points start at the input's
+/// bounds, not on the surface (pressing P puts them there). Throws naming `what` for NaN,
+/// infinite or huge coordinates.
+SurfacePoint PanelPointOnSurface(const Surface& surface, const Vector3& point, const std::string& what);
+
+/// The points of a point set (input 1 of a filter) on the surface, each projected and refused
+/// beyond `maximumDistance` (projectOntoSurface), named "<noun> <i>" in errors.
+std::vector<SurfacePoint> ProjectPointsOntoSurface(
+  const Surface& surface, vtkPointSet* points, double maximumDistance, const std::string& noun);
+
 /// The one-component values of the algorithm's input array `index` (as selected with
 /// SetInputArrayToProcess), one per point or cell of its data object. With no array name selected,
 /// the active scalars of that association are read. Throws kerf::Error naming the array, its owner
