@@ -366,3 +366,34 @@ TEST(GeodesicPaths, PolylineJoinsTheLegsThroughEveryPoint)
   // A loop's last point may not repeat its first.
   EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[1], points[2], points[0] }, true, GeodesicPathOptions()), Error);
 }
+
+TEST(GeodesicPaths, PathsToPointsNearAVertexEndThroughIt)
+{
+  // Points given in single precision lie about 1e-8 from a vertex, inside one of its triangles:
+  // there the distance is a cone whose apex is the vertex, and 4 of 108 paths used to circle it
+  // without ending ("did not reach the source").
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 4));
+  const TriangleMesh& sphere = surface->mesh();
+  int paths = 0, offVertex = 0;
+  for (int v = 12; v < sphere.vertexCount(); v += 97)
+  {
+    const SurfacePoint near = pointNear(sphere, sphere.point(v).cast<float>().cast<double>());
+    offVertex += coincidentVertex(sphere, near) < 0 ? 1 : 0;
+    const SurfacePoint far = pointNear(sphere, -sphere.point(v) + Vector3(0.3, 0.2, 0.1));
+    const double exact = greatCircle(surfacePosition(sphere, near), surfacePosition(sphere, far));
+    for (bool vectorDijkstra : { false, true })
+    {
+      GeodesicPathOptions options;
+      options.vectorDijkstra = vectorDijkstra;
+      for (const SurfacePath& path : { shortestPath(*surface, near, far, options), shortestPath(*surface, far, near, options) })
+      {
+        EXPECT_NEAR(path.length, exact, 0.01 * exact) << "vertex " << v;
+        expectOnSurface(sphere, path.curve);
+        ++paths;
+      }
+    }
+  }
+  EXPECT_EQ(paths, 108);
+  RecordProperty("OffVertex", offVertex);
+  EXPECT_GE(offVertex, 13); // half the points are not at their vertex
+}

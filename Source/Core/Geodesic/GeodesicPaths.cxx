@@ -91,6 +91,9 @@ double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const An
 namespace
 {
 constexpr double Tiny = 1e-12;
+// A source point whose barycentric coordinate of a corner is within this of 1 is near the corner
+// (a corner given in single precision is about 1e-7 from it).
+constexpr double NearCorner = 1e-3;
 
 // The plane of a triangle: unit normal and the gradients of the barycentric coordinates.
 struct FaceFrame
@@ -172,12 +175,31 @@ public:
       this->IsSourceVertex[v] = 1;
     }
     // A point on an edge or at a corner lies in every triangle there: a path arriving through any
-    // of them ends on it (instead of circling the corner to find the point's own triangle).
+    // of them ends on it. A point near a corner ends paths arriving around that corner through
+    // the corner: there the field is a cone whose apex is the corner, the corner's descent
+    // direction is meaningless, and a path circled it to find the point's own triangle.
     for (std::size_t i = 0; i < source.points.size(); ++i)
     {
-      for (int f : facesHolding(mesh, source.points[i]))
+      const SurfacePoint& point = source.points[i];
+      const std::vector<int> holding = facesHolding(mesh, point);
+      for (int f : holding)
       {
         this->PointFaces.emplace(f, static_cast<int>(i));
+      }
+      const Triangle& t = mesh.triangle(point.face);
+      for (int k = 0; k < 3; ++k)
+      {
+        if (point.barycentric[k] < 1.0 - NearCorner)
+        {
+          continue;
+        }
+        for (int f : mesh.vertexFaces(t[k]))
+        {
+          if (!std::binary_search(holding.begin(), holding.end(), f))
+          {
+            this->CornerFaces.emplace(f, std::make_pair(static_cast<int>(i), t[k]));
+          }
+        }
       }
     }
     for (std::size_t c = 0; c < source.curves.size(); ++c)
@@ -206,6 +228,14 @@ public:
     if (point != this->PointFaces.end())
     {
       append(path, surfacePosition(this->Mesh, this->Source.points[point->second]), f);
+      return true;
+    }
+    const auto corner = this->CornerFaces.find(f);
+    if (corner != this->CornerFaces.end())
+    {
+      const SurfacePoint& end = this->Source.points[corner->second.first];
+      append(path, this->Mesh.point(corner->second.second), f);
+      append(path, surfacePosition(this->Mesh, end), end.face);
       return true;
     }
     const auto range = this->CurveFaces.equal_range(f);
@@ -266,6 +296,7 @@ private:
   const GeodesicSource& Source;
   std::vector<char> IsSourceVertex;
   std::multimap<int, int> PointFaces;
+  std::multimap<int, std::pair<int, int>> CornerFaces; // face -> (source point, the corner it is near)
   std::multimap<int, std::pair<int, int>> CurveFaces;
 };
 
