@@ -275,7 +275,7 @@ void checkStrokePointCount(long long count)
 {
   if (count > StrokePointList::MaximumCount)
   {
-    throw Error("a stroke has at most " + std::to_string(StrokePointList::MaximumCount) + " points, not " +
+    throw Error("a panel holds at most " + std::to_string(StrokePointList::MaximumCount) + " points, not " +
       std::to_string(count));
   }
 }
@@ -309,6 +309,27 @@ bool StrokePointList::Set(int index, const Vector3& point)
   }
   this->List[static_cast<std::size_t>(index)] = point;
   return true;
+}
+
+void SetPanelPointCount(vtkAlgorithm* algorithm, StrokePointList& list, int count, const std::string& noun)
+{
+  GuardSetter(algorithm, ("Cannot set the number of " + noun + " points").c_str(), [&]() {
+    if (list.SetCount(count))
+    {
+      algorithm->Modified();
+    }
+  });
+}
+
+void SetPanelPoint(
+  vtkAlgorithm* algorithm, StrokePointList& list, int index, const Vector3& point, const std::string& noun)
+{
+  GuardSetter(algorithm, ("Cannot set a " + noun + " point").c_str(), [&]() {
+    if (list.Set(index, point))
+    {
+      algorithm->Modified();
+    }
+  });
 }
 
 std::vector<std::vector<Vector3>> ReadStrokes(

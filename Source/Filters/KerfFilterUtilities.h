@@ -92,7 +92,7 @@ std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, c
 /// The one-component cell array `name` of a polydata, one value per cell, as ReadNamedPointArray.
 std::vector<double> ReadNamedCellArray(vtkPolyData* cells, const char* name, const std::string& owner);
 
-/// The stroke points a filter's panel sets (ParaView's interactive polyline), one stroke. A count
+/// The points a filter's panel sets (ParaView's interactive polyline): a stroke, a path. A count
 /// or an index beyond MaximumCount is refused before anything is allocated.
 class StrokePointList
 {
@@ -107,6 +107,13 @@ public:
 private:
   std::vector<Vector3> List;
 };
+
+/// The setters of a filter's panel points (SetNumberOf<Noun>Points, Set<Noun>Point): `list` is
+/// changed inside GuardSetter (an absurd count or index is reported and nothing changes) and
+/// `algorithm` marked modified when it changed. `noun` names the points in errors ("stroke").
+void SetPanelPointCount(vtkAlgorithm* algorithm, StrokePointList& list, int count, const std::string& noun);
+void SetPanelPoint(
+  vtkAlgorithm* algorithm, StrokePointList& list, int index, const Vector3& point, const std::string& noun);
 
 /// The strokes of a filter with strokes as polylines on input 1 or, without it, in its panel:
 /// the polylines, else the panel's points as one stroke, each moved to the nearest point of the

@@ -36,12 +36,7 @@ vtkGeodesicPolyline::~vtkGeodesicPolyline() = default;
 
 void vtkGeodesicPolyline::SetNumberOfPathPoints(int count)
 {
-  kerf::GuardSetter(this, "Cannot set the number of path points", [&]() {
-    if (this->State->pathPoints.SetCount(count))
-    {
-      this->Modified();
-    }
-  });
+  kerf::SetPanelPointCount(this, this->State->pathPoints, count, "path");
 }
 
 int vtkGeodesicPolyline::GetNumberOfPathPoints() const
@@ -51,12 +46,7 @@ int vtkGeodesicPolyline::GetNumberOfPathPoints() const
 
 void vtkGeodesicPolyline::SetPathPoint(int index, double x, double y, double z)
 {
-  kerf::GuardSetter(this, "Cannot set a path point", [&]() {
-    if (this->State->pathPoints.Set(index, kerf::Vector3(x, y, z)))
-    {
-      this->Modified();
-    }
-  });
+  kerf::SetPanelPoint(this, this->State->pathPoints, index, kerf::Vector3(x, y, z), "path");
 }
 
 int vtkGeodesicPolyline::FillInputPortInformation(int port, vtkInformation* info)

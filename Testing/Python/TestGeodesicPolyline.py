@@ -4,10 +4,9 @@ import unittest
 
 import kerf
 import numpy
-from vtkmodules.util.misc import calldata_type
+from TestBadInput import update_and_capture_errors
 from vtkmodules.util.numpy_support import vtk_to_numpy
-from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonCore import reference, vtkCommand, vtkPoints
+from vtkmodules.vtkCommonCore import reference, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkPolyData
 from vtkmodules.vtkCommonTransforms import vtkTransform
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData
@@ -38,18 +37,8 @@ def points(*coordinates):
 
 
 def run(path):
-    """Updates `path`; returns the executive's status and the errors it raised, captured."""
-    messages = []
-
-    @calldata_type(VTK_STRING)
-    def collect(caller, event, message):
-        messages.append(message.split("): ", 1)[-1].strip())
-
-    executive = path.GetExecutive()
-    tags = [(observed, observed.AddObserver(vtkCommand.ErrorEvent, collect)) for observed in (path, executive)]
-    status = executive.Update()
-    for observed, tag in tags:
-        observed.RemoveObserver(tag)
+    """Updates `path`; returns the executive's status and its first error, captured."""
+    status, messages = update_and_capture_errors(path)
     return status, messages[:1]
 
 
