@@ -169,6 +169,30 @@ double RelativeDistance(double fraction, double diagonal, const char* parameter)
   return fraction > 0.0 ? fraction * diagonal : 0.0;
 }
 
+double ProjectionLimit(double fraction, const Surface& surface, const char* parameter)
+{
+  const double limit = RelativeDistance(fraction, surface.mesh().boundingBoxDiagonal(), parameter);
+  return limit > 0.0 ? limit : std::numeric_limits<double>::infinity();
+}
+
+SurfacePoint PanelPointOnSurface(const Surface& surface, const Vector3& point, const std::string& what)
+{
+  return projectOntoSurface(surface, point, std::numeric_limits<double>::infinity(), what);
+}
+
+std::vector<SurfacePoint> ProjectPointsOntoSurface(
+  const Surface& surface, vtkPointSet* points, double maximumDistance, const std::string& noun)
+{
+  const std::vector<Vector3> positions = ReadPoints(points);
+  std::vector<SurfacePoint> projected;
+  projected.reserve(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i)
+  {
+    projected.push_back(projectOntoSurface(surface, positions[i], maximumDistance, noun + " " + std::to_string(i)));
+  }
+  return projected;
+}
+
 std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
   vtkIdType expected, const std::string& owner)
 {
@@ -251,7 +275,7 @@ void checkStrokePointCount(long long count)
 {
   if (count > StrokePointList::MaximumCount)
   {
-    throw Error("a stroke has at most " + std::to_string(StrokePointList::MaximumCount) + " points, not " +
+    throw Error("a panel holds at most " + std::to_string(StrokePointList::MaximumCount) + " points, not " +
       std::to_string(count));
   }
 }
@@ -287,6 +311,45 @@ bool StrokePointList::Set(int index, const Vector3& point)
   return true;
 }
 
+void SetPanelPointCount(vtkAlgorithm* algorithm, StrokePointList& list, int count, const std::string& noun)
+{
+  GuardSetter(algorithm, ("Cannot set the number of " + noun + " points").c_str(), [&]() {
+    if (list.SetCount(count))
+    {
+      algorithm->Modified();
+    }
+  });
+}
+
+void SetPanelPoint(
+  vtkAlgorithm* algorithm, StrokePointList& list, int index, const Vector3& point, const std::string& noun)
+{
+  GuardSetter(algorithm, ("Cannot set a " + noun + " point").c_str(), [&]() {
+    if (list.Set(index, point))
+    {
+      algorithm->Modified();
+    }
+  });
+}
+
+std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Surface& surface, const std::string& noun)
+{
+  std::vector<Vector3> positions;
+  for (const Vector3& point : panel.Points())
+  {
+    const ClosestPointLocator::Hit hit = point.allFinite() && point.cwiseAbs().maxCoeff() <= CoordinateLimit
+      ? surface.locator().closest(point)
+      : ClosestPointLocator::Hit();
+    if (hit.face < 0)
+    {
+      throw Error(noun + " point " + std::to_string(positions.size()) +
+        " has a NaN, infinite or huge coordinate (beyond +-1e50)");
+    }
+    positions.push_back(hit.position);
+  }
+  return positions;
+}
+
 std::vector<std::vector<Vector3>> ReadStrokes(
   vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface)
 {
@@ -301,20 +364,7 @@ std::vector<std::vector<Vector3>> ReadStrokes(
   }
   else if (panel.Count() > 0)
   {
-    std::vector<Vector3> stroke;
-    for (const Vector3& point : panel.Points())
-    {
-      const ClosestPointLocator::Hit hit = point.allFinite() && point.cwiseAbs().maxCoeff() <= CoordinateLimit
-        ? surface.locator().closest(point)
-        : ClosestPointLocator::Hit();
-      if (hit.face < 0)
-      {
-        throw Error("stroke point " + std::to_string(stroke.size()) +
-          " has a NaN, infinite or huge coordinate (beyond +-1e50)");
-      }
-      stroke.push_back(hit.position);
-    }
-    strokes.push_back(std::move(stroke));
+    strokes.push_back(PanelPointsOnSurface(panel, surface, "stroke"));
   }
   else
   {

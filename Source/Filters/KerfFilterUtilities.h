@@ -55,6 +55,21 @@ double StrokeIsoValue(double value);
 /// limit). Throws for NaN.
 double RelativeDistance(double fraction, double diagonal, const char* parameter);
 
+/// MaximumProjectionDistance as a length: `fraction` of the surface's bounding-box diagonal, or
+/// infinity for 0 (no limit). Throws naming `parameter` for NaN.
+double ProjectionLimit(double fraction, const Surface& surface, const char* parameter);
+
+/// A point set in a filter's panel (ParaView's handle and polyline widgets) on the surface: the
+/// nearest surface point, whatever its distance, because the widgets' points start at the input's
+/// bounds, not on the surface (pressing P puts them there). Throws naming `what` for NaN,
+/// infinite or huge coordinates.
+SurfacePoint PanelPointOnSurface(const Surface& surface, const Vector3& point, const std::string& what);
+
+/// The points of a point set (input 1 of a filter) on the surface, each projected and refused
+/// beyond `maximumDistance` (projectOntoSurface), named "<noun> <i>" in errors.
+std::vector<SurfacePoint> ProjectPointsOntoSurface(
+  const Surface& surface, vtkPointSet* points, double maximumDistance, const std::string& noun);
+
 /// The one-component values of the algorithm's input array `index` (as selected with
 /// SetInputArrayToProcess), one per point or cell of its data object. With no array name selected,
 /// the active scalars of that association are read. Throws kerf::Error naming the array, its owner
@@ -77,7 +92,7 @@ std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, c
 /// The one-component cell array `name` of a polydata, one value per cell, as ReadNamedPointArray.
 std::vector<double> ReadNamedCellArray(vtkPolyData* cells, const char* name, const std::string& owner);
 
-/// The stroke points a filter's panel sets (ParaView's interactive polyline), one stroke. A count
+/// The points a filter's panel sets (ParaView's interactive polyline): a stroke, a path. A count
 /// or an index beyond MaximumCount is refused before anything is allocated.
 class StrokePointList
 {
@@ -92,6 +107,18 @@ public:
 private:
   std::vector<Vector3> List;
 };
+
+/// The setters of a filter's panel points (SetNumberOf<Noun>Points, Set<Noun>Point): `list` is
+/// changed inside GuardSetter (an absurd count or index is reported and nothing changes) and
+/// `algorithm` marked modified when it changed. `noun` names the points in errors ("stroke").
+void SetPanelPointCount(vtkAlgorithm* algorithm, StrokePointList& list, int count, const std::string& noun);
+void SetPanelPoint(
+  vtkAlgorithm* algorithm, StrokePointList& list, int index, const Vector3& point, const std::string& noun);
+
+/// The panel's points moved to the nearest points of the surface, whatever their distance (the
+/// panel's first points come from the input's bounds); throws naming "<noun> point <i>" for NaN,
+/// infinite or huge coordinates.
+std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Surface& surface, const std::string& noun);
 
 /// The strokes of a filter with strokes as polylines on input 1 or, without it, in its panel:
 /// the polylines, else the panel's points as one stroke, each moved to the nearest point of the

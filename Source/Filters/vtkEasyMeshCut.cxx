@@ -23,6 +23,8 @@ vtkStandardNewMacro(vtkEasyMeshCut);
 struct vtkEasyMeshCut::Internals
 {
   kerf::SurfaceInput surface;
+  kerf::StrokePointList foreground;
+  kerf::StrokePointList background;
 };
 
 namespace
@@ -30,10 +32,6 @@ namespace
 // The polylines of `input` with the labels of their cells (a line's cell id follows the verts).
 std::vector<kerf::LabelledStroke> readLabelledStrokes(vtkPolyData* input, const char* labelArray)
 {
-  if (!input)
-  {
-    throw kerf::Error("there are no strokes: connect labelled polylines to input 1");
-  }
   const std::vector<std::vector<kerf::Vector3>> lines = kerf::ReadPolylines(input, "the strokes");
   if (lines.empty())
   {
@@ -71,6 +69,36 @@ vtkEasyMeshCut::~vtkEasyMeshCut()
   this->SetSegmentArrayName(nullptr);
 }
 
+void vtkEasyMeshCut::SetNumberOfForegroundPoints(int count)
+{
+  kerf::SetPanelPointCount(this, this->State->foreground, count, "foreground");
+}
+
+int vtkEasyMeshCut::GetNumberOfForegroundPoints() const
+{
+  return this->State->foreground.Count();
+}
+
+void vtkEasyMeshCut::SetForegroundPoint(int index, double x, double y, double z)
+{
+  kerf::SetPanelPoint(this, this->State->foreground, index, kerf::Vector3(x, y, z), "foreground");
+}
+
+void vtkEasyMeshCut::SetNumberOfBackgroundPoints(int count)
+{
+  kerf::SetPanelPointCount(this, this->State->background, count, "background");
+}
+
+int vtkEasyMeshCut::GetNumberOfBackgroundPoints() const
+{
+  return this->State->background.Count();
+}
+
+void vtkEasyMeshCut::SetBackgroundPoint(int index, double x, double y, double z)
+{
+  kerf::SetPanelPoint(this, this->State->background, index, kerf::Vector3(x, y, z), "background");
+}
+
 vtkPolyData* vtkEasyMeshCut::GetBoundary()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
@@ -94,8 +122,21 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     kerf::CheckOutputNames({ this->SegmentArrayName });
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
-    const std::vector<kerf::LabelledStroke> strokes =
-      readLabelledStrokes(vtkPolyData::GetData(inputVector[1], 0), this->StrokeLabelArrayName);
+    std::vector<kerf::LabelledStroke> strokes;
+    if (vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0))
+    {
+      strokes = readLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
+    }
+    else if (this->State->foreground.Count() > 0 && this->State->background.Count() > 0)
+    {
+      strokes.push_back({ 1, kerf::PanelPointsOnSurface(this->State->foreground, surface.GetSurface(), "foreground") });
+      strokes.push_back({ 0, kerf::PanelPointsOnSurface(this->State->background, surface.GetSurface(), "background") });
+    }
+    else
+    {
+      throw kerf::Error("there are no strokes: connect labelled polylines to input 1, or place foreground and "
+                        "background points (in ParaView: point at the surface and press P, Ctrl+P to add more)");
+    }
 
     kerf::EasyMeshCutOptions options;
     kerf::IsophoticMetricOptions& metric = options.growing.metric;
@@ -154,6 +195,8 @@ void vtkEasyMeshCut::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SnakeCurvatureOffset: " << this->SnakeCurvatureOffset << "\n";
   os << indent << "SnakeSlideSamples: " << this->SnakeSlideSamples << "\n";
   os << indent << "OverrideRadius: " << this->OverrideRadius << "\n";
+  os << indent << "ForegroundPoints: " << this->State->foreground.Count() << "\n";
+  os << indent << "BackgroundPoints: " << this->State->background.Count() << "\n";
   os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

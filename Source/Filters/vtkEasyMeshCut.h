@@ -4,7 +4,7 @@
  *
  * Each stroke (a polyline of input 1) carries a label in the cell array named by
  * StrokeLabelArrayName: foreground 1 and background 0 cut out one part; more labels cut out more
- * parts. Every vertex takes the label of the stroke nearest to it under the improved isophotic
+ * parts. Without input 1, the foreground and background strokes drawn in the panel are used. Every vertex takes the label of the stroke nearest to it under the improved isophotic
  * metric (Ji et al. 2006, sections 3 and 4.2), a length that grows with the change of the normal and,
  * strongly, with concave curvature, so parts meet along concave creases. With Refine, the
  * boundaries are then moved as snakes to where they are short, smooth and curved (section 5.1).
@@ -104,6 +104,19 @@ public:
   /// Positions a snaxel tries along its edge in a slide, both ends included. Default 8.
   vtkSetClampMacro(SnakeSlideSamples, int, 2, 1000);
   vtkGetMacro(SnakeSlideSamples, int);
+  ///@}
+
+  ///@{
+  /// The strokes drawn in the panel, used when input 1 is not connected: the foreground stroke
+  /// (label 1) and the background stroke (label 0), each a polyline of one or more points (one
+  /// point is a click), moved to the nearest surface points whatever their distance (in ParaView
+  /// they start at the input's bounds; point at the surface and press P to place them there).
+  void SetNumberOfForegroundPoints(int count);
+  int GetNumberOfForegroundPoints() const;
+  void SetForegroundPoint(int index, double x, double y, double z);
+  void SetNumberOfBackgroundPoints(int count);
+  int GetNumberOfBackgroundPoints() const;
+  void SetBackgroundPoint(int index, double x, double y, double z);
   ///@}
 
   ///@{

@@ -3,7 +3,6 @@
 
 #include "Error.h"
 #include "Geodesic/GeodesicPaths.h"
-#include "Geodesic/SurfaceLocation.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -15,8 +14,6 @@
 #include <vtkPointSet.h>
 #include <vtkPolyData.h>
 
-#include <limits>
-#include <string>
 
 vtkStandardNewMacro(vtkGeodesicDistance);
 
@@ -56,20 +53,14 @@ int vtkGeodesicDistance::RequestData(
     kerf::CheckOutputNames({ this->ArrayName });
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     const kerf::Surface& surface = this->State->surface.GetSurface();
-    const double limit = kerf::RelativeDistance(
-      this->MaximumProjectionDistance, surface.mesh().boundingBoxDiagonal(), "MaximumProjectionDistance");
-    const double maximumDistance = limit > 0.0 ? limit : std::numeric_limits<double>::infinity();
+    const double maximumDistance =
+      kerf::ProjectionLimit(this->MaximumProjectionDistance, surface, "MaximumProjectionDistance");
 
     kerf::GeodesicSource source;
     vtkPointSet* sources = vtkPointSet::GetData(inputVector[1], 0);
     if (sources)
     {
-      const std::vector<kerf::Vector3> points = kerf::ReadPoints(sources);
-      for (std::size_t i = 0; i < points.size(); ++i)
-      {
-        source.points.push_back(
-          kerf::projectOntoSurface(surface, points[i], maximumDistance, "source point " + std::to_string(i)));
-      }
+      source.points = kerf::ProjectPointsOntoSurface(surface, sources, maximumDistance, "source point");
       vtkPolyData* lines = vtkPolyData::SafeDownCast(sources);
       if (lines && lines->GetNumberOfLines() > 0)
       {
@@ -82,9 +73,8 @@ int vtkGeodesicDistance::RequestData(
     }
     else
     {
-      source.points.push_back(kerf::projectOntoSurface(surface,
-        kerf::Vector3(this->SourcePoint[0], this->SourcePoint[1], this->SourcePoint[2]), maximumDistance,
-        "the source point"));
+      source.points.push_back(kerf::PanelPointOnSurface(
+        surface, kerf::Vector3(this->SourcePoint[0], this->SourcePoint[1], this->SourcePoint[2]), "the source point"));
     }
     this->UpdateProgress(0.1);
 

@@ -4,9 +4,10 @@
  * heat method or, under an anisotropic metric, by Short-Term Vector Dijkstra.
  *
  * Input 0: the surface. Input 1 (optional): the sources, a vtkPointSet whose points are each
- * moved to the nearest surface point; when it is a vtkPolyData with lines, its polylines are
+ * moved to the nearest surface point (refused beyond MaximumProjectionDistance); when it is a vtkPolyData with lines, its polylines are
  * sources too (placed on the surface as kerf::placeCurveOnSurface does). Without input 1 the
- * source is SourcePoint.
+ * source is SourcePoint, moved to the nearest surface point whatever its distance (ParaView's
+ * handle starts at the input's bounds).
  *
  * With Gamma = 0 the distance is isotropic, by the heat method (Crane et al. 2013) on the
  * intrinsic Delaunay triangulation; its factorizations are cached on the surface, so a new source
@@ -17,8 +18,8 @@
  * Output: the surface with the point array "GeodesicDistance" (the name is a parameter; its
  * active scalars), +infinity on the connected components no source touches.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation, no source, a source farther
- * from the surface than MaximumProjectionDistance, NaN parameters.
+ * Errors (vtkErrorMacro, return 0): surfaces refused by validation, no source, a source of
+ * input 1 farther from the surface than MaximumProjectionDistance, NaN parameters.
  */
 #ifndef vtkGeodesicDistance_h
 #define vtkGeodesicDistance_h
@@ -36,7 +37,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The source when input 1 is not connected (moved to the nearest surface point). Default (0, 0, 0).
+  /// The source when input 1 is not connected, moved to the nearest surface point whatever its
+  /// distance (in ParaView it starts at the input's bounds: point at the surface and press P).
+  /// Default (0, 0, 0).
   vtkSetVector3Macro(SourcePoint, double);
   vtkGetVector3Macro(SourcePoint, double);
   ///@}
@@ -76,7 +79,7 @@ public:
   ///@}
 
   ///@{
-  /// Sources farther from the surface than this fraction of the bounding-box diagonal are
+  /// Sources of input 1 farther from the surface than this fraction of the bounding-box diagonal are
   /// refused; 0 means no limit. Default 0.05.
   vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
   vtkGetMacro(MaximumProjectionDistance, double);

@@ -3,7 +3,6 @@
 
 #include "Error.h"
 #include "Geodesic/Seams.h"
-#include "Geodesic/SurfaceLocation.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -15,7 +14,6 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 
-#include <limits>
 
 vtkStandardNewMacro(vtkGeodesicSeam);
 
@@ -63,20 +61,18 @@ int vtkGeodesicSeam::RequestData(
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::SeamSession& session = this->State->surface.SessionFor(this->State->session);
     const kerf::Surface& surface = session.surface();
-    const double limit = kerf::RelativeDistance(
-      this->MaximumProjectionDistance, surface.mesh().boundingBoxDiagonal(), "MaximumProjectionDistance");
-    const double maximumDistance = limit > 0.0 ? limit : std::numeric_limits<double>::infinity();
+    const double maximumDistance =
+      kerf::ProjectionLimit(this->MaximumProjectionDistance, surface, "MaximumProjectionDistance");
     vtkPolyData* lines = vtkPolyData::GetData(inputVector[1], 0);
     if (!lines)
     {
-      throw kerf::Error("there is no cut line: connect polylines on the surface to input 1 (for example Cut From "
-                        "Stroke's cut)");
+      throw kerf::Error("there is no cut line: connect polylines on the surface to input 1 (for example Stroke "
+                        "Cut's cut)");
     }
     const std::vector<kerf::SurfaceCurve> curves =
       kerf::PlaceLinesOnSurface(surface, lines, maximumDistance, "the cut input");
-    const kerf::SurfacePoint target = kerf::projectOntoSurface(surface,
-      kerf::Vector3(this->TargetPoint[0], this->TargetPoint[1], this->TargetPoint[2]), maximumDistance,
-      "the target point");
+    const kerf::SurfacePoint target = kerf::PanelPointOnSurface(
+      surface, kerf::Vector3(this->TargetPoint[0], this->TargetPoint[1], this->TargetPoint[2]), "the target point");
     this->UpdateProgress(0.1);
 
     kerf::SeamOptions options;
@@ -87,9 +83,8 @@ int vtkGeodesicSeam::RequestData(
     this->UpdateProgress(0.8);
     const kerf::SurfacePath seam = this->UseAnchor
       ? field.anchoredSeam(target,
-          kerf::projectOntoSurface(surface,
-            kerf::Vector3(this->AnchorPoint[0], this->AnchorPoint[1], this->AnchorPoint[2]), maximumDistance,
-            "the anchor point"))
+          kerf::PanelPointOnSurface(
+            surface, kerf::Vector3(this->AnchorPoint[0], this->AnchorPoint[1], this->AnchorPoint[2]), "the anchor point"))
       : field.seam(target);
 
     this->State->surface.MakeOutput(input, output);

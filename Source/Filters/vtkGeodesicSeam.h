@@ -3,8 +3,8 @@
  * @brief Geodesic Seam: SeamCut's seam from a cut line to a point, along the curvature-aligned
  * anisotropic distance from the line (SeamCut, sections 2.2 and 3).
  *
- * Input 0: the surface. Input 1: the cut, as polylines on the surface (for example Cut From
- * Stroke's second output); a polyline whose last point repeats its first is closed. All lines
+ * Input 0: the surface. Input 1: the cut, as polylines on the surface (for example Stroke
+ * Cut's second output); a polyline whose last point repeats its first is closed. All lines
  * must lie on one connected component.
  *
  * The distance from the lines under the anisotropic metric (Zhuang et al. 2014, SeamCut's
@@ -20,8 +20,8 @@
  * kept field reused). Output 1: the seam as one polyline from the lines to the target, with the
  * cell arrays Length (under the metric) and Closed.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation, no line, lines or points
- * farther from the surface than MaximumProjectionDistance, lines on several components, a target
+ * Errors (vtkErrorMacro, return 0): surfaces refused by validation, no line, lines farther from
+ * the surface than MaximumProjectionDistance, lines on several components, a target
  * on another component, NaN parameters.
  */
 #ifndef vtkGeodesicSeam_h
@@ -40,8 +40,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The seam's end away from the lines (the emitter), moved to the nearest surface point.
-  /// Default (0, 0, 0).
+  /// The seam's end away from the lines (the emitter), moved to the nearest surface point
+  /// whatever its distance (in ParaView it starts at the input's bounds: point at the surface and
+  /// press P). Default (0, 0, 0).
   vtkSetVector3Macro(TargetPoint, double);
   vtkGetVector3Macro(TargetPoint, double);
   ///@}
@@ -74,7 +75,7 @@ public:
   ///@}
 
   ///@{
-  /// Line and point coordinates farther from the surface than this fraction of the bounding-box
+  /// Line coordinates farther from the surface than this fraction of the bounding-box
   /// diagonal are refused; 0 means no limit. Default 0.05.
   vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
   vtkGetMacro(MaximumProjectionDistance, double);

@@ -64,11 +64,18 @@ int vtkROIScissor::RequestData(
 
     std::vector<kerf::RoiClick> clicks;
     vtkPointSet* clickInput = vtkPointSet::GetData(inputVector[1], 0);
-    for (const kerf::Vector3& point : clickInput
-           ? kerf::ReadPoints(clickInput)
-           : std::vector<kerf::Vector3>{ kerf::Vector3(this->ClickPoint[0], this->ClickPoint[1], this->ClickPoint[2]) })
+    if (clickInput)
     {
-      clicks.push_back({ point, radius });
+      for (const kerf::Vector3& point : kerf::ReadPoints(clickInput))
+      {
+        clicks.push_back({ point, radius });
+      }
+    }
+    else
+    {
+      const kerf::SurfacePoint click = kerf::PanelPointOnSurface(distances.surface(),
+        kerf::Vector3(this->ClickPoint[0], this->ClickPoint[1], this->ClickPoint[2]), "the click point");
+      clicks.push_back({ kerf::surfacePosition(distances.surface().mesh(), click), radius });
     }
     if (clicks.empty())
     {

@@ -4,8 +4,9 @@
  * concave (ROI Scissor, sections 4.1-4.3).
  *
  * Input 0: the surface. Input 1 (optional): clicks, a vtkPointSet whose points each add a
- * geodesic disc; without it the click is ClickPoint. Each click is moved to the nearest surface
- * point.
+ * geodesic disc, each moved to the nearest surface point and refused beyond
+ * MaximumProjectionDistance; without it the click is ClickPoint, moved to the nearest surface
+ * point whatever its distance (ParaView's handle starts at the input's bounds).
  *
  * The candidate region is the union of the geodesic discs of radius Radius around the clicks
  * (heat method; each click's distance is kept, so a new radius costs no new distance). Vertices
@@ -24,8 +25,8 @@
  * filter has computed for its clicks on this surface, kept ones not counted again). Output 1: the boundary as closed polylines with the
  * cell arrays Length (under the metric), Closed and SelfCrossings.
  *
- * Errors (vtkErrorMacro, return 0): surfaces refused by validation, a click farther from the
- * surface than MaximumProjectionDistance, clicks on several components, a disc covering its
+ * Errors (vtkErrorMacro, return 0): surfaces refused by validation, a click of input 1 farther
+ * from the surface than MaximumProjectionDistance, clicks on several components, a disc covering its
  * whole component or too small to hold its inner vertices, a field without a closed isoline,
  * NaN parameters.
  */
@@ -45,7 +46,9 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The click when input 1 is not connected (moved to the nearest surface point). Default (0, 0, 0).
+  /// The click when input 1 is not connected, moved to the nearest surface point whatever its
+  /// distance (in ParaView it starts at the input's bounds: point at the surface and press P).
+  /// Default (0, 0, 0).
   vtkSetVector3Macro(ClickPoint, double);
   vtkGetVector3Macro(ClickPoint, double);
   ///@}
@@ -83,7 +86,7 @@ public:
   ///@}
 
   ///@{
-  /// Clicks farther from the surface than this fraction of the bounding-box diagonal are
+  /// Clicks of input 1 farther from the surface than this fraction of the bounding-box diagonal are
   /// refused; 0 means no limit. Default 0.05.
   vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
   vtkGetMacro(MaximumProjectionDistance, double);

@@ -42,12 +42,7 @@ vtkStrokeConstraints::~vtkStrokeConstraints() = default;
 
 void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
 {
-  kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
-    if (this->State->strokePoints.SetCount(count))
-    {
-      this->Modified();
-    }
-  });
+  kerf::SetPanelPointCount(this, this->State->strokePoints, count, "stroke");
 }
 
 int vtkStrokeConstraints::GetNumberOfStrokePoints() const
@@ -57,12 +52,7 @@ int vtkStrokeConstraints::GetNumberOfStrokePoints() const
 
 void vtkStrokeConstraints::SetStrokePoint(int index, double x, double y, double z)
 {
-  kerf::GuardSetter(this, "Cannot set a stroke point", [&]() {
-    if (this->State->strokePoints.Set(index, kerf::Vector3(x, y, z)))
-    {
-      this->Modified();
-    }
-  });
+  kerf::SetPanelPoint(this, this->State->strokePoints, index, kerf::Vector3(x, y, z), "stroke");
 }
 
 int vtkStrokeConstraints::FillInputPortInformation(int port, vtkInformation* info)

@@ -43,12 +43,7 @@ vtkPolyData* vtkStrokeCut::GetCut()
 
 void vtkStrokeCut::SetNumberOfStrokePoints(int count)
 {
-  kerf::GuardSetter(this, "Cannot set the number of stroke points", [&]() {
-    if (this->State->strokePoints.SetCount(count))
-    {
-      this->Modified();
-    }
-  });
+  kerf::SetPanelPointCount(this, this->State->strokePoints, count, "stroke");
 }
 
 int vtkStrokeCut::GetNumberOfStrokePoints() const
@@ -58,12 +53,7 @@ int vtkStrokeCut::GetNumberOfStrokePoints() const
 
 void vtkStrokeCut::SetStrokePoint(int index, double x, double y, double z)
 {
-  kerf::GuardSetter(this, "Cannot set a stroke point", [&]() {
-    if (this->State->strokePoints.Set(index, kerf::Vector3(x, y, z)))
-    {
-      this->Modified();
-    }
-  });
+  kerf::SetPanelPoint(this, this->State->strokePoints, index, kerf::Vector3(x, y, z), "stroke");
 }
 
 int vtkStrokeCut::FillInputPortInformation(int port, vtkInformation* info)

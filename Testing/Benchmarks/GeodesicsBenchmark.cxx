@@ -1,4 +1,4 @@
-// Benchmarks of the geodesics family: heat-method set-up and sources beside VTK's Dijkstra path and CGAL's heat method, seams, ROI Scissor.
+// Benchmarks of the geodesics family: heat-method set-up and sources, paths beside VTK's Dijkstra path and CGAL's heat method, seams, ROI Scissor.
 //
 // Surfaces: the harmonic-cut benchmark's dumbbell (half length 2.2, lobe radii 1 and 0.8, neck at
 // 0.3 pinched by 0.65) from a subdivided cube (kerf::benchmarks::MakeCubeDumbbell) with 22,188,
@@ -9,7 +9,14 @@
 //   BM_HeatSetupMetis/<size>     the same with METIS ordering
 //   BM_HeatSource/<size>         one new source vertex (distance and face gradients)
 //   BM_VTKDijkstraPath/<size>    vtkDijkstraGraphGeodesicPath, one path between two vertices on a
-//                                new filter (its graph built each time), for reference
+//                                new filter (its graph built each time), for reference; counter
+//                                length, the path's (along edges)
+//   BM_GeodesicPolylineFirst/<size>  kerf::shortestPath between the same two vertices as VTK's path on a
+//                                new kerf::Surface: the heat set-up, one distance and the streamline
+//                                (22k and 100k only)
+//   BM_GeodesicPolyline/<size>       the same path with the surface's heat set-up kept (a new path)
+//   BM_GeodesicPolylineAnisotropic/<size>  the same path under the anisotropic metric (gamma = 1, Short-
+//                                Term Vector Dijkstra), the surface's curvature and metric kept
 //   BM_CGALHeatSetup/<size>      CGAL's Heat_method_3 (Direct), construction with one source and
 //                                its first estimate (22k and 100k only: 43 s at 1M)
 //   BM_CGALHeatSource/<size>     CGAL: a new source and its estimate
@@ -25,6 +32,7 @@
 #include "BenchmarkPolyData.h"
 #include "KerfBenchmarks.h"
 
+#include "Geodesic/GeodesicPaths.h"
 #include "Geodesic/HeatGeodesics.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geodesic/RoiScissor.h"
@@ -36,6 +44,7 @@
 #include <benchmark/benchmark.h>
 
 #include <vtkDijkstraGraphGeodesicPath.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
@@ -180,6 +189,7 @@ void heatSource(benchmark::State& state, const Scene& scene)
 void vtkDijkstraPath(benchmark::State& state, const Scene& scene)
 {
   const int last = static_cast<int>(scene.polyData->GetNumberOfPoints()) - 1;
+  double length = 0.0;
   for (auto _ : state)
   {
     vtkNew<vtkDijkstraGraphGeodesicPath> path;
@@ -187,8 +197,49 @@ void vtkDijkstraPath(benchmark::State& state, const Scene& scene)
     path->SetStartVertex(0);
     path->SetEndVertex(last);
     path->Update();
-    benchmark::DoNotOptimize(path->GetOutput()->GetNumberOfPoints());
+    vtkPolyData* line = path->GetOutput();
+    length = 0.0;
+    for (vtkIdType i = 1; i < line->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      line->GetPoint(i - 1, a);
+      line->GetPoint(i, b);
+      length += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    }
+    benchmark::DoNotOptimize(length);
   }
+  state.counters["length"] = length;
+}
+
+// kerf::shortestPath between the vertices vtkDijkstraPath joins, on `surface`.
+double geodesicPath(const kerf::Surface& surface, const kerf::GeodesicPathOptions& options)
+{
+  const kerf::TriangleMesh& mesh = surface.mesh();
+  return kerf::shortestPath(
+    surface, kerf::vertexSurfacePoint(mesh, 0), kerf::vertexSurfacePoint(mesh, mesh.vertexCount() - 1), options)
+    .length;
+}
+
+void geodesicPathFirst(benchmark::State& state, const Scene& scene)
+{
+  for (auto _ : state)
+  {
+    const kerf::Surface fresh(scene.surface->mesh());
+    benchmark::DoNotOptimize(geodesicPath(fresh, kerf::GeodesicPathOptions()));
+  }
+}
+
+void geodesicPathKept(benchmark::State& state, const Scene& scene, double gamma)
+{
+  kerf::GeodesicPathOptions options;
+  options.metric.gamma = gamma;
+  double length = geodesicPath(*scene.surface, options); // the surface's caches
+  for (auto _ : state)
+  {
+    length = geodesicPath(*scene.surface, options);
+    benchmark::DoNotOptimize(length);
+  }
+  state.counters["length"] = length;
 }
 
 void seamNew(benchmark::State& state, const Scene& scene)
@@ -316,6 +367,9 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
     { "BM_HeatSetupMetis", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::METIS); } },
     { "BM_HeatSource", heatSource },
     { "BM_VTKDijkstraPath", vtkDijkstraPath },
+    { "BM_GeodesicPolylineFirst", geodesicPathFirst },
+    { "BM_GeodesicPolyline", [](benchmark::State& s, const Scene& c) { geodesicPathKept(s, c, 0.0); } },
+    { "BM_GeodesicPolylineAnisotropic", [](benchmark::State& s, const Scene& c) { geodesicPathKept(s, c, 1.0); } },
 #ifdef KERF_HAVE_CGAL
     { "BM_CGALHeatSetup", cgalSetup },
     { "BM_CGALHeatSource", cgalSource },
@@ -328,7 +382,7 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
   {
     for (const auto& [name, body] : benchmarks)
     {
-      if (name.rfind("BM_CGAL", 0) == 0 && size.cells > 100)
+      if ((name.rfind("BM_CGAL", 0) == 0 || name.rfind("BM_GeodesicPolyline", 0) == 0) && size.cells > 100)
       {
         continue;
       }

@@ -2,6 +2,7 @@
 #include "Error.h"
 #include "Geodesic/GeodesicPaths.h"
 #include "Geodesic/GraphDistance.h"
+#include "Geodesic/SurfaceLocation.h"
 #include "Geodesic/VectorDijkstra.h"
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshGenerators.h"
@@ -298,4 +299,101 @@ TEST(GeodesicPaths, DistanceFollowsTheChosenMetric)
     options.metric.gamma = gamma;
     EXPECT_THROW(geodesicDistance(*surface, source, options), Error);
   }
+}
+
+TEST(GeodesicPaths, PathToAVertexEndsWithoutDetour)
+{
+  // From the vertex at the north pole to the one on the x axis: the quarter meridian in the
+  // plane y = 0. A source point at a vertex lies in each of its triangles, so the path ends as
+  // soon as it enters one (it used to circle the vertex one edge away: 4.4% too long).
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 5));
+  const TriangleMesh& sphere = surface->mesh();
+  const SurfacePoint from = pointNear(sphere, Vector3(0.0, 0.0, 5.0));
+  const SurfacePoint to = pointNear(sphere, Vector3(5.0, 0.0, 0.0));
+  ASSERT_GE(coincidentVertex(sphere, from), 0);
+  ASSERT_GE(coincidentVertex(sphere, to), 0);
+  const double quarter = 0.5 * 3.14159265358979323846;
+  for (bool vectorDijkstra : { false, true })
+  {
+    GeodesicPathOptions options;
+    options.vectorDijkstra = vectorDijkstra;
+    const SurfacePath path = shortestPath(*surface, from, to, options);
+    double offPlane = 0.0;
+    for (const Vector3& p : path.curve.points)
+    {
+      offPlane = std::max(offPlane, std::abs(p.y()));
+    }
+    RecordProperty(std::string("QuarterLength") + (vectorDijkstra ? "VectorDijkstra" : "Heat"), std::to_string(path.length));
+    EXPECT_NEAR(path.length, quarter, 0.005 * quarter);
+    EXPECT_LE(offPlane, 0.005);
+    expectOnSurface(sphere, path.curve);
+  }
+}
+
+TEST(GeodesicPaths, PolylineJoinsTheLegsThroughEveryPoint)
+{
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 4));
+  const TriangleMesh& sphere = surface->mesh();
+  const std::vector<SurfacePoint> points = { pointNear(sphere, Vector3(1.0, 0.2, 0.3)),
+    pointNear(sphere, Vector3(0.1, 1.0, 0.4)), pointNear(sphere, Vector3(-0.6, 0.5, -0.7)) };
+  for (bool closed : { false, true })
+  {
+    const GeodesicPolyline line = geodesicPolyline(*surface, points, closed, GeodesicPathOptions());
+    const SurfaceCurve& curve = line.path.curve;
+    EXPECT_EQ(curve.closed, closed);
+    EXPECT_EQ(curve.faces.size(), static_cast<std::size_t>(segmentCount(curve)));
+    expectOnSurface(sphere, curve);
+    // Each given point is a point of the curve, exactly, at the arc length of the legs before it.
+    ASSERT_EQ(line.waypoints.size(), points.size());
+    ASSERT_EQ(line.arcLength.size(), curve.points.size());
+    double before = 0.0;
+    for (std::size_t i = 0; i < points.size(); ++i)
+    {
+      EXPECT_EQ(curve.points[line.waypoints[i]], surfacePosition(sphere, points[i]));
+      EXPECT_NEAR(line.arcLength[line.waypoints[i]], before, 1e-12);
+      if (closed || i + 1 < points.size())
+      {
+        before += shortestPath(*surface, points[i], points[(i + 1) % points.size()], GeodesicPathOptions()).length;
+      }
+    }
+    EXPECT_NEAR(line.path.length, before, 1e-12);
+    EXPECT_TRUE(std::is_sorted(line.arcLength.begin(), line.arcLength.end()));
+    EXPECT_EQ(line.selfCrossings, 0);
+  }
+  EXPECT_THROW(geodesicPolyline(*surface, { points[0] }, false, GeodesicPathOptions()), Error);
+  EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[1] }, true, GeodesicPathOptions()), Error);
+  EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[0], points[1] }, false, GeodesicPathOptions()), Error);
+  // A loop's last point may not repeat its first.
+  EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[1], points[2], points[0] }, true, GeodesicPathOptions()), Error);
+}
+
+TEST(GeodesicPaths, PathsToPointsNearAVertexEndThroughIt)
+{
+  // Points given in single precision lie about 1e-8 from a vertex, inside one of its triangles:
+  // there the distance is a cone whose apex is the vertex, and 4 of 108 paths used to circle it
+  // without ending ("did not reach the source").
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 4));
+  const TriangleMesh& sphere = surface->mesh();
+  int paths = 0, offVertex = 0;
+  for (int v = 12; v < sphere.vertexCount(); v += 97)
+  {
+    const SurfacePoint near = pointNear(sphere, sphere.point(v).cast<float>().cast<double>());
+    offVertex += coincidentVertex(sphere, near) < 0 ? 1 : 0;
+    const SurfacePoint far = pointNear(sphere, -sphere.point(v) + Vector3(0.3, 0.2, 0.1));
+    const double exact = greatCircle(surfacePosition(sphere, near), surfacePosition(sphere, far));
+    for (bool vectorDijkstra : { false, true })
+    {
+      GeodesicPathOptions options;
+      options.vectorDijkstra = vectorDijkstra;
+      for (const SurfacePath& path : { shortestPath(*surface, near, far, options), shortestPath(*surface, far, near, options) })
+      {
+        EXPECT_NEAR(path.length, exact, 0.01 * exact) << "vertex " << v;
+        expectOnSurface(sphere, path.curve);
+        ++paths;
+      }
+    }
+  }
+  EXPECT_EQ(paths, 108);
+  RecordProperty("OffVertex", offVertex);
+  EXPECT_GE(offVertex, 13); // half the points are not at their vertex
 }

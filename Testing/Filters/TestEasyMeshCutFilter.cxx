@@ -154,6 +154,30 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(segmentsOf(again->GetOutput()) == labels);
     ok &= KERF_CHECK(coordinatesOf(again->GetBoundary()) == coordinatesOf(boundary));
   }
+  // Strokes drawn in the panel (no input 1): a foreground and a background click give the same
+  // cut as the same clicks given as labelled one-point polylines.
+  {
+    vtkNew<vtkEasyMeshCut> panel;
+    panel->SetInputData(0, dumbbell);
+    panel->SetNumberOfForegroundPoints(1);
+    panel->SetForegroundPoint(0, radius(1.5) + 0.2, 0.0, 1.5); // off the surface: moved onto it
+    panel->SetNumberOfBackgroundPoints(1);
+    panel->SetBackgroundPoint(0, radius(-1.5), 0.0, -1.5);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel).empty());
+    vtkNew<vtkEasyMeshCut> clicks;
+    clicks->SetInputData(0, dumbbell);
+    clicks->SetInputData(1, strokes({ { 1.0, { 1.5 } }, { 0.0, { -1.5 } } }));
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(clicks).empty());
+    const std::vector<int> fromPanel = segmentsOf(panel->GetOutput());
+    ok &= KERF_CHECK(fromPanel == segmentsOf(clicks->GetOutput()));
+    ok &= KERF_CHECK(kerf::compareSegmentations(mesh, fromPanel, known).randIndexError < 0.009);
+    panel->SetNumberOfBackgroundPoints(0);
+    int succeeded = 1;
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("place foreground and background") !=
+      std::string::npos);
+    ok &= KERF_CHECK(succeeded == 0);
+  }
+
   // Boundary editing: an override stroke, half a loop 0.1 above the crease on the side y > 0,
   // replaces the refined boundary there; on the other side the boundary stays at the crease.
   {

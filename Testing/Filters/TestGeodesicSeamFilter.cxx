@@ -124,12 +124,19 @@ int TestGeodesicSeamFilter(int, char*[])
   ok &= KERF_CHECK(std::abs(start[2] - 1.5) <= 1e-9 && std::abs(end[2] - 3.5) <= 1e-9);
   ok &= KERF_CHECK(cylinder->GetMTime() == inputTime && cylinder->GetPointData()->GetNumberOfArrays() == 0);
 
-  // Errors: a target off the surface (on the axis), a line off the surface, no line.
+  // A target far off the surface (on the axis, as ParaView's handle can start) is moved to the
+  // nearest surface point.
   seam->UseAnchorOff();
   seam->SetTargetPoint(0.0, 0.0, 3.0);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(seam).empty());
+  const std::array<double, 3> moved = point(seam->GetSeam(), seam->GetSeam()->GetNumberOfPoints() - 1);
+  ok &= KERF_CHECK(std::abs(std::hypot(moved[0], moved[1]) - 1.0) <= 1e-3 && std::abs(moved[2] - 3.0) <= 1e-9);
+
+  // Errors: a NaN target, a line off the surface, no line.
+  seam->SetTargetPoint(std::nan(""), 0.0, 3.0);
   std::string error = kerf::test::UpdateAndCaptureError(seam);
   std::cout << error << std::endl;
-  ok &= KERF_CHECK(error.find("the target point lies off the surface") != std::string::npos);
+  ok &= KERF_CHECK(error.find("the target point has a NaN") != std::string::npos);
   ok &= KERF_CHECK(seam->GetOutput()->GetNumberOfPoints() == 0 && seam->GetSeam()->GetNumberOfPoints() == 0);
   seam->SetTargetPoint(1.0, 0.0, 3.0);
   seam->SetInputData(1, kerf::test::CirclePolyline(1.5, 1.5, 12));

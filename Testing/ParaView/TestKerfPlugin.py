@@ -110,6 +110,87 @@ class KerfPluginTest(unittest.TestCase):
             others = set(corners[charts != chart].ravel().tolist())
             self.assertFalse(others & set(corners[charts == chart].ravel().tolist()))
 
+    def test_point_filters_apply_at_once(self):
+        """A first-time user adds Geodesic Distance, Geodesic Seam (on Stroke Cut's cut), ROI
+        Scissor or Geodesic Polyline to the camel and presses Apply: their points start at the input's
+        bounds, off the surface, and are moved onto it, so each applies without an error."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        bounds = camel.GetDataInformation().GetBounds()
+        low = [bounds[0], 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5])]
+        high = [bounds[1]] + low[1:]
+        cut = simple.StrokeCut(Input=camel)
+        cases = (
+            (simple.GeodesicDistance(Input=camel), "SourcePoint", low),
+            (simple.GeodesicSeam(Input=camel, Cut=simple.OutputPort(cut, 1)), "TargetPoint", high),
+            (simple.ROIScissor(Input=camel), "ClickPoint", high),
+            (simple.GeodesicPolyline(Input=camel), "PathPoints", low + high),
+        )
+        for proxy, name, expected in cases:
+            with self.subTest(proxy=proxy.SMProxy.GetXMLLabel()):
+                values = list(proxy.GetPropertyValue(name))
+                self.assertEqual(len(values), len(expected))
+                for value, bound in zip(values, expected):
+                    self.assertAlmostEqual(value, bound, delta=1e-12)
+                proxy.UpdatePipeline()  # an error would print "ERROR:", which fails the test
+        distance = servermanager.Fetch(cases[0][0]).GetPointData().GetArray("GeodesicDistance")
+        self.assertEqual(distance.GetNumberOfTuples(), 9770)
+        # The source lies inside a triangle, one of whose corners is nearest; the camel is one piece.
+        low_distance, high_distance = distance.GetRange()
+        self.assertTrue(0.0 <= low_distance < 0.01 and high_distance < float("inf"))
+        self.assertEqual(servermanager.Fetch(cases[1][0], idx=1).GetNumberOfLines(), 1)
+        region = vtk_to_numpy(servermanager.Fetch(cases[2][0]).GetCellData().GetArray("RoiRegion"))
+        self.assertTrue(0 < region.sum() < len(region))
+        path = servermanager.Fetch(cases[3][0])
+        self.assertEqual(path.GetNumberOfLines(), 1)
+        # The path runs over the camel's back from one flank to the other: longer than the
+        # straight line between its ends, which lie on the surface.
+        first, last = path.GetPoint(0), path.GetPoint(path.GetNumberOfPoints() - 1)
+        chord = sum((a - b) ** 2 for a, b in zip(first, last)) ** 0.5
+        self.assertGreater(path.GetFieldData().GetArray("TotalLength").GetValue(0), chord)
+        self.assertTrue(first[0] > bounds[0] and last[0] < bounds[1])
+
+    def test_geodesic_path_loop(self):
+        """Geodesic Polyline by its label: a closed loop through three points given as an input, closed
+        and simple, the arc length rising to the total length."""
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkPolyData
+        sphere = simple.Sphere(Radius=RADIUS, ThetaResolution=64, PhiResolution=64)
+        corners = vtkPoints()
+        for point in ((RADIUS, 0.0, 0.0), (0.0, RADIUS, 0.0), (0.0, 0.0, RADIUS)):
+            corners.InsertNextPoint(point)
+        points = vtkPolyData()
+        points.SetPoints(corners)
+        producer = simple.TrivialProducer()
+        producer.GetClientSideObject().SetOutput(points)
+        loop = simple.GeodesicPolyline(Input=sphere, Points=producer, ClosedLoop=1)
+        loop.UpdatePipeline()
+        output = servermanager.Fetch(loop)
+        self.assertEqual(output.GetNumberOfLines(), 1)
+        self.assertEqual(output.GetCellData().GetArray("Closed").GetValue(0), 1)
+        self.assertEqual(output.GetFieldData().GetArray("SelfCrossings").GetValue(0), 0)
+        # The octant's three quarter great circles: 3 pi R / 2.
+        total = output.GetFieldData().GetArray("TotalLength").GetValue(0)
+        self.assertAlmostEqual(total, 1.5 * 3.141592653589793 * RADIUS, delta=0.01 * 1.5 * 3.141592653589793 * RADIUS)
+        arc = vtk_to_numpy(output.GetPointData().GetArray("ArcLength"))
+        self.assertTrue((arc[1:] >= arc[:-1]).all() and arc[-1] < total)
+        path_points = vtk_to_numpy(output.GetPointData().GetArray("PathPoint"))
+        self.assertEqual(sorted(path_points[path_points >= 0].tolist()), [0, 1, 2])
+
+    def test_easy_mesh_cut_applies_at_once(self):
+        """A first-time user adds Easy Mesh Cut to the camel and presses Apply: the foreground and
+        background strokes of the panel start at the input's low-x and high-x sides, are moved
+        onto the surface, and cut the camel in two parts."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        cut = simple.EasyMeshCut(Input=camel)
+        bounds = camel.GetDataInformation().GetBounds()
+        self.assertEqual(list(cut.ForegroundPoints)[0], bounds[0])
+        self.assertEqual(list(cut.BackgroundPoints)[0], bounds[1])
+        cut.UpdatePipeline()  # an error would print "ERROR:", which fails the test
+        segment = vtk_to_numpy(servermanager.Fetch(cut).GetCellData().GetArray("Segment"))
+        self.assertEqual(sorted(set(segment.tolist())), [0, 1])
+
     def test_automatic_segmentation_proxies(self):
         """Each automatic-segmentation proxy, by its label, labels every camel face with the
         segments asked for."""

@@ -3,6 +3,7 @@
 
 #include "CacheKey.h"
 #include "Error.h"
+#include "Geodesic/SurfaceLocation.h"
 #include "Geodesic/VectorDijkstra.h"
 #include "Harmonic/FieldGradient.h"
 #include "Session/Surface.h"
@@ -56,10 +57,10 @@ std::vector<Vector3> descentDirections(
   return directions;
 }
 
-double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric)
+std::vector<double> segmentLengths(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric)
 {
-  double length = 0.0;
   const int segments = segmentCount(curve);
+  std::vector<double> lengths(static_cast<std::size_t>(std::max(segments, 0)));
   for (int i = 0; i < segments; ++i)
   {
     const Vector3& a = curve.points[i];
@@ -67,12 +68,22 @@ double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const An
     const Vector3 d = b - a;
     if (metric.isotropic)
     {
-      length += d.norm();
+      lengths[i] = d.norm();
       continue;
     }
     const int f = curve.faces[i];
     const Eigen::Matrix3d tensor = metric.tensorAt(mesh, f, barycentricInFace(mesh, f, 0.5 * (a + b)));
-    length += std::sqrt(std::max(d.dot(tensor * d), 0.0));
+    lengths[i] = std::sqrt(std::max(d.dot(tensor * d), 0.0));
+  }
+  return lengths;
+}
+
+double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric)
+{
+  double length = 0.0;
+  for (double segment : segmentLengths(mesh, curve, metric))
+  {
+    length += segment;
   }
   return length;
 }
@@ -80,6 +91,9 @@ double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const An
 namespace
 {
 constexpr double Tiny = 1e-12;
+// A source point whose barycentric coordinate of a corner is within this of 1 is near the corner
+// (a corner given in single precision is about 1e-7 from it).
+constexpr double NearCorner = 1e-3;
 
 // The plane of a triangle: unit normal and the gradients of the barycentric coordinates.
 struct FaceFrame
@@ -160,9 +174,33 @@ public:
     {
       this->IsSourceVertex[v] = 1;
     }
+    // A point on an edge or at a corner lies in every triangle there: a path arriving through any
+    // of them ends on it. A point near a corner ends paths arriving around that corner through
+    // the corner: there the field is a cone whose apex is the corner, the corner's descent
+    // direction is meaningless, and a path circled it to find the point's own triangle.
     for (std::size_t i = 0; i < source.points.size(); ++i)
     {
-      this->PointFaces.emplace(source.points[i].face, static_cast<int>(i));
+      const SurfacePoint& point = source.points[i];
+      const std::vector<int> holding = facesHolding(mesh, point);
+      for (int f : holding)
+      {
+        this->PointFaces.emplace(f, static_cast<int>(i));
+      }
+      const Triangle& t = mesh.triangle(point.face);
+      for (int k = 0; k < 3; ++k)
+      {
+        if (point.barycentric[k] < 1.0 - NearCorner)
+        {
+          continue;
+        }
+        for (int f : mesh.vertexFaces(t[k]))
+        {
+          if (!std::binary_search(holding.begin(), holding.end(), f))
+          {
+            this->CornerFaces.emplace(f, std::make_pair(static_cast<int>(i), t[k]));
+          }
+        }
+      }
     }
     for (std::size_t c = 0; c < source.curves.size(); ++c)
     {
@@ -190,6 +228,14 @@ public:
     if (point != this->PointFaces.end())
     {
       append(path, surfacePosition(this->Mesh, this->Source.points[point->second]), f);
+      return true;
+    }
+    const auto corner = this->CornerFaces.find(f);
+    if (corner != this->CornerFaces.end())
+    {
+      const SurfacePoint& end = this->Source.points[corner->second.first];
+      append(path, this->Mesh.point(corner->second.second), f);
+      append(path, surfacePosition(this->Mesh, end), end.face);
       return true;
     }
     const auto range = this->CurveFaces.equal_range(f);
@@ -250,6 +296,7 @@ private:
   const GeodesicSource& Source;
   std::vector<char> IsSourceVertex;
   std::multimap<int, int> PointFaces;
+  std::multimap<int, std::pair<int, int>> CornerFaces; // face -> (source point, the corner it is near)
   std::multimap<int, std::pair<int, int>> CurveFaces;
 };
 
@@ -614,32 +661,75 @@ SurfacePath shortestPath(
   return traceToSource(mesh, directions, to, source, metric);
 }
 
-GeodesicLoop geodesicLoop(
-  const Surface& surface, const std::vector<SurfacePoint>& points, const GeodesicPathOptions& options)
+GeodesicPolyline geodesicPolyline(const Surface& surface, const std::vector<SurfacePoint>& points, bool closed,
+  const GeodesicPathOptions& options)
 {
-  if (points.size() < 3)
+  const TriangleMesh& mesh = surface.mesh();
+  const std::size_t minimum = closed ? 3 : 2;
+  if (points.size() < minimum)
   {
-    throw Error("a closed geodesic loop needs at least 3 points, got " + std::to_string(points.size()));
+    throw Error(std::string(closed ? "a closed geodesic loop" : "a geodesic path") + " needs at least " +
+      std::to_string(minimum) + " points, got " + std::to_string(points.size()));
   }
-  GeodesicLoop loop;
-  SurfaceCurve& curve = loop.path.curve;
-  curve.closed = true;
   for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const std::string name = "path point " + std::to_string(i);
+    checkSurfacePoint(mesh, points[i], name.c_str());
+    if (mesh.faceComponent(points[i].face) != mesh.faceComponent(points[0].face))
+    {
+      throw Error(name + " lies on another connected component of the mesh than path point 0; no path joins them");
+    }
+  }
+  const std::size_t legs = closed ? points.size() : points.size() - 1;
+  for (std::size_t i = 0; i < legs; ++i)
+  {
+    const std::size_t j = (i + 1) % points.size();
+    if (surfacePosition(mesh, points[i]) == surfacePosition(mesh, points[j]))
+    {
+      throw Error("path points " + std::to_string(i) + " and " + std::to_string(j) +
+        " are the same point of the surface; give each point once");
+    }
+  }
+  GeodesicPolyline result;
+  SurfaceCurve& curve = result.path.curve;
+  curve.closed = closed;
+  for (std::size_t i = 0; i < legs; ++i)
   {
     const SurfacePath leg = shortestPath(surface, points[i], points[(i + 1) % points.size()], options);
     // Each leg starts where the previous one ended: keep its first point only for the first leg.
     const std::size_t first = curve.points.empty() ? 0 : 1;
-    for (std::size_t p = first; p < leg.curve.points.size(); ++p)
-    {
-      curve.points.push_back(leg.curve.points[p]);
-    }
+    result.waypoints.push_back(curve.points.empty() ? 0 : static_cast<int>(curve.points.size()) - 1);
+    curve.points.insert(curve.points.end(), leg.curve.points.begin() + first, leg.curve.points.end());
     curve.faces.insert(curve.faces.end(), leg.curve.faces.begin(), leg.curve.faces.end());
-    loop.path.length += leg.length;
   }
-  // The last leg ends on the first point: drop the repeat, its face closes the loop.
-  curve.points.pop_back();
-  loop.selfCrossings = countSelfCrossings(surface.mesh(), curve);
-  return loop;
+  if (closed)
+  {
+    // The last leg ends on the first point: drop the repeat, its face closes the loop.
+    curve.points.pop_back();
+  }
+  else
+  {
+    result.waypoints.push_back(static_cast<int>(curve.points.size()) - 1);
+  }
+  const std::vector<double> lengths = segmentLengths(mesh, curve, anisotropicMetric(surface, options.metric));
+  result.arcLength.assign(curve.points.size(), 0.0);
+  for (std::size_t i = 0; i < lengths.size(); ++i)
+  {
+    result.path.length += lengths[i];
+    if (i + 1 < curve.points.size())
+    {
+      result.arcLength[i + 1] = result.path.length;
+    }
+  }
+  result.selfCrossings = countSelfCrossings(mesh, curve);
+  return result;
+}
+
+GeodesicLoop geodesicLoop(
+  const Surface& surface, const std::vector<SurfacePoint>& points, const GeodesicPathOptions& options)
+{
+  GeodesicPolyline loop = geodesicPolyline(surface, points, true, options);
+  return GeodesicLoop{ std::move(loop.path), loop.selfCrossings };
 }
 
 } // namespace kerf

@@ -38,7 +38,11 @@ std::vector<Vector3> descentDirections(
 SurfacePath traceToSource(const TriangleMesh& mesh, const std::vector<Vector3>& directions, const SurfacePoint& start,
   const GeodesicSource& source, const AnisotropicMetric& metric);
 
-/// Length of a curve under the metric (the tensor interpolated at each segment's midpoint).
+/// Length of each segment of a curve under the metric (the tensor interpolated at the segment's
+/// midpoint), in the curve's order.
+std::vector<double> segmentLengths(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric);
+
+/// Length of a curve under the metric: the sum of its segmentLengths.
 double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric);
 
 /// Number of pairs of segments of a curve that cross inside a triangle (segments that share an
@@ -74,10 +78,30 @@ GeodesicDistance geodesicDistance(const Surface& surface, const GeodesicSource& 
 SurfacePath shortestPath(
   const Surface& surface, const SurfacePoint& from, const SurfacePoint& to, const GeodesicPathOptions& options);
 
-/// A closed curve through the points in order: the shortest paths from each point to the next
-/// and from the last back to the first. `selfCrossings` counts where it crosses itself (0 for a
-/// simple loop; shortest paths between points given in a bad order can cross). Throws
-/// kerf::Error for fewer than 3 points and as shortestPath.
+/// A curve through points in order, made of the shortest paths from each point to the next.
+struct GeodesicPolyline
+{
+  SurfacePath path;
+  /// Per curve point, the length under the metric from the first point along the curve (a closed
+  /// curve returns to its first point at path.length).
+  std::vector<double> arcLength;
+  /// Per given point, the index of the curve point it became.
+  std::vector<int> waypoints;
+  /// Where the curve crosses itself (countSelfCrossings); 0 for a simple curve.
+  int selfCrossings = 0;
+};
+
+/// The shortest paths from each point to the next (with `closed`, also from the last back to the
+/// first), joined into one curve that passes exactly through every point. Throws kerf::Error
+/// naming the points for fewer than 2 points (3 when closed), points off the surface
+/// (checkSurfacePoint), two consecutive points at the same place, and points on another
+/// connected component than the first; otherwise as shortestPath.
+GeodesicPolyline geodesicPolyline(const Surface& surface, const std::vector<SurfacePoint>& points, bool closed,
+  const GeodesicPathOptions& options);
+
+/// A closed curve through the points in order: geodesicPolyline with `closed`. `selfCrossings`
+/// counts where it crosses itself (0 for a simple loop; shortest paths between points given in a
+/// bad order can cross). Throws as geodesicPolyline.
 struct GeodesicLoop
 {
   SurfacePath path;
