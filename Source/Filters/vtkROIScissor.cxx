@@ -17,6 +17,7 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <cmath>
 #include <limits>
 
 vtkStandardNewMacro(vtkROIScissor);
@@ -33,11 +34,15 @@ vtkROIScissor::vtkROIScissor()
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
   this->SetRegionArrayName("RoiRegion");
+  this->SetClickRadiusArrayName("Radius");
+  this->SetClickSubtractArrayName("Subtract");
 }
 
 vtkROIScissor::~vtkROIScissor()
 {
   this->SetRegionArrayName(nullptr);
+  this->SetClickRadiusArrayName(nullptr);
+  this->SetClickSubtractArrayName(nullptr);
 }
 
 vtkPolyData* vtkROIScissor::GetBoundary()
@@ -62,13 +67,32 @@ int vtkROIScissor::RequestData(
     const double diagonal = distances.surface().mesh().boundingBoxDiagonal();
     const double radius = kerf::RelativeDistance(this->Radius, diagonal, "Radius");
 
-    std::vector<kerf::RoiClick> clicks;
+    std::vector<kerf::RoiClick> clicks, subtracted;
     vtkPointSet* clickInput = vtkPointSet::GetData(inputVector[1], 0);
     if (clickInput)
     {
-      for (const kerf::Vector3& point : kerf::ReadPoints(clickInput))
+      const std::vector<kerf::Vector3> points = kerf::ReadPoints(clickInput);
+      // Optional per-click arrays: read when the input has them.
+      const auto optional = [&](const char* name) {
+        return name && *name && clickInput->GetPointData()->GetAbstractArray(name)
+          ? kerf::ReadNamedPointArray(clickInput, name, "the clicks")
+          : std::vector<double>();
+      };
+      const std::vector<double> radii = optional(this->ClickRadiusArrayName);
+      const std::vector<double> subtract = optional(this->ClickSubtractArrayName);
+      for (std::size_t i = 0; i < points.size(); ++i)
       {
-        clicks.push_back({ point, radius });
+        if (!radii.empty() && !(std::isfinite(radii[i]) && radii[i] > 0.0))
+        {
+          throw kerf::Error("click " + std::to_string(i) + " has the radius " + std::to_string(radii[i]) +
+            "; radii are positive fractions of the diagonal");
+        }
+        const double r = radii.empty() ? radius : radii[i] * diagonal;
+        (!subtract.empty() && subtract[i] != 0.0 ? subtracted : clicks).push_back({ points[i], r });
+      }
+      if (clicks.empty() && !subtracted.empty())
+      {
+        throw kerf::Error("every click subtracts its disc: at least one click must add one");
       }
     }
     else
@@ -90,7 +114,7 @@ int vtkROIScissor::RequestData(
       ? this->MaximumProjectionDistance
       : std::numeric_limits<double>::infinity();
     this->UpdateProgress(0.1);
-    const kerf::RoiScissorResult result = kerf::roiScissor(distances.surface(), clicks, {}, options, &distances);
+    const kerf::RoiScissorResult result = kerf::roiScissor(distances.surface(), clicks, subtracted, options, &distances);
     this->UpdateProgress(0.9);
 
     const kerf::SurfaceInput& surface = this->State->surface;
@@ -129,4 +153,6 @@ void vtkROIScissor::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "RegionArrayName: " << (this->RegionArrayName ? this->RegionArrayName : "(none)") << "\n";
+  os << indent << "ClickRadiusArrayName: " << (this->ClickRadiusArrayName ? this->ClickRadiusArrayName : "(none)") << "\n";
+  os << indent << "ClickSubtractArrayName: " << (this->ClickSubtractArrayName ? this->ClickSubtractArrayName : "(none)") << "\n";
 }

@@ -6,9 +6,14 @@
  * Input 0: the surface. Input 1 (optional): clicks, a vtkPointSet whose points each add a
  * geodesic disc, each moved to the nearest surface point and refused beyond
  * MaximumProjectionDistance; without it the click is ClickPoint, moved to the nearest surface
- * point whatever its distance (ParaView's handle starts at the input's bounds).
+ * point whatever its distance (ParaView's handle starts at the input's bounds). A click's point
+ * data may give its own radius (the array ClickRadiusArrayName, default "Radius", a fraction of
+ * the diagonal like Radius) and make it subtract its disc instead of adding it (the array
+ * ClickSubtractArrayName, default "Subtract": non-zero subtracts; ROI Scissor, section 5.2);
+ * without these arrays every click adds a disc of radius Radius.
  *
- * The candidate region is the union of the geodesic discs of radius Radius around the clicks
+ * The candidate region is the union of the added clicks' geodesic discs minus the subtracted ones'
+ * (of radius Radius unless the clicks give theirs) around the clicks
  * (heat method; each click's distance is kept, so a new radius costs no new distance). Vertices
  * within InnerFraction of the radius of a click get the value 1, the ends of the edges crossing
  * the region's border 0, and the concavity-aware harmonic field (ROI Scissor, section 3.1) is
@@ -93,6 +98,15 @@ public:
   ///@}
 
   ///@{
+  /// Point arrays of input 1 read when present: each click's radius (fraction of the diagonal;
+  /// default name "Radius") and whether it subtracts its disc (non-zero; default name "Subtract").
+  vtkSetStringMacro(ClickRadiusArrayName);
+  vtkGetStringMacro(ClickRadiusArrayName);
+  vtkSetStringMacro(ClickSubtractArrayName);
+  vtkGetStringMacro(ClickSubtractArrayName);
+  ///@}
+
+  ///@{
   /// Name of the output cell array of the region. Default "RoiRegion".
   vtkSetStringMacro(RegionArrayName);
   vtkGetStringMacro(RegionArrayName);
@@ -117,6 +131,8 @@ protected:
   double Gamma = 1.0;
   double MaximumProjectionDistance = 0.05;
   char* RegionArrayName = nullptr;
+  char* ClickRadiusArrayName = nullptr;
+  char* ClickSubtractArrayName = nullptr;
 
 private:
   vtkROIScissor(const vtkROIScissor&) = delete;

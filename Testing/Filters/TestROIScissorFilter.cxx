@@ -6,6 +6,9 @@
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkIntArray.h>
+#include <vtkMath.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -121,6 +124,62 @@ int TestROIScissorFilter(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
   ok &= KERF_CHECK(labelsOf(roi->GetOutput()) == labels);
   ok &= KERF_CHECK(dumbbell->GetMTime() == inputTime && dumbbell->GetPointData()->GetNumberOfArrays() == 0);
+
+  // Clicks with their own radius: the Radius array wins over the filter's Radius.
+  vtkNew<vtkDoubleArray> radii;
+  radii->SetName("Radius");
+  radii->InsertNextValue(0.5);
+  clicks->GetPointData()->AddArray(radii);
+  roi->SetRadius(0.9);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  ok &= KERF_CHECK(labelsOf(roi->GetOutput()) == labels);
+  // A second click that subtracts its disc (radius 0.1 of the diagonal) on the large lobe just
+  // below the crease: the candidate region loses the vertices near it, the region stays the
+  // protrusion.
+  const double below = crease - 0.45;
+  clickPoints->InsertNextPoint(kerf::dumbbellRadius(below, HalfLength, Radii, NeckHeight, NeckDepth), 0.0, below);
+  radii->InsertNextValue(0.1);
+  vtkNew<vtkIntArray> subtract;
+  subtract->SetName("Subtract");
+  subtract->InsertNextValue(0);
+  subtract->InsertNextValue(1);
+  clicks->GetPointData()->AddArray(subtract);
+  clicks->Modified();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  vtkDataArray* candidate = roi->GetOutput()->GetPointData()->GetArray("RoiCandidate");
+  int removedNear = 0, keptFar = 0;
+  const double* subtracted = clickPoints->GetPoint(1);
+  for (vtkIdType v = 0; candidate && v < dumbbell->GetNumberOfPoints(); ++v)
+  {
+    const double* p = dumbbell->GetPoint(v);
+    const double d = std::sqrt(vtkMath::Distance2BetweenPoints(p, subtracted));
+    if (d < 0.2)
+    {
+      removedNear += candidate->GetComponent(v, 0) == 0.0 ? 1 : 0;
+      ok &= KERF_CHECK(candidate->GetComponent(v, 0) == 0.0);
+    }
+    else if (p[2] > crease + 0.2)
+    {
+      keptFar += candidate->GetComponent(v, 0) == 1.0 ? 1 : 0;
+      ok &= KERF_CHECK(candidate->GetComponent(v, 0) == 1.0);
+    }
+  }
+  std::cout << "subtracted disc: " << removedNear << " vertices near it out of the candidate region, " << keptFar
+            << " of the protrusion in it" << std::endl;
+  ok &= KERF_CHECK(removedNear > 10 && keptFar > 100);
+  ok &= KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
+  // Errors of the click arrays: only subtracting clicks, a radius that is not positive.
+  subtract->SetValue(0, 1);
+  subtract->Modified();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).find("every click subtracts its disc") != std::string::npos);
+  subtract->SetValue(0, 0);
+  radii->SetValue(1, -0.1);
+  radii->Modified();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).find("click 1 has the radius") != std::string::npos);
+  clicks->GetPointData()->RemoveArray("Radius");
+  clicks->GetPointData()->RemoveArray("Subtract");
+  clickPoints->SetNumberOfPoints(1);
+  roi->SetRadius(0.5);
 
   // Errors: a click off the surface, a disc covering the whole surface.
   clickPoints->SetPoint(0, 0.0, 0.0, 5.0);
