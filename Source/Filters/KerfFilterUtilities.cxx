@@ -337,15 +337,9 @@ std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Su
   std::vector<Vector3> positions;
   for (const Vector3& point : panel.Points())
   {
-    const ClosestPointLocator::Hit hit = point.allFinite() && point.cwiseAbs().maxCoeff() <= CoordinateLimit
-      ? surface.locator().closest(point)
-      : ClosestPointLocator::Hit();
-    if (hit.face < 0)
-    {
-      throw Error(noun + " point " + std::to_string(positions.size()) +
-        " has a NaN, infinite or huge coordinate (beyond +-1e50)");
-    }
-    positions.push_back(hit.position);
+    const SurfacePoint placed =
+      PanelPointOnSurface(surface, point, noun + " point " + std::to_string(positions.size()));
+    positions.push_back(surfacePosition(surface.mesh(), placed));
   }
   return positions;
 }
