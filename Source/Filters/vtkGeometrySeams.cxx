@@ -85,6 +85,7 @@ int vtkGeometrySeams::RequestData(vtkInformation*, vtkInformationVector** inputV
       kerf::MakeArray(this->HarmonicFieldArrayName, surface.ToInputPoints(result.harmonicField)));
     output->GetPointData()->SetActiveScalars(this->HarmonicFieldArrayName);
     output->GetPointData()->AddArray(kerf::MakeIntArray(this->SectorArrayName, surface.ToInputPoints(result.sector)));
+    output->GetCellData()->AddArray(kerf::MakeIntArray(this->SectorArrayName, result.faceSector));
     output->GetCellData()->AddArray(kerf::MakeIntArray(this->RingSeamArrayName, result.ring));
     output->GetCellData()->AddArray(kerf::MakeArray(this->EdgeCostArrayName, result.faceCost));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("RingCount", static_cast<double>(result.ringCost.size())));

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numeric>
@@ -239,6 +240,33 @@ TEST(GeometrySeams, ContoursAndSectorsOfThePlainCylinder)
     }
   }
   EXPECT_EQ(sectors, (std::set<int>{ 0, 1, 2, 3, 4, 5 }));
+  // Per triangle: the modeling triangles (a modeling point) carry the six sectors, each point's
+  // sector is the least of its triangles', and the other triangles carry -1.
+  std::set<int> faceSectors;
+  std::vector<int> leastOfFaces(mesh.vertexCount(), 1 << 30);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const kerf::Triangle& t = mesh.triangle(f);
+    const bool modeling = region[t[0]] == 1.0 || region[t[1]] == 1.0 || region[t[2]] == 1.0;
+    if (!modeling)
+    {
+      EXPECT_EQ(result.faceSector[f], -1);
+      continue;
+    }
+    faceSectors.insert(result.faceSector[f]);
+    for (int v : t)
+    {
+      leastOfFaces[v] = std::min(leastOfFaces[v], result.faceSector[f]);
+    }
+  }
+  EXPECT_EQ(faceSectors, sectors);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (region[v] == 1.0)
+    {
+      EXPECT_EQ(result.sector[v], leastOfFaces[v]);
+    }
+  }
 }
 
 TEST(GeometrySeams, EdgeCostsLieInTheUnitInterval)

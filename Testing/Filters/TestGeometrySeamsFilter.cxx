@@ -56,7 +56,8 @@ int TestGeometrySeamsFilter(int, char*[])
   vtkDataArray* sector = output->GetPointData()->GetArray("Sector");
   vtkDataArray* ring = output->GetCellData()->GetArray("RingSeam");
   vtkDataArray* cost = output->GetCellData()->GetArray("EdgeCost");
-  ok &= KERF_CHECK(field && sector && ring && cost);
+  vtkDataArray* faceSector = output->GetCellData()->GetArray("Sector");
+  ok &= KERF_CHECK(field && sector && ring && cost && faceSector);
   ok &= KERF_CHECK(field && field->GetNumberOfTuples() == mesh.vertexCount());
   ok &= KERF_CHECK(ring && ring->GetNumberOfTuples() == mesh.faceCount());
   int mismatches = 0, ringFaces = 0;
@@ -65,8 +66,9 @@ int TestGeometrySeamsFilter(int, char*[])
     mismatches += field->GetComponent(v, 0) != core.harmonicField[v] ? 1 : 0;
     mismatches += sector->GetComponent(v, 0) != core.sector[v] ? 1 : 0;
   }
-  for (int f = 0; ring && cost && f < mesh.faceCount(); ++f)
+  for (int f = 0; ring && cost && faceSector && f < mesh.faceCount(); ++f)
   {
+    mismatches += faceSector->GetComponent(f, 0) != core.faceSector[f] ? 1 : 0;
     mismatches += ring->GetComponent(f, 0) != core.ring[f] ? 1 : 0;
     mismatches += cost->GetComponent(f, 0) != core.faceCost[f] ? 1 : 0;
     ringFaces += ring->GetComponent(f, 0) >= 0 ? 1 : 0;

@@ -598,6 +598,11 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   }
   const std::vector<int> faceSector = labelSectors(r, sectors);
   result.sector.assign(mesh.vertexCount(), -1);
+  result.faceSector.assign(mesh.faceCount(), -1);
+  for (int f = 0; f < r.faceCount(); ++f)
+  {
+    result.faceSector[modeling.sub.globalFace[f]] = faceSector[f];
+  }
   for (int v = 0; v < r.vertexCount(); ++v)
   {
     if (labels[modeling.sub.globalVertex[v]] == 1)

@@ -64,6 +64,7 @@ struct GeometrySeamsResult
 {
   std::vector<double> harmonicField; ///< per vertex: 0 on handle, 1 on fixed points
   std::vector<int> sector;           ///< per vertex: sector of a modeling point, else -1
+  std::vector<int> faceSector;       ///< per triangle: sector of a modeling triangle, else -1
   std::vector<int> ring;             ///< per triangle: index of its ring seam, else -1
   std::vector<double> ringCost;      ///< per ring: its min-cut value (sum of capacities cut)
   /// Per edge of the modeling region, each term of Eq. 3 normalised to [0, 1]; -1 elsewhere.
