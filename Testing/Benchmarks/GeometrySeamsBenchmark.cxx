@@ -10,6 +10,15 @@
 //   BM_GeometrySeamsExhaustive/<size>  the same with the paper's loop, one max-flow per edge of
 //                                      the sector contour, for the first ring only (15 rings take
 //                                      about 15 times as long: each ring repeats the loop)
+//   BM_SeamCarvingSession/<size>       kerf::GeometrySeamCarving's set-up on the 15 rings (rest
+//                                      OpenMesh copy, rungs and sides, first factorization)
+//   BM_SeamCarvingUpdate/<size>        one handle update that changes no seam: the handle
+//                                      moves by +-1e-4 around a stretch of one ring height
+//                                      (the Laplace solve and the output surface)
+//   BM_SeamCarvingSeamStep/<size>      one handle update that executes seams: the handle moves
+//                                      between the identity and a stretch of 1.5 ring heights,
+//                                      so each update splits (or undoes) a ring segment in
+//                                      every sector, rebuilds the mesh and factors again
 // The meshes, normal-cone angles and vtkPolyData are built once per size, outside the timed loops.
 #include "BenchmarkPolyData.h"
 #include "KerfBenchmarks.h"
@@ -17,6 +26,7 @@
 
 #include "Geometry/SurfaceDescriptors.h"
 #include "Mesh/MeshGenerators.h"
+#include "SeamCarving/GeometrySeamCarving.h"
 #include "SeamCarving/GeometrySeams.h"
 
 #include <benchmark/benchmark.h>
@@ -57,6 +67,8 @@ struct SeamScene
   std::vector<double> normalConeAngle;
   vtkSmartPointer<vtkPolyData> polyData;
   int modelingTriangles = 0;
+  double rowHeight = 0.0;
+  kerf::GeometrySeamsResult seams; // 15 rings, for the editing benchmarks
 };
 
 const SeamScene& sceneOfSize(const CylinderSize& size)
@@ -78,6 +90,9 @@ const SeamScene& sceneOfSize(const CylinderSize& size)
       array->InsertNextValue(value);
     }
     built->polyData->GetPointData()->AddArray(array);
+    built->rowHeight = size.height / (size.rings - 1);
+    kerf::GeometrySeamsOptions options;
+    built->seams = kerf::computeGeometrySeams(built->mesh, built->regions, built->normalConeAngle, options);
     scene = std::move(built);
   }
   return *scene;
@@ -139,6 +154,64 @@ void geometrySeamsCore(benchmark::State& state, const CylinderSize& size, kerf::
     setCounters);
 }
 
+kerf::SeamCarvingInput carvingInput(const SeamScene& scene)
+{
+  kerf::SeamCarvingInput input;
+  input.mesh = &scene.mesh;
+  input.region = scene.regions;
+  input.faceRing = scene.seams.ring;
+  input.faceSector = scene.seams.faceSector;
+  input.faceCost = scene.seams.faceCost;
+  input.normalConeAngle = scene.normalConeAngle;
+  return input;
+}
+
+Eigen::Matrix4d stretch(double dz)
+{
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m(2, 3) = -dz; // the handle lies below the modeling region
+  return m;
+}
+
+void seamCarvingSession(benchmark::State& state, const CylinderSize& size)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const SeamScene& { return sceneOfSize(size); },
+    [](benchmark::State& st, const SeamScene& scene) {
+      const kerf::SeamCarvingInput input = carvingInput(scene);
+      for (auto _ : st)
+      {
+        kerf::GeometrySeamCarving carving(input, kerf::SeamCarvingOptions());
+        benchmark::DoNotOptimize(carving.deform(Eigen::Matrix4d::Identity()).points.data());
+      }
+    },
+    setCounters);
+}
+
+// One deform() per iteration, alternating between two handle positions.
+void seamCarvingUpdate(benchmark::State& state, const CylinderSize& size, double first, double second)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const SeamScene& { return sceneOfSize(size); },
+    [&](benchmark::State& st, const SeamScene& scene) {
+      kerf::GeometrySeamCarving carving(carvingInput(scene), kerf::SeamCarvingOptions());
+      carving.deform(stretch(first * scene.rowHeight));
+      bool toSecond = true;
+      int factorizations = 0, updates = 0, split = 0;
+      for (auto _ : st)
+      {
+        const kerf::SeamCarvingResult& result = carving.deform(stretch((toSecond ? second : first) * scene.rowHeight));
+        factorizations += result.factorizations;
+        split = std::max(split, result.splitSegments);
+        ++updates;
+        toSecond = !toSecond;
+      }
+      st.counters["factorizations_per_update"] = static_cast<double>(factorizations) / std::max(updates, 1);
+      st.counters["split_segments"] = split;
+    },
+    setCounters);
+}
+
 } // namespace
 
 namespace kerf
@@ -157,6 +230,11 @@ void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes)
         [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::GlobalCutFirst, 15); }),
       benchmark::RegisterBenchmark(("BM_GeometrySeamsExhaustive/" + label).c_str(),
         [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::Exhaustive, 1); }),
+      benchmark::RegisterBenchmark(("BM_SeamCarvingSession/" + label).c_str(), seamCarvingSession, size),
+      benchmark::RegisterBenchmark(("BM_SeamCarvingUpdate/" + label).c_str(),
+        [size](benchmark::State& state) { seamCarvingUpdate(state, size, 1.0, 1.0 + 1e-4 / (size.height / (size.rings - 1))); }),
+      benchmark::RegisterBenchmark(("BM_SeamCarvingSeamStep/" + label).c_str(),
+        [size](benchmark::State& state) { seamCarvingUpdate(state, size, 0.0, 1.0); }),
     };
     for (benchmark::internal::Benchmark* benchmark : registered)
     {

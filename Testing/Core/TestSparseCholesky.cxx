@@ -100,6 +100,26 @@ TEST(SparseCholesky, SolveMatchesDenseReference)
   EXPECT_LT(relativeError(cholesky.solve(b), f.reference.solve(b)), 1e-9);
 }
 
+TEST(SparseCholesky, SolveColumnsMatchesOneColumnAtATime)
+{
+  const Fixture f;
+  SparseCholesky cholesky;
+  ASSERT_TRUE(cholesky.factor(f.A));
+  Eigen::MatrixXd b(f.A.rows(), 3);
+  b.col(0) = Eigen::VectorXd::LinSpaced(f.A.rows(), -1.0, 2.0);
+  b.col(1) = Eigen::VectorXd::Ones(f.A.rows());
+  b.col(2) = Eigen::VectorXd::LinSpaced(f.A.rows(), 3.0, -5.0);
+  const Eigen::MatrixXd x = cholesky.solveColumns(b);
+  ASSERT_EQ(x.rows(), b.rows());
+  ASSERT_EQ(x.cols(), 3);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_LT(relativeError(x.col(c), f.reference.solve(b.col(c))), 1e-9);
+  }
+  SparseCholesky empty;
+  EXPECT_THROW(empty.solveColumns(b), Error);
+}
+
 TEST(SparseCholesky, LowRankMatchesDenseReference)
 {
   const Fixture f;

@@ -60,12 +60,12 @@ cholmod_sparse cholmodView(const Eigen::SparseMatrix<double>& A, int stype)
   return s;
 }
 
-cholmod_dense cholmodView(const double* values, std::size_t n)
+cholmod_dense cholmodView(const double* values, std::size_t n, std::size_t columns = 1)
 {
   cholmod_dense d{};
   d.nrow = n;
-  d.ncol = 1;
-  d.nzmax = n;
+  d.ncol = columns;
+  d.nzmax = n * columns;
   d.d = n;
   d.x = const_cast<double*>(values);
   d.xtype = CHOLMOD_REAL;
@@ -498,6 +498,24 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
   return Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(m.solveX->x), b.size());
 }
 
+Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
+{
+  const Implementation& m = *this->Impl;
+  if (!m.factor)
+  {
+    throw Error("no factorization to solve with");
+  }
+  cholmod_dense rhs = cholmodView(b.data(), static_cast<std::size_t>(b.rows()), static_cast<std::size_t>(b.cols()));
+  cholmod_dense* x = cholmod_solve(CHOLMOD_A, m.factor, &rhs, m.mutableCommon());
+  if (!x)
+  {
+    throw Error("the sparse solve failed");
+  }
+  Eigen::MatrixXd result = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), b.rows(), b.cols());
+  cholmod_free_dense(&x, m.mutableCommon());
+  return result;
+}
+
 ColumnPlan SparseCholesky::Implementation::planColumns(
   const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous)
 {
@@ -925,6 +943,15 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering)
 }
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
+{
+  if (!this->Impl->ready)
+  {
+    throw Error("no factorization to solve with");
+  }
+  return this->Impl->solver.solve(b);
+}
+
+Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
 {
   if (!this->Impl->ready)
   {

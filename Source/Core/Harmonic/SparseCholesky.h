@@ -53,6 +53,8 @@ public:
 
   /// A^-1 b.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// A^-1 B for several right-hand sides at once (one pass over the factor, with BLAS 3).
+  Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& b) const;
 
   /// What applies A^-1 U for one U.
   struct LowRankFactor;

@@ -684,16 +684,13 @@ void GeometrySeamCarving::Implementation::solve(const Eigen::Matrix4d& transform
     constrained.row(v.idx()) = q.transpose();
   }
   const Eigen::MatrixXd rhs = this->restRhs + this->coupling * constrained;
-  for (int d = 0; d < 3; ++d)
+  const Eigen::MatrixXd x = this->factor.solveColumns(rhs);
+  for (const VH v : m.vertices())
   {
-    const Eigen::VectorXd x = this->factor.solve(rhs.col(d));
-    for (const VH v : m.vertices())
+    const int i = this->freeIndex[v.idx()];
+    if (i >= 0)
     {
-      const int i = this->freeIndex[v.idx()];
-      if (i >= 0)
-      {
-        positions[v.idx()][d] = x[i];
-      }
+      positions[v.idx()] = x.row(i).transpose();
     }
   }
 }
