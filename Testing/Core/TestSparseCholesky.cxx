@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <numeric>
+
 #include <Eigen/Dense>
 
 #include <cstring>
@@ -98,6 +100,41 @@ TEST(SparseCholesky, SolveMatchesDenseReference)
   ASSERT_TRUE(cholesky.factor(f.A));
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(f.A.rows(), -1.0, 2.0);
   EXPECT_LT(relativeError(cholesky.solve(b), f.reference.solve(b)), 1e-9);
+}
+
+TEST(SparseCholesky, GivenPermutationSolvesAlike)
+{
+  const Fixture f;
+  SparseCholesky ordered;
+  ASSERT_TRUE(ordered.factor(f.A));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(f.A.rows(), -1.0, 2.0);
+  const std::vector<int> amd = ordered.permutation();
+  if (SparseCholesky::backend() == "CHOLMOD")
+  {
+    ASSERT_EQ(amd.size(), static_cast<std::size_t>(f.A.rows()));
+  }
+  // Its own ordering gives the same factor; the identity ordering a denser one, the same solution.
+  std::vector<int> identity(static_cast<std::size_t>(f.A.rows()));
+  std::iota(identity.begin(), identity.end(), 0);
+  for (const std::vector<int>& permutation : { amd.empty() ? identity : amd, identity })
+  {
+    SparseCholesky given;
+    ASSERT_TRUE(given.factor(f.A, permutation));
+    EXPECT_LT(relativeError(given.solve(b), f.reference.solve(b)), 1e-9);
+    if (permutation == amd)
+    {
+      EXPECT_EQ(given.factorNonZeros(), ordered.factorNonZeros());
+      EXPECT_EQ(given.permutation(), amd);
+    }
+  }
+  SparseCholesky refused;
+  std::vector<int> repeated = identity;
+  repeated[1] = 0;
+  if (SparseCholesky::backend() == "CHOLMOD")
+  {
+    EXPECT_THROW(refused.factor(f.A, repeated), Error);
+  }
+  EXPECT_THROW(refused.factor(f.A, std::vector<int>{ 0, 1 }), Error);
 }
 
 TEST(SparseCholesky, SolveColumnsMatchesOneColumnAtATime)

@@ -420,6 +420,40 @@ std::size_t SparseCholesky::factorNonZeros() const
 
 bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering ordering)
 {
+  return this->factorOrdered(A, ordering, nullptr);
+}
+
+bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, const std::vector<int>& permutation)
+{
+  if (permutation.size() != static_cast<std::size_t>(A.rows()))
+  {
+    throw Error("a fill-reducing permutation needs one entry per row (" + std::to_string(A.rows()) + ")");
+  }
+  std::vector<char> seen(permutation.size(), 0);
+  for (int p : permutation)
+  {
+    if (p < 0 || p >= static_cast<int>(permutation.size()) || seen[p])
+    {
+      throw Error("the fill-reducing permutation is not a permutation of the rows");
+    }
+    seen[p] = 1;
+  }
+  return this->factorOrdered(A, Ordering::AMD, &permutation);
+}
+
+std::vector<int> SparseCholesky::permutation() const
+{
+  const Implementation& m = *this->Impl;
+  if (!m.factor)
+  {
+    return {};
+  }
+  const int* perm = static_cast<const int*>(m.factor->Perm);
+  return std::vector<int>(perm, perm + m.factor->n);
+}
+
+bool SparseCholesky::factorOrdered(const Eigen::SparseMatrix<double>& A, Ordering ordering, const std::vector<int>* given)
+{
   Implementation& m = *this->Impl;
   m.freeFactors();
   m.last.reset();
@@ -432,9 +466,10 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering order
   }
   cholmod_sparse s = cholmodView(A.isCompressed() ? A : compressed, -1);
   m.common.nmethods = 1;
-  m.common.method[0].ordering = ordering == Ordering::AMD ? CHOLMOD_AMD : CHOLMOD_METIS;
+  m.common.method[0].ordering = given ? CHOLMOD_GIVEN : ordering == Ordering::AMD ? CHOLMOD_AMD : CHOLMOD_METIS;
   m.common.supernodal = CHOLMOD_SUPERNODAL;
-  m.factor = cholmod_analyze(&s, &m.common);
+  m.factor = given ? cholmod_analyze_p(&s, const_cast<int*>(given->data()), nullptr, 0, &m.common)
+                   : cholmod_analyze(&s, &m.common);
   if (!m.factor)
   {
     return false;
@@ -931,6 +966,20 @@ std::string SparseCholesky::backend()
 std::size_t SparseCholesky::factorNonZeros() const
 {
   return this->Impl->ready ? static_cast<std::size_t>(this->Impl->solver.matrixL().nestedExpression().nonZeros()) : 0;
+}
+
+bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, const std::vector<int>& permutation)
+{
+  if (permutation.size() != static_cast<std::size_t>(A.rows()))
+  {
+    throw Error("a fill-reducing permutation needs one entry per row (" + std::to_string(A.rows()) + ")");
+  }
+  return this->factor(A); // Eigen's solver orders by itself
+}
+
+std::vector<int> SparseCholesky::permutation() const
+{
+  return {};
 }
 
 bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering)

@@ -47,6 +47,14 @@ public:
   /// Factors the symmetric matrix A (only its lower triangle is read). False if A is not
   /// positive definite. Without CHOLMOD the ordering is Eigen's AMD.
   bool factor(const Eigen::SparseMatrix<double>& A, Ordering ordering = Ordering::AMD);
+  /// Factors A with a given fill-reducing permutation (row permutation[k] is eliminated k-th),
+  /// which skips the ordering: for a sequence of matrices that differ locally, the permutation of
+  /// an earlier one extended by the new rows. Throws kerf::Error if it is not a permutation of
+  /// A's rows. Without CHOLMOD, Eigen's AMD ordering is used instead.
+  bool factor(const Eigen::SparseMatrix<double>& A, const std::vector<int>& permutation);
+  /// The fill-reducing permutation of the current factorization (empty without one, or without
+  /// CHOLMOD).
+  std::vector<int> permutation() const;
 
   /// Nonzeros of the factor L (0 before the first factorization).
   std::size_t factorNonZeros() const;
@@ -88,6 +96,7 @@ public:
   static std::string backend();
 
 private:
+  bool factorOrdered(const Eigen::SparseMatrix<double>& A, Ordering ordering, const std::vector<int>* given);
   struct Implementation;
   std::unique_ptr<Implementation> Impl;
 };
