@@ -126,6 +126,7 @@ int vtkROIScissor::RequestData(
       std::vector<unsigned char>(result.candidate.begin(), result.candidate.end()))));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("IsoValue", result.isovalue));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("Score", result.score));
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("BoundaryEncloses", result.boundaryEncloses ? 1.0 : 0.0));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("ClickDistanceFields", static_cast<double>(distances.computations())));
 
     std::vector<kerf::PolylineToWrite> loops;

@@ -1,6 +1,8 @@
 // ROI Scissor: the same protrusion from different clicks, a boundary in the crease, Boolean discs, bad input.
 #include "Error.h"
 #include "Geodesic/RoiScissor.h"
+#include "IO/MeshFormats.h"
+#include "Mesh/Triangulation.h"
 #include "Mesh/MeshGenerators.h"
 #include "Session/Surface.h"
 
@@ -9,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 using namespace kerf;
@@ -98,6 +101,7 @@ TEST(RoiScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
       misplaced += (result.faceLabels[f] != 0) != above ? faceArea(mesh, f) : 0.0;
     }
     EXPECT_LE(misplaced, 0.05 * protrusionArea);
+    EXPECT_TRUE(result.boundaryEncloses);
     labels.push_back(result.faceLabels);
   }
   for (std::size_t i = 1; i < labels.size(); ++i)
@@ -111,6 +115,46 @@ TEST(RoiScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
     RecordProperty("Difference" + std::to_string(i), std::to_string(difference / region));
     EXPECT_LE(difference, 0.02 * region) << "click " << i;
   }
+}
+
+// Clicks on the camel's flanks and belly with a radius of 0.1 (7% of its diagonal): nothing
+// concave is near, so the best isoline is the innermost, a loop within a few triangles of the
+// click that the side labels cross without separating. The region stays the click's side inside
+// the candidate region (it once became the whole camel but two triangles).
+TEST(RoiScissor, RegionStaysInsideTheCandidateRegion)
+{
+  const PolygonMesh polygons = readOFF(std::string(KERF_SOURCE_DIR) + "/Data/camel.off");
+  const Surface camel(TriangleMesh(polygons.points, triangulatePolygons(polygons).triangles));
+  const TriangleMesh& mesh = camel.mesh();
+  int xMax = 0, xMin = 0, zMin = 0;
+  for (int v = 1; v < mesh.vertexCount(); ++v)
+  {
+    xMax = mesh.point(v).x() > mesh.point(xMax).x() ? v : xMax;
+    xMin = mesh.point(v).x() < mesh.point(xMin).x() ? v : xMin;
+    zMin = mesh.point(v).z() < mesh.point(zMin).z() ? v : zMin;
+  }
+  int fallbacks = 0;
+  for (int v : { xMax, xMin, zMin })
+  {
+    const RoiScissorResult result = roiScissor(camel, { { mesh.point(v), 0.1 } });
+    std::vector<char> inRegion(mesh.faceCount(), 0);
+    for (int f : result.regionFaces)
+    {
+      inRegion[f] = 1;
+    }
+    int inside = 0, outsideRegion = 0;
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      inside += result.faceLabels[f];
+      outsideRegion += result.faceLabels[f] && !inRegion[f] ? 1 : 0;
+    }
+    EXPECT_GE(inside, 1) << "vertex " << v;
+    EXPECT_EQ(outsideRegion, 0) << "vertex " << v;
+    EXPECT_LT(inside, static_cast<int>(result.regionFaces.size())) << "vertex " << v;
+    EXPECT_EQ(result.faceLabels[result.clicks.front().face], 1);
+    fallbacks += result.boundaryEncloses ? 0 : 1;
+  }
+  EXPECT_GE(fallbacks, 1); // the case that once failed takes the isoline's side
 }
 
 TEST(RoiScissor, ConstraintsFollowTheDiscs)

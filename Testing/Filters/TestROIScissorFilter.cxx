@@ -94,6 +94,7 @@ int TestROIScissorFilter(int, char*[])
   ok &= KERF_CHECK(output->GetCellData()->GetScalars() == output->GetCellData()->GetArray("RoiRegion"));
   ok &= KERF_CHECK(output->GetPointData()->GetArray("RoiField") && output->GetPointData()->GetArray("RoiCandidate"));
   ok &= KERF_CHECK(fieldValue(output, "ClickDistanceFields") == 1.0);
+  ok &= KERF_CHECK(fieldValue(output, "BoundaryEncloses") == 1.0);
 
   // The boundary: one closed loop without self-crossings, in the crease.
   vtkPolyData* boundary = roi->GetBoundary();

@@ -415,6 +415,46 @@ RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>&
     loops.push_back(loop.path.curve);
   }
   result.faceLabels = labelCurveSides(mesh, loops, result.clicks.front().face);
+  // The boundary lies in the candidate region, so the side holding the click does too. A loop
+  // that the side labels cross without separating (a loop within a few triangles, around the
+  // inner constraints) leaves the click's side spreading past the region: the region is then the
+  // best isoline's side instead, the faces of the region at or above the isovalue that are
+  // connected to the click's face.
+  const long inside = std::count(result.faceLabels.begin(), result.faceLabels.end(), 1);
+  if (inside > static_cast<long>(result.regionFaces.size()))
+  {
+    result.boundaryEncloses = false;
+    std::vector<int> localFace(mesh.faceCount(), -1);
+    for (std::size_t local = 0; local < sub.globalFace.size(); ++local)
+    {
+      localFace[sub.globalFace[local]] = static_cast<int>(local);
+    }
+    const auto above = [&](int local) {
+      const Triangle& t = sub.mesh.triangle(local);
+      return (field[t[0]] + field[t[1]] + field[t[2]]) / 3.0 >= result.isovalue;
+    };
+    std::fill(result.faceLabels.begin(), result.faceLabels.end(), 0);
+    const int seed = localFace[result.clicks.front().face];
+    if (seed >= 0)
+    {
+      std::vector<int> stack{ seed };
+      result.faceLabels[sub.globalFace[seed]] = 1;
+      while (!stack.empty())
+      {
+        const int f = stack.back();
+        stack.pop_back();
+        for (int k = 0; k < 3; ++k)
+        {
+          const int g = sub.mesh.faceNeighbor(f, k);
+          if (g >= 0 && !result.faceLabels[sub.globalFace[g]] && above(g))
+          {
+            result.faceLabels[sub.globalFace[g]] = 1;
+            stack.push_back(g);
+          }
+        }
+      }
+    }
+  }
   return result;
 }
 

@@ -108,6 +108,9 @@ struct RoiScissorResult
   std::vector<std::vector<SurfacePoint>> featurePoints; ///< per component, section 4.3
   std::vector<GeodesicLoop> boundaries;  ///< per component, the closed anisotropic geodesic
   std::vector<int> faceLabels;           ///< per face: 1 inside the region, 0 outside
+  /// False when the boundary loops did not separate the click from the rest of the surface (the
+  /// labels then follow the best isoline: its side holding the click, within the region).
+  bool boundaryEncloses = true;
 };
 
 /// ROI Scissor (sections 4.1-4.3). The candidate region and its constraints are those of
@@ -118,7 +121,9 @@ struct RoiScissorResult
 /// crosses; in each part the crossed triangle whose centroid is most concave (highest mean
 /// curvature measured positive on concave regions, as section 3.1 measures H) gives a feature
 /// point; the feature points are joined by anisotropic geodesics into a closed loop. Faces are
-/// labelled by the side of the loops they are on, the first added click's face inside.
+/// labelled by the side of the loops they are on, the first added click's face inside; when that
+/// side reaches past the candidate region (loops that do not separate), by the side of the best
+/// isoline instead (boundaryEncloses false).
 ///
 /// Throws kerf::Error for geodesicDiscRegion's errors, options out of range, and a field without
 /// a closed isoline.
