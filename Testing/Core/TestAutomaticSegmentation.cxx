@@ -1,4 +1,4 @@
-// The automatic segmentation methods in the Core on a body with three fingers (k = 4): every face labelled, segments connected, deterministic, and 1 - Rand index against the construction within a committed baseline.
+// The automatic segmentation methods in the Core on a body with three fingers (k = 4) and on two lobes joined by a neck (k = 2): every face labelled, segments connected, deterministic, and 1 - Rand index against the construction within a committed baseline.
 #include "Evaluation/SegmentationMetrics.h"
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 #include <functional>
@@ -80,11 +81,48 @@ const Fingers& fingers()
   return shape;
 }
 
+// makeDumbbell's two lobes (radii 1 below, 0.8 above, half length 2.2) pinched by 0.65 at
+// z = 0.3 (5,120 triangles); the parts are the faces below and above the crease, the height
+// where the profile is narrowest.
+constexpr double LobesHalfLength = 2.2, NeckHeight = 0.3, NeckDepth = 0.65;
+constexpr std::array<double, 2> LobeRadii{ 1.0, 0.8 };
+
+struct Lobes
+{
+  std::shared_ptr<Surface> surface =
+    std::make_shared<Surface>(makeDumbbell(LobesHalfLength, LobeRadii, NeckHeight, NeckDepth, 4));
+  std::vector<int> parts;
+  Lobes()
+  {
+    double crease = NeckHeight, narrowest = 1e300;
+    for (double z = NeckHeight - 0.5; z <= NeckHeight + 0.5; z += 1e-4)
+    {
+      const double r = dumbbellRadius(z, LobesHalfLength, LobeRadii, NeckHeight, NeckDepth);
+      if (r < narrowest)
+      {
+        narrowest = r;
+        crease = z;
+      }
+    }
+    const TriangleMesh& mesh = this->surface->mesh();
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      const Triangle& t = mesh.triangle(f);
+      this->parts.push_back((mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0 > crease ? 1 : 0);
+    }
+  }
+};
+
+const Lobes& lobes()
+{
+  static const Lobes shape;
+  return shape;
+}
+
 /// Checks what every method must give: one label per face, `expected` segments numbered from 0,
 /// each segment edge-connected; returns 1 - Rand index against the construction.
-double checkSegmentation(const std::vector<int>& labels, int expected)
+double checkSegmentation(const TriangleMesh& mesh, const std::vector<int>& parts, const std::vector<int>& labels, int expected)
 {
-  const TriangleMesh& mesh = fingers().surface->mesh();
   EXPECT_EQ(static_cast<int>(labels.size()), mesh.faceCount());
   std::set<int> distinct(labels.begin(), labels.end());
   EXPECT_EQ(static_cast<int>(distinct.size()), expected);
@@ -120,7 +158,7 @@ double checkSegmentation(const std::vector<int>& labels, int expected)
   {
     EXPECT_TRUE(reached[f]) << "segment " << labels[f] << " is in several pieces (face " << f << ")";
   }
-  return compareSegmentations(mesh, labels, fingers().parts).randIndexError;
+  return compareSegmentations(mesh, labels, parts).randIndexError;
 }
 
 /// Runs `segment` twice (deterministic), checks the result and 1 - Rand index <= `threshold`.
@@ -128,7 +166,7 @@ void expectFingers(const std::string& method, const std::function<std::vector<in
 {
   const std::vector<int> labels = segment();
   EXPECT_EQ(segment(), labels) << method << " is not deterministic";
-  const double error = checkSegmentation(labels, FingerCount + 1);
+  const double error = checkSegmentation(fingers().surface->mesh(), fingers().parts, labels, FingerCount + 1);
   std::vector<std::vector<int>> confusion(FingerCount + 1, std::vector<int>(FingerCount + 1, 0));
   for (std::size_t f = 0; f < labels.size(); ++f)
   {
@@ -144,6 +182,16 @@ void expectFingers(const std::string& method, const std::function<std::vector<in
     std::cout << " (faces of the body, finger 1, 2, 3)" << std::endl;
   }
   std::cout << method << ": 1 - Rand index " << error << " against the body and its three fingers" << std::endl;
+  EXPECT_LE(error, threshold) << method;
+}
+
+/// The same for the two lobes (k = 2).
+void expectLobes(const std::string& method, const std::function<std::vector<int>()>& segment, double threshold)
+{
+  const std::vector<int> labels = segment();
+  EXPECT_EQ(segment(), labels) << method << " is not deterministic";
+  const double error = checkSegmentation(lobes().surface->mesh(), lobes().parts, labels, 2);
+  std::cout << method << ": 1 - Rand index " << error << " against the two lobes" << std::endl;
   EXPECT_LE(error, threshold) << method;
 }
 
@@ -207,6 +255,53 @@ TEST(AutomaticSegmentation, FaceClusteringOnABodyWithThreeFingers)
         buildFaceClusterHierarchy(FaceGraph(fingers().surface->mesh()), HierarchicalClusteringOptions()), FingerCount + 1);
     },
     0.64);
+}
+
+// Two lobes joined by a neck (k = 2); thresholds are the measured values with a small margin.
+TEST(AutomaticSegmentation, ConsensusCutsOnTwoLobes)
+{
+  // Measured 0.026: the cut runs in the neck.
+  expectLobes("consensus cuts", [] { return segmentByConsensusCuts(*lobes().surface, 2, ConsensusCutOptions()).labels; }, 0.035);
+}
+
+TEST(AutomaticSegmentation, ConvexFloodingOnTwoLobes)
+{
+  ConvexFloodingOptions options;
+  options.segmentCount = 2;
+  // Measured 0.032: the two lobes, split a ring below the crease.
+  expectLobes("convex flooding", [&] { return segmentByConvexFlooding(FaceGraph(lobes().surface->mesh()), options).labels; }, 0.04);
+}
+
+TEST(AutomaticSegmentation, WatershedOnTwoLobes)
+{
+  WatershedOptions options;
+  options.segmentCount = 2;
+  // Measured 0.0047: the basins of the two lobes meet at the crease.
+  expectLobes("watershed", [&] { return segmentByWatershed(FaceGraph(lobes().surface->mesh()), options).labels; }, 0.01);
+}
+
+TEST(AutomaticSegmentation, SpectralClusteringOnTwoLobes)
+{
+  // Measured 0.026: the Fiedler-like split at the neck.
+  expectLobes("spectral",
+    [] { return segmentSpectrally(FaceGraph(lobes().surface->mesh()), 2, SpectralSegmentationOptions()).labels; }, 0.035);
+}
+
+TEST(AutomaticSegmentation, KMeansOnTwoLobes)
+{
+  // Measured 0.4995: two halves split along the axis; the distance of faces (angle and geodesic)
+  // does not see the neck with two representatives.
+  expectLobes("k-means",
+    [] { return segmentByKMeans(FaceGraph(lobes().surface->mesh()), 2, KMeansSegmentationOptions()).labels; }, 0.51);
+}
+
+TEST(AutomaticSegmentation, FaceClusteringOnTwoLobes)
+{
+  // Measured 0.498: two halves along the axis, as k-means (planarity, not the neck, drives the
+  // merges).
+  expectLobes("face clustering",
+    [] { return cutHierarchyAtCount(buildFaceClusterHierarchy(FaceGraph(lobes().surface->mesh()), HierarchicalClusteringOptions()), 2); },
+    0.51);
 }
 
 } // namespace kerf
