@@ -119,6 +119,42 @@ const Lobes& lobes()
   return shape;
 }
 
+// A box with a cylinder: makeProtrusions' single finger along +x (length 1, angular width 0.35)
+// on a rounded cube instead of the unit sphere (each point's radius 1 becomes the radius of the
+// surface |x|^8 + |y|^8 + |z|^8 = 1 in its direction, the finger's offset kept; 5,120
+// triangles). The parts: the finger, up to the crease angle of the fingers above, and the box.
+struct BoxWithCylinder
+{
+  std::shared_ptr<Surface> surface;
+  std::vector<int> parts;
+  BoxWithCylinder()
+  {
+    const TriangleMesh sphere = makeProtrusions(1, FingerLength, FingerWidth, 4);
+    std::vector<Vector3> points;
+    for (const Vector3& p : sphere.points())
+    {
+      const Vector3 d = p.normalized();
+      const double norm8 = std::pow(std::pow(d.x(), 8) + std::pow(d.y(), 8) + std::pow(d.z(), 8), 1.0 / 8.0);
+      points.push_back(d * (1.0 / norm8 + (p.norm() - 1.0)));
+    }
+    this->surface = std::make_shared<Surface>(TriangleMesh(points, sphere.triangles()));
+    const TriangleMesh& mesh = this->surface->mesh();
+    const double crease = fingers().creaseAngle;
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      const Triangle& t = sphere.triangle(f);
+      const Vector3 c = ((sphere.point(t[0]) + sphere.point(t[1]) + sphere.point(t[2])) / 3.0).normalized();
+      this->parts.push_back(std::acos(std::max(-1.0, std::min(1.0, c.x()))) < crease ? 1 : 0);
+    }
+  }
+};
+
+const BoxWithCylinder& boxWithCylinder()
+{
+  static const BoxWithCylinder shape;
+  return shape;
+}
+
 /// Checks what every method must give: one label per face, `expected` segments numbered from 0,
 /// each segment edge-connected; returns 1 - Rand index against the construction.
 double checkSegmentation(const TriangleMesh& mesh, const std::vector<int>& parts, const std::vector<int>& labels, int expected)
@@ -185,14 +221,25 @@ void expectFingers(const std::string& method, const std::function<std::vector<in
   EXPECT_LE(error, threshold) << method;
 }
 
-/// The same for the two lobes (k = 2).
-void expectLobes(const std::string& method, const std::function<std::vector<int>()>& segment, double threshold)
+/// The same for a shape of two parts (k = 2).
+void expectTwoParts(const std::string& method, const std::string& shape, const TriangleMesh& mesh,
+  const std::vector<int>& parts, const std::function<std::vector<int>()>& segment, double threshold)
 {
   const std::vector<int> labels = segment();
   EXPECT_EQ(segment(), labels) << method << " is not deterministic";
-  const double error = checkSegmentation(lobes().surface->mesh(), lobes().parts, labels, 2);
-  std::cout << method << ": 1 - Rand index " << error << " against the two lobes" << std::endl;
+  const double error = checkSegmentation(mesh, parts, labels, 2);
+  std::cout << method << ": 1 - Rand index " << error << " against " << shape << std::endl;
   EXPECT_LE(error, threshold) << method;
+}
+
+void expectLobes(const std::string& method, const std::function<std::vector<int>()>& segment, double threshold)
+{
+  expectTwoParts(method, "the two lobes", lobes().surface->mesh(), lobes().parts, segment, threshold);
+}
+
+void expectBoxWithCylinder(const std::string& method, const std::function<std::vector<int>()>& segment, double threshold)
+{
+  expectTwoParts(method, "the box and its cylinder", boxWithCylinder().surface->mesh(), boxWithCylinder().parts, segment, threshold);
 }
 
 } // namespace
@@ -302,6 +349,51 @@ TEST(AutomaticSegmentation, FaceClusteringOnTwoLobes)
   expectLobes("face clustering",
     [] { return cutHierarchyAtCount(buildFaceClusterHierarchy(FaceGraph(lobes().surface->mesh()), HierarchicalClusteringOptions()), 2); },
     0.51);
+}
+
+// A box with a cylinder (k = 2); thresholds are the measured values with a small margin.
+TEST(AutomaticSegmentation, ConsensusCutsOnABoxWithACylinder)
+{
+  // Measured 0.029: the cut in the crease around the cylinder.
+  expectBoxWithCylinder("consensus cuts", [] { return segmentByConsensusCuts(*boxWithCylinder().surface, 2, ConsensusCutOptions()).labels; }, 0.04);
+}
+
+TEST(AutomaticSegmentation, ConvexFloodingOnABoxWithACylinder)
+{
+  ConvexFloodingOptions options;
+  options.segmentCount = 2;
+  // Measured 0.0031: the cylinder, cut at the crease.
+  expectBoxWithCylinder("convex flooding", [&] { return segmentByConvexFlooding(FaceGraph(boxWithCylinder().surface->mesh()), options).labels; }, 0.01);
+}
+
+TEST(AutomaticSegmentation, WatershedOnABoxWithACylinder)
+{
+  WatershedOptions options;
+  options.segmentCount = 2;
+  // Measured 0.027.
+  expectBoxWithCylinder("watershed", [&] { return segmentByWatershed(FaceGraph(boxWithCylinder().surface->mesh()), options).labels; }, 0.035);
+}
+
+TEST(AutomaticSegmentation, SpectralClusteringOnABoxWithACylinder)
+{
+  // Measured 0.082: the cylinder with a band of the box around its base.
+  expectBoxWithCylinder("spectral",
+    [] { return segmentSpectrally(FaceGraph(boxWithCylinder().surface->mesh()), 2, SpectralSegmentationOptions()).labels; }, 0.095);
+}
+
+TEST(AutomaticSegmentation, KMeansOnABoxWithACylinder)
+{
+  // Measured 0.49999: two halves of the box, the cylinder in one.
+  expectBoxWithCylinder("k-means",
+    [] { return segmentByKMeans(FaceGraph(boxWithCylinder().surface->mesh()), 2, KMeansSegmentationOptions()).labels; }, 0.51);
+}
+
+TEST(AutomaticSegmentation, FaceClusteringOnABoxWithACylinder)
+{
+  // Measured 0.489: two halves of the box, the cylinder in one.
+  expectBoxWithCylinder("face clustering",
+    [] { return cutHierarchyAtCount(buildFaceClusterHierarchy(FaceGraph(boxWithCylinder().surface->mesh()), HierarchicalClusteringOptions()), 2); },
+    0.5);
 }
 
 } // namespace kerf
