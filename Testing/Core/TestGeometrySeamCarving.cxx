@@ -280,6 +280,16 @@ TEST(GeometrySeamCarving, BadInputIsRefused)
     r = r == 0.0 ? 1.0 : r;
   }
   EXPECT_NE(message(noFixed).find("no point is in the fixed region"), std::string::npos);
+  // Not a ring: the handle reaches the fixed region (a column of handle points up the cylinder).
+  SeamCarvingInput notARing = setup.input();
+  for (int v = 0; v < setup.mesh.vertexCount(); ++v)
+  {
+    if (v % 48 == 0)
+    {
+      notARing.region[v] = 2.0;
+    }
+  }
+  EXPECT_NE(message(notARing).find("share an edge"), std::string::npos) << message(notARing);
   SeamCarvingInput shortRings = setup.input();
   shortRings.faceRing.pop_back();
   EXPECT_NE(message(shortRings).find("one value per triangle"), std::string::npos);
