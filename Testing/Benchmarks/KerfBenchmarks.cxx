@@ -79,6 +79,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterCurveExportBenchmarks();
   kerf::benchmarks::RegisterChartParameterizationBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterEasyMeshCuttingBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterAutomaticSegmentationBenchmarks(!minimumTimeGiven);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;

@@ -50,6 +50,7 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes);
 void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes);
 void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes);
 void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes);
+void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes);
 
 } // namespace benchmarks
 } // namespace kerf

@@ -1,0 +1,143 @@
+// Benchmarks of hierarchical face clustering (Garland et al.): building the merge tree and cutting it at k, at 100k and 1M triangles.
+//
+// On the cube dumbbell of the harmonic-cut benchmarks (kerf::benchmarks::MakeBenchmarkDumbbell,
+// 99,372 and 1,002,252 triangles):
+//   BM_FaceClusterHierarchy/<size>   kerf::buildFaceClusterHierarchy (the dual graph built
+//                                    outside the timed loop) and a cut at k = 10: the whole
+//                                    method of survey section 3.3 for one k
+//   BM_FaceClusterGraph/<size>       kerf::FaceGraph, the dual graph the methods share
+//   BM_FaceClusterSlide/<size>       cutHierarchyAtCount on the built tree for k = 2..21, the
+//                                    cost of sliding k without recomputing
+// The meshes are built once per size, outside the timed loops.
+#include "KerfBenchmarks.h"
+#include "BenchmarkMeshes.h"
+
+#include "Segmentation/FaceGraph.h"
+#include "Segmentation/HierarchicalFaceClustering.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <memory>
+#include <string>
+
+namespace
+{
+
+struct ClusterSize
+{
+  const char* label;
+  int cells;
+  double minimumSeconds;
+};
+
+const std::array<ClusterSize, 2> Sizes = { { { "100k", 91, 1.0 }, { "1M", 289, 4.0 } } };
+
+struct ClusterScene
+{
+  kerf::TriangleMesh mesh;
+  std::unique_ptr<kerf::FaceGraph> graph;
+};
+
+const ClusterScene& sceneOfSize(const ClusterSize& size)
+{
+  static std::map<std::string, std::unique_ptr<ClusterScene>> scenes;
+  std::unique_ptr<ClusterScene>& scene = scenes[size.label];
+  if (!scene)
+  {
+    auto built = std::make_unique<ClusterScene>();
+    built->mesh = kerf::benchmarks::MakeBenchmarkDumbbell(size.cells);
+    built->graph = std::make_unique<kerf::FaceGraph>(built->mesh);
+    scene = std::move(built);
+  }
+  return *scene;
+}
+
+void setCounters(benchmark::State& state, const ClusterScene& scene)
+{
+  state.counters["triangles"] = scene.mesh.faceCount();
+}
+
+void clusterHierarchyBenchmark(benchmark::State& state, const ClusterSize& size)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      std::size_t clusters = 0;
+      for (auto _ : st)
+      {
+        const kerf::FaceClusterHierarchy tree = kerf::buildFaceClusterHierarchy(*scene.graph, kerf::HierarchicalClusteringOptions());
+        const std::vector<int> labels = kerf::cutHierarchyAtCount(tree, 10);
+        clusters = static_cast<std::size_t>(*std::max_element(labels.begin(), labels.end()) + 1);
+        benchmark::DoNotOptimize(labels.data());
+      }
+      if (clusters != 10)
+      {
+        kerf::benchmarks::Fail(st, "the cut gave " + std::to_string(clusters) + " clusters, not 10");
+      }
+    },
+    setCounters);
+}
+
+void clusterGraphBenchmark(benchmark::State& state, const ClusterSize& size)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      for (auto _ : st)
+      {
+        const kerf::FaceGraph graph(scene.mesh);
+        benchmark::DoNotOptimize(&graph);
+      }
+    },
+    setCounters);
+}
+
+void clusterSlideBenchmark(benchmark::State& state, const ClusterSize& size)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      const kerf::FaceClusterHierarchy tree = kerf::buildFaceClusterHierarchy(*scene.graph, kerf::HierarchicalClusteringOptions());
+      for (auto _ : st)
+      {
+        for (int k = 2; k <= 21; ++k)
+        {
+          benchmark::DoNotOptimize(kerf::cutHierarchyAtCount(tree, k).data());
+        }
+      }
+    },
+    setCounters);
+}
+
+} // namespace
+
+namespace kerf
+{
+namespace benchmarks
+{
+
+void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
+{
+  for (const ClusterSize& size : Sizes)
+  {
+    const std::string label = size.label;
+    for (benchmark::internal::Benchmark* registered : {
+           benchmark::RegisterBenchmark(("BM_FaceClusterHierarchy/" + label).c_str(), clusterHierarchyBenchmark, size),
+           benchmark::RegisterBenchmark(("BM_FaceClusterGraph/" + label).c_str(), clusterGraphBenchmark, size),
+           benchmark::RegisterBenchmark(("BM_FaceClusterSlide/" + label).c_str(), clusterSlideBenchmark, size),
+         })
+    {
+      registered->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (useSizeMinimumTimes)
+      {
+        registered->MinTime(size.minimumSeconds);
+      }
+    }
+  }
+}
+
+} // namespace benchmarks
+} // namespace kerf
