@@ -24,6 +24,7 @@ struct vtkGeodesicPolyline::Internals
 {
   kerf::SurfaceInput surface;
   kerf::StrokePointList pathPoints;
+  kerf::GeodesicLegCache legs; // moving one point retraces only its two legs
 };
 
 vtkGeodesicPolyline::vtkGeodesicPolyline()
@@ -89,7 +90,8 @@ int vtkGeodesicPolyline::RequestData(
     options.vectorDijkstra = this->Metric == ANISOTROPIC;
     options.metric.gamma = this->Metric == ANISOTROPIC ? kerf::Finite(this->Gamma, "Gamma") : 0.0;
     options.depth = this->Depth;
-    const kerf::GeodesicPolyline path = kerf::geodesicPolyline(surface, points, this->ClosedLoop, options);
+    const kerf::GeodesicPolyline path =
+      kerf::geodesicPolyline(surface, points, this->ClosedLoop, options, &this->State->legs);
 
     const kerf::SurfaceCurve& curve = path.path.curve;
     kerf::WritePolylines({ { &curve.points, curve.closed, path.path.length } }, output);
@@ -110,6 +112,7 @@ int vtkGeodesicPolyline::RequestData(
     output->GetPointData()->SetActiveScalars("ArcLength");
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("TotalLength", path.path.length));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SelfCrossings", static_cast<double>(path.selfCrossings)));
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("LegsTraced", static_cast<double>(this->State->legs.computed())));
   });
 }
 

@@ -367,6 +367,48 @@ TEST(GeodesicPaths, PolylineJoinsTheLegsThroughEveryPoint)
   EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[1], points[2], points[0] }, true, GeodesicPathOptions()), Error);
 }
 
+TEST(GeodesicPaths, LegCacheRetracesOnlyTheLegsOfAMovedPoint)
+{
+  const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 4));
+  const TriangleMesh& sphere = surface->mesh();
+  std::vector<SurfacePoint> points = { pointNear(sphere, Vector3(1.0, 0.2, 0.3)),
+    pointNear(sphere, Vector3(0.6, 0.8, 0.1)), pointNear(sphere, Vector3(0.1, 1.0, 0.4)),
+    pointNear(sphere, Vector3(-0.5, 0.6, 0.6)), pointNear(sphere, Vector3(-0.6, 0.5, -0.7)) };
+  for (bool closed : { false, true })
+  {
+    const int legs = closed ? 5 : 4;
+    GeodesicLegCache cache;
+    const auto same = [](const GeodesicPolyline& a, const GeodesicPolyline& b) {
+      return a.path.curve.points == b.path.curve.points && a.path.curve.faces == b.path.curve.faces &&
+        a.arcLength == b.arcLength && a.waypoints == b.waypoints && a.path.length == b.path.length;
+    };
+    std::vector<SurfacePoint> moved = points;
+    EXPECT_TRUE(same(geodesicPolyline(*surface, moved, closed, GeodesicPathOptions(), &cache),
+      geodesicPolyline(*surface, moved, closed, GeodesicPathOptions())));
+    EXPECT_EQ(cache.computed(), legs);
+    EXPECT_EQ(cache.reused(), 0);
+    // Moving point 2 retraces its two legs only, and gives what a fresh call gives, bit for bit.
+    moved[2] = pointNear(sphere, Vector3(0.0, 1.0, 0.2));
+    EXPECT_TRUE(same(geodesicPolyline(*surface, moved, closed, GeodesicPathOptions(), &cache),
+      geodesicPolyline(*surface, moved, closed, GeodesicPathOptions())));
+    EXPECT_EQ(cache.computed(), 2);
+    EXPECT_EQ(cache.reused(), legs - 2);
+    // Another metric retraces everything; the same call again retraces nothing.
+    GeodesicPathOptions anisotropic;
+    anisotropic.metric.gamma = 2.0;
+    anisotropic.vectorDijkstra = true;
+    geodesicPolyline(*surface, moved, closed, anisotropic, &cache);
+    EXPECT_EQ(cache.computed(), legs);
+    geodesicPolyline(*surface, moved, closed, anisotropic, &cache);
+    EXPECT_EQ(cache.computed(), 0);
+    EXPECT_EQ(cache.reused(), legs);
+    // Another surface starts afresh.
+    const auto other = std::make_shared<Surface>(makeIcosphere(1.0, 4));
+    geodesicPolyline(*other, moved, closed, anisotropic, &cache);
+    EXPECT_EQ(cache.computed(), legs);
+  }
+}
+
 TEST(GeodesicPaths, PathsToPointsNearAVertexEndThroughIt)
 {
   // Points given in single precision lie about 1e-8 from a vertex, inside one of its triangles:

@@ -662,7 +662,7 @@ SurfacePath shortestPath(
 }
 
 GeodesicPolyline geodesicPolyline(const Surface& surface, const std::vector<SurfacePoint>& points, bool closed,
-  const GeodesicPathOptions& options)
+  const GeodesicPathOptions& options, GeodesicLegCache* cache)
 {
   const TriangleMesh& mesh = surface.mesh();
   const std::size_t minimum = closed ? 3 : 2;
@@ -693,14 +693,61 @@ GeodesicPolyline geodesicPolyline(const Surface& surface, const std::vector<Surf
   GeodesicPolyline result;
   SurfaceCurve& curve = result.path.curve;
   curve.closed = closed;
+  // A leg's key: its two points exactly and every option the path depends on.
+  const std::string optionsKey = "gamma=" + cacheKey(options.metric.gamma) +
+    (options.metric.measure == AnisotropyMeasure::Normalized ? " normalized" : " difference") +
+    " umbilic=" + cacheKey(options.metric.umbilicRegularization) + " depth=" + std::to_string(options.depth) +
+    (options.vectorDijkstra ? " vector" : " heat") + " " + cacheKey(options.heat);
+  const auto pointKey = [](const SurfacePoint& p) {
+    return std::to_string(p.face) + ":" + cacheKey(p.barycentric.x()) + "," + cacheKey(p.barycentric.y()) + "," +
+      cacheKey(p.barycentric.z());
+  };
+  std::vector<std::pair<std::string, SurfacePath>> kept;
+  if (cache)
+  {
+    if (cache->Owner != &surface)
+    {
+      cache->Legs.clear();
+      cache->Owner = &surface;
+    }
+    cache->Computed = 0;
+    cache->Reused = 0;
+  }
   for (std::size_t i = 0; i < legs; ++i)
   {
-    const SurfacePath leg = shortestPath(surface, points[i], points[(i + 1) % points.size()], options);
+    const SurfacePoint& from = points[i];
+    const SurfacePoint& to = points[(i + 1) % points.size()];
+    SurfacePath leg;
+    if (cache)
+    {
+      const std::string key = pointKey(from) + " " + pointKey(to) + " " + optionsKey;
+      const auto found = std::find_if(
+        cache->Legs.begin(), cache->Legs.end(), [&key](const auto& entry) { return entry.first == key; });
+      if (found != cache->Legs.end())
+      {
+        leg = found->second;
+        ++cache->Reused;
+      }
+      else
+      {
+        leg = shortestPath(surface, from, to, options);
+        ++cache->Computed;
+      }
+      kept.emplace_back(key, leg);
+    }
+    else
+    {
+      leg = shortestPath(surface, from, to, options);
+    }
     // Each leg starts where the previous one ended: keep its first point only for the first leg.
     const std::size_t first = curve.points.empty() ? 0 : 1;
     result.waypoints.push_back(curve.points.empty() ? 0 : static_cast<int>(curve.points.size()) - 1);
     curve.points.insert(curve.points.end(), leg.curve.points.begin() + first, leg.curve.points.end());
     curve.faces.insert(curve.faces.end(), leg.curve.faces.begin(), leg.curve.faces.end());
+  }
+  if (cache)
+  {
+    cache->Legs.swap(kept);
   }
   if (closed)
   {

@@ -5,6 +5,8 @@
 #include "Geodesic/HeatGeodesics.h"
 #include "Geodesic/SurfacePoint.h"
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace kerf
@@ -91,13 +93,34 @@ struct GeodesicPolyline
   int selfCrossings = 0;
 };
 
+/// The legs of geodesicPolyline kept between calls, so that moving one point recomputes only the
+/// two legs that end on it. A leg is reused when its two points (face and barycentric
+/// coordinates, compared exactly), the options and the surface are the same; after each call only
+/// that call's legs are kept.
+class GeodesicLegCache
+{
+public:
+  /// Legs traced and legs reused by the last call.
+  int computed() const { return this->Computed; }
+  int reused() const { return this->Reused; }
+
+private:
+  friend GeodesicPolyline geodesicPolyline(const Surface&, const std::vector<SurfacePoint>&, bool,
+    const GeodesicPathOptions&, GeodesicLegCache*);
+  const Surface* Owner = nullptr;
+  std::vector<std::pair<std::string, SurfacePath>> Legs;
+  int Computed = 0;
+  int Reused = 0;
+};
+
 /// The shortest paths from each point to the next (with `closed`, also from the last back to the
 /// first), joined into one curve that passes exactly through every point. Throws kerf::Error
 /// naming the points for fewer than 2 points (3 when closed), points off the surface
 /// (checkSurfacePoint), two consecutive points at the same place, and points on another
-/// connected component than the first; otherwise as shortestPath.
+/// connected component than the first; otherwise as shortestPath. With a cache, legs whose points
+/// did not change since the last call with it are reused (the same result, bit for bit).
 GeodesicPolyline geodesicPolyline(const Surface& surface, const std::vector<SurfacePoint>& points, bool closed,
-  const GeodesicPathOptions& options);
+  const GeodesicPathOptions& options, GeodesicLegCache* cache = nullptr);
 
 /// A closed curve through the points in order: geodesicPolyline with `closed`. `selfCrossings`
 /// counts where it crosses itself (0 for a simple loop; shortest paths between points given in a
