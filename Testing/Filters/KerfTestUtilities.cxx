@@ -8,8 +8,10 @@
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTestUtilities.h>
@@ -61,6 +63,19 @@ vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh)
   polyData->SetPoints(points);
   polyData->SetPolys(triangles);
   return polyData;
+}
+
+vtkSmartPointer<vtkPolyData> WithRegions(const TriangleMesh& mesh, const std::vector<double>& regions)
+{
+  vtkSmartPointer<vtkPolyData> surface = ToPolyData(mesh);
+  vtkNew<vtkDoubleArray> array;
+  array->SetName("Region");
+  for (double value : regions)
+  {
+    array->InsertNextValue(value);
+  }
+  surface->GetPointData()->AddArray(array);
+  return surface;
 }
 
 std::string SourcePath(int argc, char* argv[], const std::string& relative)

@@ -6,6 +6,7 @@
 #include <vtkSmartPointer.h>
 
 #include <string>
+#include <vector>
 
 class vtkAlgorithm;
 class vtkMeshFileReader;
@@ -18,6 +19,9 @@ namespace test
 
 /// A vtkPolyData with the mesh's points (double) and triangles.
 vtkSmartPointer<vtkPolyData> ToPolyData(const TriangleMesh& mesh);
+
+/// ToPolyData with the per-point seam-carving regions as the point array "Region".
+vtkSmartPointer<vtkPolyData> WithRegions(const TriangleMesh& mesh, const std::vector<double>& regions);
 
 /// A circle of radius r at height z around the z axis, as one closed polyline of `points`
 /// points (the last repeats the first).

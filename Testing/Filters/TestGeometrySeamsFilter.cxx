@@ -15,28 +15,13 @@
 
 #include <string>
 
-namespace
-{
-vtkSmartPointer<vtkPolyData> withRegions(const kerf::TriangleMesh& mesh, const std::vector<double>& regions)
-{
-  vtkSmartPointer<vtkPolyData> surface = kerf::test::ToPolyData(mesh);
-  vtkNew<vtkDoubleArray> array;
-  array->SetName("Region");
-  for (double value : regions)
-  {
-    array->InsertNextValue(value);
-  }
-  surface->GetPointData()->AddArray(array);
-  return surface;
-}
-} // namespace
 
 int TestGeometrySeamsFilter(int, char*[])
 {
   bool ok = true;
   const kerf::TriangleMesh mesh = kerf::makeBumpyCylinder(1.0, 4.0, 48, 49, 6, 2.0, 0.3, 0.15);
   const std::vector<double> regions = kerf::heightBandRegions(mesh, 1.0, 3.0);
-  vtkSmartPointer<vtkPolyData> surface = withRegions(mesh, regions);
+  vtkSmartPointer<vtkPolyData> surface = kerf::test::WithRegions(mesh, regions);
   const vtkMTimeType inputTime = surface->GetMTime();
 
   vtkNew<vtkGeometrySeams> filter;
@@ -100,7 +85,7 @@ int TestGeometrySeamsFilter(int, char*[])
   {
     value = value == 2.0 ? 1.0 : value;
   }
-  vtkSmartPointer<vtkPolyData> bad = withRegions(mesh, noHandle);
+  vtkSmartPointer<vtkPolyData> bad = kerf::test::WithRegions(mesh, noHandle);
   filter->SetInputData(bad);
   std::string error = kerf::test::UpdateAndCaptureError(filter);
   ok &= KERF_CHECK(error.find("no point is in the handle region") != std::string::npos);

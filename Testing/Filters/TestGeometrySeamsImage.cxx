@@ -16,14 +16,7 @@
 int TestGeometrySeamsImage(int argc, char* argv[])
 {
   const kerf::TriangleMesh mesh = kerf::makeBumpyCylinder(1.0, 4.0, 72, 73, 6, 2.0, 0.35, 0.2);
-  vtkSmartPointer<vtkPolyData> surface = kerf::test::ToPolyData(mesh);
-  vtkNew<vtkDoubleArray> regions;
-  regions->SetName("Region");
-  for (double value : kerf::heightBandRegions(mesh, 0.8, 3.2))
-  {
-    regions->InsertNextValue(value);
-  }
-  surface->GetPointData()->AddArray(regions);
+  vtkSmartPointer<vtkPolyData> surface = kerf::test::WithRegions(mesh, kerf::heightBandRegions(mesh, 0.8, 3.2));
   vtkNew<vtkGeometrySeams> seams;
   seams->SetInputData(surface);
   seams->Update();

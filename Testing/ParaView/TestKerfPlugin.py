@@ -214,6 +214,63 @@ class KerfPluginTest(unittest.TestCase):
         self.assertAlmostEqual(low, 0.0, delta=1e-9)
         self.assertAlmostEqual(high, 3.141592653589793 * RADIUS, delta=0.02 * 3.141592653589793 * RADIUS)
 
+    def test_geometry_seam_carving_moves_the_handle(self):
+        """A cylinder painted handle (z <= 1) / modeling / fixed (z >= 3): Geometry Seams, then
+        Geometry Seam Carving with the Transform widget's proxy moving the handle down by 1; the
+        stretch splits ring seams, and moving the handle back gives the input's points back."""
+        import numpy
+        from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+
+        around, rings = 48, 49
+        j, i = numpy.meshgrid(numpy.arange(rings), numpy.arange(around), indexing="ij")
+        u = 2 * numpy.pi * i.ravel() / around
+        z = 4.0 * j.ravel() / (rings - 1)
+        triangles = []
+        for row in range(rings - 1):
+            for col in range(around):
+                a, b = row * around + col, row * around + (col + 1) % around
+                triangles += [(a, b, b + around), (a, b + around, a + around)]
+        cylinder = vtkPolyData()
+        points = vtkPoints()
+        points.SetData(numpy_to_vtk(numpy.column_stack([numpy.cos(u), numpy.sin(u), z]), deep=True))
+        cylinder.SetPoints(points)
+        cells = vtkCellArray()
+        cells.SetData(numpy_to_vtkIdTypeArray(numpy.arange(0, 3 * len(triangles) + 1, 3, dtype=numpy.int64), deep=True),
+                      numpy_to_vtkIdTypeArray(numpy.array(triangles, dtype=numpy.int64).ravel(), deep=True))
+        cylinder.SetPolys(cells)
+        region = numpy_to_vtk(numpy.where(z <= 1.0, 2.0, numpy.where(z >= 3.0, 0.0, 1.0)), deep=True)
+        region.SetName("Region")
+        cylinder.GetPointData().AddArray(region)
+        producer = simple.TrivialProducer()
+        producer.GetClientSideObject().SetOutput(cylinder)
+
+        seams = simple.GeometrySeams(Input=producer, NumberOfRings=10, NumberOfSectors=4)
+        seams.UpdatePipeline()  # as Apply does: the array lists then offer Geometry Seams' arrays
+        carving = simple.GeometrySeamCarving(Input=seams)
+        self.assertEqual(list(carving.Region), ["POINTS", "Region"])
+        self.assertEqual([list(carving.RingSeam), list(carving.Sector), list(carving.EdgeCost)],
+                         [["CELLS", "RingSeam"], ["CELLS", "Sector"], ["CELLS", "EdgeCost"]])
+        self.assertEqual(carving.HandleTransform.GetXMLName(), "Transform3")
+        self.assertEqual(list(carving.GetProperty("StiffnessScale")), [10.0])
+        carving.HandleTransform.Translate = [0.0, 0.0, -1.0]
+        carving.UpdatePipeline()
+        stretched = servermanager.Fetch(carving)
+        split = stretched.GetFieldData().GetArray("SplitSegments").GetValue(0)
+        self.assertGreater(split, 0)
+        self.assertGreater(stretched.GetNumberOfPoints(), around * rings)
+        self.assertAlmostEqual(stretched.GetBounds()[4], -1.0, places=9)
+        carving.HandleTransform.Translate = [0.0, 0.0, -0.5]
+        carving.UpdatePipeline()
+        carving.HandleTransform.Translate = [0.0, 0.0, 0.0]
+        carving.UpdatePipeline()
+        back = servermanager.Fetch(carving)
+        self.assertEqual(back.GetFieldData().GetArray("SplitSegments").GetValue(0), 0)
+        self.assertEqual(back.GetNumberOfPoints(), around * rings)
+        moved = vtk_to_numpy(back.GetPoints().GetData()) - vtk_to_numpy(cylinder.GetPoints().GetData())
+        self.assertLess(abs(moved).max(), 1e-9)
+
     def test_roi_scissor_selects_a_hoof(self):
         """One click on the camel's front hoof: the hoof, cut at the fetlock, as in the image test."""
         camel = simple.OpenDataFile(CAMEL)

@@ -1,0 +1,204 @@
+// vtkGeometrySeamCarving: reads the preprocessed surface and the handle transform, runs a kerf::GeometrySeamCarving session, writes the deformed surface.
+#include "vtkGeometrySeamCarving.h"
+
+#include "Error.h"
+#include "KerfFilterUtilities.h"
+#include "KerfSurfaceInput.h"
+#include "SeamCarving/GeometrySeamCarving.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkLinearTransform.h>
+#include <vtkMatrix4x4.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <array>
+#include <cmath>
+
+vtkStandardNewMacro(vtkGeometrySeamCarving);
+
+struct vtkGeometrySeamCarving::Internals
+{
+  kerf::SurfaceInput surface;
+  vtkSmartPointer<vtkLinearTransform> transform;
+  // The session and what it was made from: a new surface, new arrays or new options start afresh.
+  std::unique_ptr<kerf::GeometrySeamCarving> session;
+  std::shared_ptr<const kerf::Surface> sessionSurface;
+  std::array<double, 3> sessionOptions{ { NAN, NAN, NAN } };
+  std::vector<double> sessionArrays;
+};
+
+vtkGeometrySeamCarving::vtkGeometrySeamCarving()
+  : State(new Internals)
+{
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Region");
+  this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "RingSeam");
+  this->SetInputArrayToProcess(2, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Sector");
+  this->SetInputArrayToProcess(3, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "EdgeCost");
+}
+
+vtkGeometrySeamCarving::~vtkGeometrySeamCarving() = default;
+
+void vtkGeometrySeamCarving::SetHandleTransform(vtkLinearTransform* transform)
+{
+  if (this->State->transform != transform)
+  {
+    this->State->transform = transform;
+    this->Modified();
+  }
+}
+
+vtkLinearTransform* vtkGeometrySeamCarving::GetHandleTransform()
+{
+  return this->State->transform;
+}
+
+vtkMTimeType vtkGeometrySeamCarving::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->State->transform)
+  {
+    time = std::max(time, this->State->transform->GetMTime());
+  }
+  return time;
+}
+
+int vtkGeometrySeamCarving::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return kerf::RunGuarded(this, "Cannot carve geometry seams", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    kerf::MeshRequirements requirements;
+    requirements.manifold = true;
+    requirements.consistentOrientation = true;
+    kerf::SurfaceInput& surface = this->State->surface;
+    kerf::LoadSurface(surface, input, requirements);
+    if (surface.Rebuilt() || surface.WeldedPointCount() > 0)
+    {
+      throw kerf::Error("the surface must hold triangles only, each point once (run Triangulate and Clean, then "
+                        "Geometry Seams, first)");
+    }
+    const kerf::TriangleMesh& mesh = surface.Mesh();
+    const auto read = [&](int index, vtkIdType count, const char* what) {
+      try
+      {
+        return kerf::ReadInputArray(this, index, count, "the surface");
+      }
+      catch (const kerf::Error& e)
+      {
+        throw kerf::Error(std::string(e.what()) + " (the " + what + " array that Geometry Seams writes; run it first)");
+      }
+    };
+    kerf::SeamCarvingInput in;
+    in.mesh = &mesh;
+    in.region = read(0, input->GetNumberOfPoints(), "region");
+    const std::vector<double> rings = read(1, input->GetNumberOfCells(), "ring seam");
+    const std::vector<double> sectors = read(2, input->GetNumberOfCells(), "sector");
+    in.faceCost = read(3, input->GetNumberOfCells(), "edge cost");
+    for (std::size_t f = 0; f < rings.size(); ++f)
+    {
+      if (!std::isfinite(rings[f]) || !std::isfinite(sectors[f]) || rings[f] != std::floor(rings[f]) ||
+        sectors[f] != std::floor(sectors[f]) || rings[f] < -1.0 || sectors[f] < -1.0 || rings[f] > 1e9 || sectors[f] > 1e9)
+      {
+        throw kerf::Error("cell " + std::to_string(f) + " has a ring or sector that is not an index (-1 or more)");
+      }
+      in.faceRing.push_back(static_cast<int>(rings[f]));
+      in.faceSector.push_back(static_cast<int>(sectors[f]));
+    }
+    in.normalConeAngle = surface.GetSurface().descriptors().normalConeAngle;
+
+    kerf::SeamCarvingOptions options;
+    options.stiffnessScale = this->StiffnessScale;
+    options.stiffnessEpsilon = this->StiffnessEpsilon;
+    options.plastic = this->Plastic;
+    const std::array<double, 3> optionKey{ { options.stiffnessScale, options.stiffnessEpsilon, options.plastic ? 1.0 : 0.0 } };
+    std::vector<double> arrayKey = in.region;
+    arrayKey.insert(arrayKey.end(), rings.begin(), rings.end());
+    arrayKey.insert(arrayKey.end(), sectors.begin(), sectors.end());
+    arrayKey.insert(arrayKey.end(), in.faceCost.begin(), in.faceCost.end());
+    Internals& state = *this->State;
+    if (!state.session || state.sessionSurface != surface.SharedSurface() || state.sessionOptions != optionKey ||
+      state.sessionArrays != arrayKey)
+    {
+      state.session.reset();
+      state.session = std::make_unique<kerf::GeometrySeamCarving>(in, options);
+      state.sessionSurface = surface.SharedSurface();
+      state.sessionOptions = optionKey;
+      state.sessionArrays = std::move(arrayKey);
+    }
+    this->UpdateProgress(0.2);
+
+    Eigen::Matrix4d matrix = Eigen::Matrix4d::Identity();
+    if (state.transform)
+    {
+      vtkMatrix4x4* m = state.transform->GetMatrix();
+      for (int r = 0; r < 4; ++r)
+      {
+        for (int c = 0; c < 4; ++c)
+        {
+          matrix(r, c) = m->GetElement(r, c);
+        }
+      }
+    }
+    const kerf::SeamCarvingResult& result = state.session->deform(matrix);
+
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(result.points.size()));
+    for (std::size_t i = 0; i < result.points.size(); ++i)
+    {
+      points->SetPoint(static_cast<vtkIdType>(i), result.points[i].data());
+    }
+    vtkNew<vtkCellArray> triangles;
+    triangles->AllocateExact(static_cast<vtkIdType>(result.triangles.size()), 3 * static_cast<vtkIdType>(result.triangles.size()));
+    for (const kerf::Triangle& t : result.triangles)
+    {
+      const vtkIdType ids[3] = { t[0], t[1], t[2] };
+      triangles->InsertNextCell(3, ids);
+    }
+    output->SetPoints(points);
+    output->SetPolys(triangles);
+    std::vector<double> region;
+    for (int origin : result.pointOrigin)
+    {
+      region.push_back(origin >= 0 ? in.region[static_cast<std::size_t>(origin)] : 1.0);
+    }
+    vtkDataArray* regionArray = this->GetInputArrayToProcess(0, input);
+    output->GetPointData()->AddArray(kerf::MakeIntArray("OriginalPointId", result.pointOrigin));
+    output->GetPointData()->AddArray(kerf::MakeArray(regionArray && regionArray->GetName() ? regionArray->GetName() : "Region", region));
+    output->GetCellData()->AddArray(kerf::MakeIntArray("RingSeam", result.faceRing));
+    output->GetCellData()->AddArray(kerf::MakeIntArray("Sector", result.faceSector));
+    output->GetCellData()->SetActiveScalars("RingSeam");
+    vtkNew<vtkIntArray> sectorState;
+    sectorState->SetName("SectorState");
+    for (int count : result.sectorState)
+    {
+      sectorState->InsertNextValue(count);
+    }
+    output->GetFieldData()->AddArray(sectorState);
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SplitSegments", static_cast<double>(result.splitSegments)));
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("CollapsedSegments", static_cast<double>(result.collapsedSegments)));
+    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SkippedOperations", static_cast<double>(result.skippedOperations)));
+  });
+}
+
+void vtkGeometrySeamCarving::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "HandleTransform: " << this->State->transform.Get() << "\n";
+  os << indent << "StiffnessScale: " << this->StiffnessScale << "\n";
+  os << indent << "StiffnessEpsilon: " << this->StiffnessEpsilon << "\n";
+  os << indent << "Plastic: " << this->Plastic << "\n";
+}

@@ -1,0 +1,68 @@
+// Regression image: a bumpy cylinder stretched by half its modeling region, plain Laplace editing (left) beside geometry seam carving (right), coloured by ring seam.
+#include "KerfScene.h"
+#include "KerfTestUtilities.h"
+#include "Mesh/MeshGenerators.h"
+#include "vtkGeometrySeamCarving.h"
+#include "vtkGeometrySeams.h"
+
+#include <vtkDoubleArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRegressionTestImage.h>
+#include <vtkRenderWindow.h>
+#include <vtkTransform.h>
+
+#include <iostream>
+
+int TestGeometrySeamCarvingImage(int argc, char* argv[])
+{
+  // The Core tests' cylinder: six bumps at z = 2, handle z <= 0.5, fixed z >= 3.5, 20 rings.
+  const kerf::TriangleMesh mesh = kerf::makeBumpyCylinder(1.0, 4.0, 48, 49, 6, 2.0, 0.3, 0.15);
+  vtkSmartPointer<vtkPolyData> surface = kerf::test::WithRegions(mesh, kerf::heightBandRegions(mesh, 0.5, 3.5));
+  vtkNew<vtkGeometrySeams> seams;
+  seams->SetInputData(surface);
+  seams->SetNumberOfRings(20);
+  seams->SetNumberOfSectors(6);
+  vtkNew<vtkTransform> handle;
+  vtkSmartPointer<vtkPolyData> results[2];
+  for (int plastic = 0; plastic < 2; ++plastic)
+  {
+    vtkNew<vtkGeometrySeamCarving> carving;
+    carving->SetInputConnection(seams->GetOutputPort());
+    carving->SetHandleTransform(handle);
+    carving->SetPlastic(plastic == 1);
+    carving->SetStiffnessScale(plastic == 1 ? 10.0 : 0.0);
+    for (int step = 1; step <= 5; ++step)
+    {
+      handle->Identity();
+      handle->Translate(0.0, 0.0, -1.5 * step / 5.0);
+      if (!kerf::test::UpdateAndCaptureError(carving).empty())
+      {
+        return EXIT_FAILURE;
+      }
+    }
+    results[plastic] = carving->GetOutput();
+  }
+
+  kerf::SceneOptions options;
+  options.colorArray = "RingSeam";
+  options.colorMap = kerf::SceneOptions::ColorMap::Categorical;
+  options.legendTitle = "Ring";
+  options.width = 900;
+  options.height = 800;
+  options.azimuth = 0.0;
+  options.elevation = -90.0;
+  options.zoom = 0.95;
+  kerf::SceneOptions left = options, right = options;
+  left.caption = "Laplace editing";
+  right.caption = "Seam carving";
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderPair(results[0], left, results[1], right, error);
+  if (!window)
+  {
+    std::cerr << "cannot render: " << error << std::endl;
+    return EXIT_FAILURE;
+  }
+  return vtkRegressionTestImage(window) == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+}
