@@ -95,8 +95,9 @@ void writeSummaries(const kerf::ChartParameterizationResult& result, vtkFieldDat
   field->AddArray(kerf::MakeFieldValue("OverlappingChartPairs", result.overlappingChartPairs));
   field->AddArray(kerf::MakeFieldValue("ChartCount", static_cast<double>(result.charts.size())));
   field->AddArray(kerf::MakeFieldValue("TexelScale", result.texelScale));
-  std::vector<int> labels, flipped;
-  std::vector<double> meanStretch, l2Stretch, maxStretch, meanShear, maxShear;
+  field->AddArray(kerf::MakeFieldValue("CutCharts", result.cutCharts));
+  std::vector<int> labels, flipped, cutEdges, seams;
+  std::vector<double> meanStretch, l2Stretch, maxStretch, meanShear, maxShear, cutLength, seamLength;
   for (const kerf::ChartSummary& chart : result.charts)
   {
     labels.push_back(chart.label);
@@ -106,6 +107,10 @@ void writeSummaries(const kerf::ChartParameterizationResult& result, vtkFieldDat
     maxStretch.push_back(chart.distortion.maxStretch);
     meanShear.push_back(chart.distortion.meanShear);
     maxShear.push_back(chart.distortion.maxShear);
+    cutEdges.push_back(chart.cutEdgeCount);
+    cutLength.push_back(chart.cutLength);
+    seams.push_back(chart.seams);
+    seamLength.push_back(chart.seamLength);
   }
   field->AddArray(kerf::MakeIntArray("ChartLabel", labels));
   field->AddArray(kerf::MakeArray("ChartMeanStretch", meanStretch));
@@ -114,6 +119,10 @@ void writeSummaries(const kerf::ChartParameterizationResult& result, vtkFieldDat
   field->AddArray(kerf::MakeArray("ChartMeanShear", meanShear));
   field->AddArray(kerf::MakeArray("ChartMaxShear", maxShear));
   field->AddArray(kerf::MakeIntArray("ChartFlippedFaces", flipped));
+  field->AddArray(kerf::MakeIntArray("ChartCutEdges", cutEdges));
+  field->AddArray(kerf::MakeArray("ChartCutLength", cutLength));
+  field->AddArray(kerf::MakeIntArray("ChartSeams", seams));
+  field->AddArray(kerf::MakeArray("ChartSeamLength", seamLength));
 }
 
 // The triangles of `surface` at their texture coordinates in z = 0, with its arrays.
@@ -162,6 +171,9 @@ int vtkChartParameterization::RequestData(vtkInformation*, vtkInformationVector*
 
     kerf::ChartParameterizationOptions options;
     options.margin = this->Margin;
+    options.cutToDisks = this->CutToDisks;
+    options.maximumSeams = this->MaximumSeams;
+    options.seamStretchTarget = this->SeamStretchTarget;
     const kerf::ChartParameterizationResult result =
       kerf::parameterizeCharts(this->State->surface.Mesh(), labels, options);
 
@@ -176,5 +188,8 @@ void vtkChartParameterization::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Margin: " << this->Margin << "\n";
+  os << indent << "CutToDisks: " << this->CutToDisks << "\n";
+  os << indent << "MaximumSeams: " << this->MaximumSeams << "\n";
+  os << indent << "SeamStretchTarget: " << this->SeamStretchTarget << "\n";
   os << indent << "TextureCoordinatesName: " << (this->TextureCoordinatesName ? this->TextureCoordinatesName : "(none)") << "\n";
 }

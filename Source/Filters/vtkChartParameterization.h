@@ -5,8 +5,11 @@
  *
  * Input: a triangle surface (polygons are triangulated) with a per-cell label array, selected with
  * SetInputArrayToProcess (default the cell array "Chart"; "Segment" of the segmentation filters
- * works as well). Each label is a chart; every chart must be a topological disk (one connected,
- * manifold piece with one boundary loop and no handle).
+ * works as well). Each connected piece of a label is a chart. A chart that is not a topological
+ * disk (closed, with several boundary loops, or with handles) is cut into one when CutToDisks is
+ * on (the default; kerf::cutToDisk: handles cut along short loops, boundary loops joined by
+ * shortest paths, a closed sphere-like chart opened along the shortest path between two
+ * vertices far apart); with it off such charts are refused.
  *
  * Output 0: the surface cut open along the chart borders (a point is duplicated for each chart
  * that uses it), with the point arrays TextureCoordinatesName (default "UV", the texture
@@ -17,16 +20,18 @@
  * arrays are kept (copied to the duplicated points). Field data: MeanStretch, MaxStretch,
  * MeanShear, MaxShear (area-weighted means), L2Stretch (Sander et al. 2001's L2 norm of the
  * inverse map, 1 only for an isometry), FlippedFaces, OverlappingChartPairs, ChartCount,
- * TexelScale, and per chart (in increasing label order) ChartLabel, ChartMeanStretch,
- * ChartL2Stretch, ChartMaxStretch, ChartMeanShear, ChartMaxShear, ChartFlippedFaces.
+ * TexelScale, CutCharts (charts cut into disks), and per chart (in increasing label order)
+ * ChartLabel, ChartMeanStretch, ChartL2Stretch, ChartMaxStretch, ChartMeanShear, ChartMaxShear,
+ * ChartFlippedFaces, ChartCutEdges and ChartCutLength (the cut that made it a disk; 0 for a disk),
+ * ChartSeams and ChartSeamLength (the seams added, MaximumSeams).
  *
  * Output 1: the same triangles at their texture coordinates in the plane z = 0, with the cell
  * arrays of output 0: the layout, for display beside the surface.
  *
  * Errors (vtkErrorMacro, return 0): surfaces refused by validation (non-manifold, inconsistently
  * oriented, zero-area triangles, NaN coordinates), a missing or non-integer label array, and
- * charts that are not disks (every such chart named by its label, with its boundary loops and
- * genus: cut it into disks first). Nothing is flattened with overlaps.
+ * charts that are not disks when CutToDisks is off (every such chart named by its label, with its
+ * boundary loops and genus). Nothing is flattened with overlaps.
  */
 #ifndef vtkChartParameterization_h
 #define vtkChartParameterization_h
@@ -51,6 +56,29 @@ public:
   ///@}
 
   ///@{
+  /// Cut charts that are not disks into disks (kerf::cutToDisk) instead of refusing them.
+  /// Default on.
+  vtkSetMacro(CutToDisks, bool);
+  vtkGetMacro(CutToDisks, bool);
+  vtkBooleanMacro(CutToDisks, bool);
+  ///@}
+
+  ///@{
+  /// At most this many seams added to each chart where its map is worst, until its L2 stretch
+  /// is at most SeamStretchTarget (cut augmentation, Gu, Gortler and Hoppe 2002; see
+  /// kerf::ChartParameterizationOptions::maximumSeams): a chart with protrusions (legs, ears) gets
+  /// a seam from each tip to its border. Default 10; 0 for none; at most 1000.
+  vtkSetClampMacro(MaximumSeams, int, 0, 1000);
+  vtkGetMacro(MaximumSeams, int);
+  ///@}
+
+  ///@{
+  /// The L2 stretch at which no more seams are added, at least 1. Default 1.2.
+  vtkSetClampMacro(SeamStretchTarget, double, 1.0, 1e6);
+  vtkGetMacro(SeamStretchTarget, double);
+  ///@}
+
+  ///@{
   /// Name of the output texture-coordinate array. Default "UV".
   vtkSetStringMacro(TextureCoordinatesName);
   vtkGetStringMacro(TextureCoordinatesName);
@@ -64,6 +92,9 @@ protected:
     vtkInformationVector* outputVector) override;
 
   double Margin = 0.01;
+  bool CutToDisks = true;
+  int MaximumSeams = 10;
+  double SeamStretchTarget = 1.2;
   char* TextureCoordinatesName = nullptr;
 
 private:

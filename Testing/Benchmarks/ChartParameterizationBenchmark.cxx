@@ -5,11 +5,17 @@
 // consecutive triangles, row by row) cut in two halves of rows, each a disk.
 //   BM_ChartParameterization/<size>/<solver>   the whole of parameterizeCharts, one thread,
 //                                               with CHOLMOD or Eigen's SimplicialLDLT
+//   BM_ChartSeams/<size>                       one closed chart, a sphere with five fingers
+//                                               (kerf::makeProtrusions, 20,480 and 81,920
+//                                               triangles): cut into a disk (cutToDisk), then up
+//                                               to 10 seams added where the map is worst, each
+//                                               followed by a new LSCM solve (ComplexLDLT)
 // The reference is libigl's igl::lscm, about 475 ms at 100k triangles on this machine (not
 // installed here, so not run beside).
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
 
+#include "Mesh/MeshGenerators.h"
 #include "Parameterization/ChartParameterization.h"
 
 #include <benchmark/benchmark.h>
@@ -73,6 +79,45 @@ void chartParameterization(benchmark::State& state, int cells, kerf::ChartSolver
     });
 }
 
+const kerf::TriangleMesh& fingers(int levels)
+{
+  static std::map<int, kerf::TriangleMesh> meshes;
+  auto found = meshes.find(levels);
+  if (found == meshes.end())
+  {
+    found = meshes.emplace(levels, kerf::makeProtrusions(5, 1.5, 0.25, levels)).first;
+  }
+  return found->second;
+}
+
+void chartSeams(benchmark::State& state, int levels)
+{
+  kerf::ChartParameterizationResult result;
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const kerf::TriangleMesh& { return fingers(levels); },
+    [&](benchmark::State& s, const kerf::TriangleMesh& mesh) {
+      kerf::ChartParameterizationOptions options;
+      options.maximumSeams = 10;
+      const std::vector<int> labels(static_cast<std::size_t>(mesh.faceCount()), 0);
+      for (auto _ : s)
+      {
+        result = kerf::parameterizeCharts(mesh, labels, options);
+        benchmark::DoNotOptimize(result.uv.data());
+      }
+      if (result.cutCharts != 1 || result.charts.size() != 1 || result.overlappingChartPairs != 0)
+      {
+        kerf::benchmarks::Fail(s, "expected one chart cut into a disk, without overlaps");
+      }
+    },
+    [&](benchmark::State& s, const kerf::TriangleMesh& mesh) {
+      s.counters["triangles"] = mesh.faceCount();
+      s.counters["seams"] = result.charts.empty() ? 0 : result.charts[0].seams;
+      s.counters["L2stretch"] = result.distortion.surfaceStretch;
+      s.counters["meanShear"] = result.distortion.meanShear;
+      s.counters["flipped"] = result.distortion.flippedFaces;
+    });
+}
+
 } // namespace
 
 namespace kerf
@@ -97,6 +142,17 @@ void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
       {
         registered->MinTime(1.0);
       }
+    }
+  }
+  for (const auto& [label, levels] : { std::pair<const char*, int>{ "20k", 5 }, std::pair<const char*, int>{ "82k", 6 } })
+  {
+    const std::string name = std::string("BM_ChartSeams/") + label;
+    benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
+      name.c_str(), [levels = levels](benchmark::State& state) { chartSeams(state, levels); });
+    registered->Unit(benchmark::kMillisecond)->UseRealTime();
+    if (useSizeMinimumTimes)
+    {
+      registered->MinTime(1.0);
     }
   }
 }

@@ -1,5 +1,6 @@
-// parameterizeCharts: developable charts unroll without distortion, hemispheres without flips, packing and the errors.
+// parameterizeCharts: developable charts unroll without distortion, hemispheres without flips, packing, charts cut into disks (cutToDisk) and the errors.
 #include "Parameterization/ChartParameterization.h"
+#include "Parameterization/CutToDisk.h"
 #include "Error.h"
 #include "Mesh/MeshGenerators.h"
 
@@ -220,11 +221,13 @@ TEST(ChartParameterization, PackedBoxesDoNotOverlap)
   EXPECT_THROW(packBoxes(sizes, std::nan(""), scale), Error);
 }
 
-std::string errorOf(const TriangleMesh& mesh, const std::vector<int>& labels)
+std::string errorOf(const TriangleMesh& mesh, const std::vector<int>& labels, bool cutToDisks = false)
 {
   try
   {
-    parameterizeCharts(mesh, labels);
+    ChartParameterizationOptions options;
+    options.cutToDisks = cutToDisks;
+    parameterizeCharts(mesh, labels, options);
   }
   catch (const Error& error)
   {
@@ -243,6 +246,10 @@ TEST(ChartParameterization, RefusesChartsThatAreNotDisks)
   // A cylinder has two boundary loops; with a slit it is a disk.
   const TriangleMesh tube = makeCylinder(1.0, 1.0, 16, 4);
   EXPECT_NE(errorOf(tube, oneLabel(tube, 2)).find("chart 2: it has 2 boundary loops"), std::string::npos);
+  // With cutToDisks (the default) the same charts are cut into disks instead.
+  EXPECT_EQ(errorOf(sphere, oneLabel(sphere, 5), true), "");
+  EXPECT_EQ(errorOf(torus, oneLabel(torus), true), "");
+  EXPECT_EQ(errorOf(tube, oneLabel(tube, 2), true), "");
   // Every offending chart is named: the octants are fine, a closed sphere beside them is not.
   std::vector<Vector3> points = sphere.points();
   std::vector<Triangle> triangles = sphere.triangles();
@@ -259,6 +266,126 @@ TEST(ChartParameterization, RefusesChartsThatAreNotDisks)
   const std::string message = errorOf(TriangleMesh(points, triangles), labels);
   EXPECT_NE(message.find("chart 9:"), std::string::npos) << message;
   EXPECT_EQ(message.find("chart 1:"), std::string::npos) << message;
+}
+
+// A chart cut into a disk: the cut mesh is a disk whose vertices copy the chart's, with the
+// chart's triangles in order; its area is unchanged.
+void expectDiskOf(const EdgeCut& cut, const TriangleMesh& chart)
+{
+  EXPECT_EQ(chartTopologyProblem(cut.mesh), "");
+  ASSERT_EQ(cut.mesh.faceCount(), chart.faceCount());
+  ASSERT_EQ(cut.originalVertex.size(), static_cast<std::size_t>(cut.mesh.vertexCount()));
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(cut.originalVertex[static_cast<std::size_t>(cut.mesh.triangle(f)[k])], chart.triangle(f)[k]);
+    }
+  }
+  for (int v = 0; v < cut.mesh.vertexCount(); ++v)
+  {
+    EXPECT_EQ(cut.mesh.point(v), chart.point(cut.originalVertex[static_cast<std::size_t>(v)]));
+  }
+}
+
+TEST(CutToDisk, ADiskIsNotCut)
+{
+  const TriangleMesh grid = makeGrid(1.0, 1.0, 4, 4);
+  const EdgeCut cut = cutToDisk(grid);
+  EXPECT_TRUE(cut.cutEdges.empty());
+  EXPECT_EQ(cut.mesh.points(), grid.points());
+  EXPECT_EQ(cut.mesh.triangles(), grid.triangles());
+}
+
+TEST(CutToDisk, ACylinderIsCutAlongOneShortestLine)
+{
+  // Radius 1, height 2, 32 around, 9 rings: the boundary circles are joined by one path of 8
+  // edges; the shortest paths between the rings are the cylinder's vertical lines (length 2).
+  const TriangleMesh tube = makeCylinder(1.0, 2.0, 32, 9);
+  const EdgeCut cut = cutToDisk(tube);
+  expectDiskOf(cut, tube);
+  EXPECT_EQ(cut.cutEdges.size(), 8u);
+  EXPECT_NEAR(cut.cutLength, 2.0, 1e-12);
+  EXPECT_EQ(cut.mesh.vertexCount(), tube.vertexCount() + 9);
+  // Unrolled, the cylinder is a rectangle: no distortion at all.
+  const ChartParameterizationResult result = parameterizeCharts(tube, oneLabel(tube, 4));
+  ASSERT_EQ(result.charts.size(), 1u);
+  EXPECT_EQ(result.cutCharts, 1);
+  EXPECT_EQ(result.charts[0].cutFrom, "2 boundary loops and genus 0");
+  EXPECT_EQ(result.charts[0].cutEdgeCount, 8);
+  EXPECT_NEAR(result.charts[0].cutLength, 2.0, 1e-12);
+  expectIsometric(result);
+  expectInsideSquare(result, 0.01);
+  EXPECT_EQ(result.split.mesh.vertexCount(), tube.vertexCount() + 9);
+  for (int v = 0; v < result.split.mesh.vertexCount(); ++v)
+  {
+    EXPECT_EQ(result.split.mesh.point(v), tube.point(result.split.originalPoint[static_cast<std::size_t>(v)]));
+  }
+}
+
+TEST(CutToDisk, ATorusIsCutAlongTwoLoops)
+{
+  // The torus of radii 1 and 0.3: its shortest handle loops are a tube circle (2 pi 0.3 = 1.88
+  // as a polygon of 12 edges: 1.86) and an inner equator (2 pi 0.7 = 4.40; 4.39 with 24 edges).
+  const TriangleMesh torus = makeTorus(1.0, 0.3, 24, 12);
+  const EdgeCut cut = cutToDisk(torus);
+  expectDiskOf(cut, torus);
+  const double tube = 12 * 2.0 * 0.3 * std::sin(M_PI / 12);
+  const double inner = 24 * 2.0 * 0.7 * std::sin(M_PI / 24);
+  EXPECT_GE(cut.cutLength, tube + inner - 1e-9);
+  EXPECT_LE(cut.cutLength, 1.5 * (tube + inner));
+  const ChartParameterizationResult result = parameterizeCharts(torus, oneLabel(torus));
+  EXPECT_EQ(result.charts[0].cutFrom, "0 boundary loops and genus 1");
+  EXPECT_EQ(result.overlappingChartPairs, 0);
+  EXPECT_EQ(result.distortion.flippedFaces, 0);
+  expectInsideSquare(result, 0.01);
+}
+
+TEST(CutToDisk, ASphereIsPeeledAlongAHalfCircle)
+{
+  // Vertices far apart on the unit sphere are nearly antipodal: the cut between them is about
+  // half a great circle (pi), a little longer along the edges.
+  const TriangleMesh sphere = makeIcosphere(1.0, 3);
+  const EdgeCut cut = cutToDisk(sphere);
+  expectDiskOf(cut, sphere);
+  EXPECT_GE(cut.cutLength, 0.99 * M_PI);
+  EXPECT_LE(cut.cutLength, 1.15 * M_PI);
+  const ChartParameterizationResult result = parameterizeCharts(sphere, oneLabel(sphere, 7));
+  EXPECT_EQ(result.charts[0].label, 7);
+  EXPECT_EQ(result.charts[0].cutFrom, "0 boundary loops and genus 0");
+  EXPECT_EQ(result.overlappingChartPairs, 0);
+  expectInsideSquare(result, 0.01);
+}
+
+TEST(CutToDisk, ATorusWithTwoHolesBecomesOneDisk)
+{
+  // The torus without two of its quads far apart: genus 1 and 2 boundary loops.
+  const TriangleMesh torus = makeTorus(1.0, 0.3, 24, 12);
+  std::vector<Triangle> triangles;
+  for (int f = 0; f < torus.faceCount(); ++f)
+  {
+    if (f / 2 != 0 && f / 2 != 12 * 12 + 6)
+    {
+      triangles.push_back(torus.triangle(f));
+    }
+  }
+  const TriangleMesh holed(torus.points(), triangles);
+  ASSERT_EQ(holed.boundaryLoops().size(), 2u);
+  const EdgeCut cut = cutToDisk(holed);
+  expectDiskOf(cut, holed);
+  EXPECT_EQ(cutToDisk(holed).mesh.triangles(), cut.mesh.triangles()); // deterministic
+}
+
+TEST(CutToDisk, RefusesWhatCannotBeCut)
+{
+  EXPECT_THROW(cutToDisk(TriangleMesh()), Error);
+  // Two separate triangles.
+  const TriangleMesh two({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(5, 0, 0), Vector3(6, 0, 0),
+                           Vector3(5, 1, 0) },
+    { { { 0, 1, 2 } }, { { 3, 4, 5 } } });
+  EXPECT_THROW(cutToDisk(two), Error);
+  // One flag per edge, or the cut is refused.
+  EXPECT_THROW(splitAlongEdges(two, std::vector<char>(2, 0)), Error);
 }
 
 TEST(ChartParameterization, RefusesDegenerateAndEmptyInput)

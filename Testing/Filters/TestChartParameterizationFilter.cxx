@@ -124,6 +124,7 @@ bool errors()
   {
     vtkNew<vtkChartParameterization> filter;
     filter->SetInputData(c.input);
+    filter->CutToDisksOff();
     const vtkMTimeType inputTime = c.input->GetMTime();
     const std::string error = kerf::test::UpdateAndCaptureError(filter);
     ok &= KERF_CHECK(error.find(c.expected) != std::string::npos);
@@ -136,6 +137,38 @@ bool errors()
   }
   return ok;
 }
+
+// A torus (genus 1) as one chart: cut into a disk by default, the cut reported in the field data.
+bool torusCutIntoADisk()
+{
+  bool ok = true;
+  const kerf::TriangleMesh torus = kerf::makeTorus(1.0, 0.3, 24, 12);
+  vtkSmartPointer<vtkPolyData> input = labelled(torus, std::vector<int>(static_cast<std::size_t>(torus.faceCount()), 6), "Chart");
+  vtkNew<vtkChartParameterization> filter;
+  filter->SetInputData(input);
+  ok &= KERF_CHECK(filter->GetCutToDisks());
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
+  const kerf::ChartParameterizationResult core =
+    kerf::parameterizeCharts(torus, std::vector<int>(static_cast<std::size_t>(torus.faceCount()), 6));
+  vtkPolyData* output = filter->GetOutput(0);
+  ok &= KERF_CHECK(output->GetNumberOfPoints() == core.split.mesh.vertexCount());
+  ok &= KERF_CHECK(output->GetNumberOfPoints() > torus.vertexCount());
+  vtkFieldData* field = output->GetFieldData();
+  ok &= KERF_CHECK(field->GetArray("CutCharts")->GetTuple1(0) == 1.0);
+  ok &= KERF_CHECK(field->GetArray("ChartCutEdges")->GetTuple1(0) == core.charts[0].cutEdgeCount);
+  ok &= KERF_CHECK(field->GetArray("ChartCutLength")->GetTuple1(0) == core.charts[0].cutLength);
+  ok &= KERF_CHECK(field->GetArray("OverlappingChartPairs")->GetTuple1(0) == 0.0);
+  // Every output point copies the input point it names.
+  vtkDataArray* ids = output->GetPointData()->GetArray("OriginalPointId");
+  for (vtkIdType v = 0; v < output->GetNumberOfPoints(); ++v)
+  {
+    double p[3], q[3];
+    output->GetPoint(v, p);
+    input->GetPoint(static_cast<vtkIdType>(ids->GetTuple1(v)), q);
+    ok &= KERF_CHECK(p[0] == q[0] && p[1] == q[1] && p[2] == q[2]);
+  }
+  return ok;
+}
 } // namespace
 
 int TestChartParameterizationFilter(int, char*[])
@@ -143,5 +176,6 @@ int TestChartParameterizationFilter(int, char*[])
   bool ok = developableCylinder();
   ok &= segmentsMatchTheCore();
   ok &= errors();
+  ok &= torusCutIntoADisk();
   return ok ? 0 : 1;
 }

@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "Harmonic/SparseCholesky.h"
 #include "Mesh/MeshValidation.h"
+#include "Parameterization/CutToDisk.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -532,6 +533,146 @@ int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangl
   return static_cast<int>(pairs.size());
 }
 
+namespace
+{
+// Per face: the stretch of the inverse map (Sander et al. 2001) after the chart is scaled to its
+// 3D area, whatever the triangle's orientation, capped at SeamScoreCap (collapsed triangles get
+// it). Returns the capped L2 norm, sqrt(sum A_f score_f^2 / sum A_f): finite, so that maps with
+// collapsed triangles can be compared.
+constexpr double SeamScoreCap = 1e3;
+// A seam starts in a triangle whose score is at least this fraction of the worst one.
+constexpr double SeamCandidateFraction = 0.1;
+
+double seamScore(const TriangleMesh& chart, const std::vector<Vector2>& uv, std::vector<double>& faceScore)
+{
+  double area3D = 0.0;
+  double areaUV = 0.0;
+  std::vector<double> areas(static_cast<std::size_t>(chart.faceCount()));
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    areas[static_cast<std::size_t>(f)] =
+      0.5 * (chart.point(t[1]) - chart.point(t[0])).cross(chart.point(t[2]) - chart.point(t[0])).norm();
+    area3D += areas[static_cast<std::size_t>(f)];
+    areaUV += signedArea(uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
+  }
+  const double scale = std::abs(areaUV) > 0.0 ? std::sqrt(area3D / std::abs(areaUV)) : 0.0;
+  const double mirror = areaUV < 0.0 ? -1.0 : 1.0;
+  auto scaled = [&](int v) {
+    const Vector2& p = uv[static_cast<std::size_t>(v)];
+    return Vector2(p.x() * scale, p.y() * scale * mirror);
+  };
+  faceScore.assign(static_cast<std::size_t>(chart.faceCount()), SeamScoreCap);
+  double sum = 0.0;
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    const FaceDistortion d =
+      faceDistortion(chart.point(t[0]), chart.point(t[1]), chart.point(t[2]), scaled(t[0]), scaled(t[1]), scaled(t[2]));
+    double& score = faceScore[static_cast<std::size_t>(f)];
+    if (d.inverseStretch < SeamScoreCap)
+    {
+      score = d.inverseStretch;
+    }
+    sum += areas[static_cast<std::size_t>(f)] * score * score;
+  }
+  return area3D > 0.0 ? std::sqrt(sum / area3D) : SeamScoreCap;
+}
+
+// Cut augmentation of Gu, Gortler and Hoppe 2002 (section 3.2): while the map's L2 stretch is
+// above the target and seams are left, cut the chart from its worst place to its boundary along
+// the shortest edge path and flatten it again; stop at the first seam that does not lower the
+// stretch (it is dropped). The worst place: of the triangles whose
+// score is at least SeamCandidateFraction of the worst, the vertex farthest from the boundary
+// (the tip of a protrusion the map shrank).
+void addSeams(TriangleMesh& chart, std::vector<int>& toChart, std::vector<Vector2>& uv, ChartSummary& summary,
+  const ChartParameterizationOptions& options)
+{
+  if (options.maximumSeams <= 0)
+  {
+    return;
+  }
+  // The chart as it is cut further, and the last state that lowered the stretch.
+  struct State
+  {
+    TriangleMesh chart;
+    std::vector<int> toChart;
+    std::vector<Vector2> uv;
+    std::vector<double> faceScore;
+    double score = 0.0;
+    int seams = 0;
+    double seamLength = 0.0;
+  };
+  State current{ chart, toChart, uv, {}, 0.0, 0, 0.0 };
+  current.score = seamScore(current.chart, current.uv, current.faceScore);
+  State best = current;
+  while (current.seams < options.maximumSeams && current.score > options.seamStretchTarget)
+  {
+    // Distances from the boundary along the edges, and the edge towards it.
+    const EdgePathTree paths = shortestEdgePaths(current.chart, current.chart.boundaryLoops().front());
+    const std::vector<double>& distance = paths.distance;
+    const std::vector<int>& towards = paths.towards;
+    const double worst = *std::max_element(current.faceScore.begin(), current.faceScore.end());
+    int tip = -1;
+    for (int f = 0; f < current.chart.faceCount(); ++f)
+    {
+      if (current.faceScore[static_cast<std::size_t>(f)] < SeamCandidateFraction * worst)
+      {
+        continue;
+      }
+      for (int v : current.chart.triangle(f))
+      {
+        if (tip < 0 || distance[static_cast<std::size_t>(v)] > distance[static_cast<std::size_t>(tip)] ||
+          (distance[static_cast<std::size_t>(v)] == distance[static_cast<std::size_t>(tip)] && v < tip))
+        {
+          tip = v;
+        }
+      }
+    }
+    if (tip < 0 || !(distance[static_cast<std::size_t>(tip)] > 0.0))
+    {
+      break;
+    }
+    std::vector<char> flags(static_cast<std::size_t>(current.chart.edgeCount()), 0);
+    for (int v = tip; towards[static_cast<std::size_t>(v)] >= 0;)
+    {
+      const int e = towards[static_cast<std::size_t>(v)];
+      flags[static_cast<std::size_t>(e)] = 1;
+      const std::array<int, 2>& ends = current.chart.edgeVertices(e);
+      v = ends[0] == v ? ends[1] : ends[0];
+    }
+    EdgeCut cut = splitAlongEdges(current.chart, flags);
+    try
+    {
+      current.uv = leastSquaresConformalMap(cut.mesh, options.solver);
+    }
+    catch (const Error&)
+    {
+      break; // the best map so far stands
+    }
+    for (int& original : cut.originalVertex)
+    {
+      original = current.toChart[static_cast<std::size_t>(original)];
+    }
+    current.toChart = std::move(cut.originalVertex);
+    current.chart = std::move(cut.mesh);
+    current.score = seamScore(current.chart, current.uv, current.faceScore);
+    ++current.seams;
+    current.seamLength += cut.cutLength;
+    if (!(current.score < best.score))
+    {
+      break; // Gu, Gortler and Hoppe 2002: stop when a seam no longer lowers the stretch
+    }
+    best = current;
+  }
+  chart = std::move(best.chart);
+  toChart = std::move(best.toChart);
+  uv = std::move(best.uv);
+  summary.seams = best.seams;
+  summary.seamLength = best.seamLength;
+}
+} // namespace
+
 ChartParameterizationResult parameterizeCharts(
   const TriangleMesh& mesh, const std::vector<int>& faceLabels, const ChartParameterizationOptions& options)
 {
@@ -588,6 +729,10 @@ ChartParameterizationResult parameterizeCharts(
   std::vector<TriangleMesh> charts(labels.size());
   std::vector<std::vector<int>> chartVertices(labels.size());
   std::string problems;
+  // Charts cut into disks or along seams: per chart vertex, the vertex of the chart as first
+  // built that it copies; and the summaries of those cuts.
+  std::vector<std::vector<int>> toChart(labels.size());
+  std::vector<ChartSummary> summaries(labels.size());
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
     std::vector<int>& vertices = chartVertices[c];
@@ -612,28 +757,98 @@ ChartParameterizationResult parameterizeCharts(
         localIndex[static_cast<std::size_t>(t[2])] } });
     }
     charts[c] = TriangleMesh(std::move(points), std::move(triangles));
+    toChart[c].resize(vertices.size());
+    std::iota(toChart[c].begin(), toChart[c].end(), 0);
     const std::string problem = chartTopologyProblem(charts[c]);
-    if (!problem.empty())
+    if (problem.empty())
     {
-      problems += (problems.empty() ? "" : "; ") + chartName(c) + ": " + problem;
+      continue;
     }
+    const MeshReport report = inspectMesh(charts[c]);
+    if (options.cutToDisks && report.zeroAreaFaces == 0 && report.nonManifoldEdges == 0 &&
+      report.nonManifoldVertices == 0 && report.inconsistentEdges == 0 && report.components == 1)
+    {
+      // Closed, several boundary loops or handles: cut into a disk.
+      EdgeCut cut = cutToDisk(charts[c]);
+      ChartSummary& summary = summaries[c];
+      summary.cutFrom = std::to_string(report.boundaryLoops) + " boundary loops and genus " +
+        std::to_string((2 - report.eulerCharacteristic - report.boundaryLoops) / 2);
+      summary.cutEdgeCount = static_cast<int>(cut.cutEdges.size());
+      summary.cutLength = cut.cutLength;
+      toChart[c] = std::move(cut.originalVertex);
+      charts[c] = std::move(cut.mesh);
+      ++result.cutCharts;
+      continue;
+    }
+    problems += (problems.empty() ? "" : "; ") + chartName(c) + ": " + problem;
   }
   if (!problems.empty())
   {
     throw Error("these charts are not topological disks and cannot be flattened (cut them into disks first): " + problems);
   }
+  // Flatten each chart, adding seams where the map is worst (options.maximumSeams).
+  std::vector<std::vector<Vector2>> chartUV(labels.size());
+  for (std::size_t c = 0; c < labels.size(); ++c)
+  {
+    chartUV[c] = leastSquaresConformalMap(charts[c], options.solver);
+    addSeams(charts[c], toChart[c], chartUV[c], summaries[c], options);
+  }
+  // Vertices copied by the cuts: the first copy keeps the split mesh's vertex, the others are
+  // appended to it (charts share no vertex of the split mesh).
+  std::vector<char> taken(static_cast<std::size_t>(split.vertexCount()), 0);
+  std::vector<int> addedOriginal;
+  std::vector<Vector3> addedPoints;
+  for (std::size_t c = 0; c < labels.size(); ++c)
+  {
+    std::vector<int> globals(toChart[c].size());
+    for (std::size_t i = 0; i < globals.size(); ++i)
+    {
+      const int global = chartVertices[c][static_cast<std::size_t>(toChart[c][i])];
+      if (taken[static_cast<std::size_t>(global)])
+      {
+        globals[i] = split.vertexCount() + static_cast<int>(addedPoints.size());
+        addedOriginal.push_back(result.split.originalPoint[static_cast<std::size_t>(global)]);
+        addedPoints.push_back(split.point(global));
+      }
+      else
+      {
+        taken[static_cast<std::size_t>(global)] = 1;
+        globals[i] = global;
+      }
+    }
+    chartVertices[c] = std::move(globals);
+  }
+  if (!addedPoints.empty())
+  {
+    std::vector<Vector3> points = split.points();
+    points.insert(points.end(), addedPoints.begin(), addedPoints.end());
+    std::vector<Triangle> triangles = split.triangles();
+    for (std::size_t c = 0; c < labels.size(); ++c)
+    {
+      for (std::size_t f = 0; f < chartFaces[c].size(); ++f)
+      {
+        const Triangle& t = charts[c].triangle(static_cast<int>(f));
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          triangles[static_cast<std::size_t>(chartFaces[c][f])][k] = chartVertices[c][static_cast<std::size_t>(t[k])];
+        }
+      }
+    }
+    result.split.originalPoint.insert(result.split.originalPoint.end(), addedOriginal.begin(), addedOriginal.end());
+    result.split.mesh = TriangleMesh(std::move(points), std::move(triangles));
+  }
 
   // Flatten, scale each chart to its 3D area, measure, and find its minimal box.
   result.uv.assign(static_cast<std::size_t>(split.vertexCount()), Vector2::Zero());
   result.faces.resize(static_cast<std::size_t>(split.faceCount()));
-  result.charts.resize(labels.size());
+  result.charts = std::move(summaries);
   std::vector<double> rotations(labels.size());
   std::vector<Vector2> boxSizes(labels.size());
   std::vector<Vector2> boxCorners(labels.size());
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
     const TriangleMesh& chart = charts[c];
-    std::vector<Vector2> uv = leastSquaresConformalMap(chart, options.solver);
+    std::vector<Vector2> uv = std::move(chartUV[c]);
     double area3D = 0.0;
     double areaUV = 0.0;
     for (const Triangle& t : chart.triangles())

@@ -35,6 +35,19 @@ struct ChartParameterizationOptions
   ChartSolver solver = ChartSolver::ComplexLDLT;
   /// Side, in texels, of the grid on which countChartOverlaps samples the layout. Default 1024.
   int overlapResolution = 1024;
+  /// Charts that are connected, manifold and consistently oriented but not disks (closed, with
+  /// several boundary loops or with handles) are cut into disks by cutToDisk; when false they are
+  /// refused like the other charts that are not disks. Default true.
+  bool cutToDisks = true;
+  /// Seams added to each chart where its map is worst, at most this many (cut augmentation, Gu,
+  /// Gortler and Hoppe 2002, section 3.2): while the chart's L2 stretch (the inverse map's,
+  /// Sander et al. 2001, whatever the triangles' orientation, capped at 1000) is above
+  /// seamStretchTarget, the chart is cut from the vertex farthest from its boundary among the
+  /// triangles with at least a tenth of the worst stretch, along the shortest edge path to the boundary,
+  /// and flattened again; a seam that does not lower the stretch is dropped and ends the search.
+  /// Default 0: no seam.
+  int maximumSeams = 0;
+  double seamStretchTarget = 1.2;
 };
 
 /// Distortion of the map from a triangle to its texture image.
@@ -71,6 +84,13 @@ struct ChartSummary
   int vertexCount = 0;
   DistortionSummary distortion;
   double rotation = 0.0; ///< radians the chart was turned by before it was packed
+  /// For a chart that was not a disk: what it was ("2 boundary loops and genus 1"), the number
+  /// of its edges cut by cutToDisk and their total length; empty and 0 for a disk.
+  std::string cutFrom;
+  int cutEdgeCount = 0;
+  double cutLength = 0.0;
+  int seams = 0;           ///< seams added (options.maximumSeams)
+  double seamLength = 0.0; ///< their total length
 };
 
 /// The result of parameterizeCharts.
@@ -82,6 +102,7 @@ struct ChartParameterizationResult
   std::vector<ChartSummary> charts;  ///< in increasing label order, then piece order
   DistortionSummary distortion;      ///< all charts
   int overlappingChartPairs = 0;     ///< countChartOverlaps of the packed layout
+  int cutCharts = 0;                 ///< charts cut into disks (ChartSummary::cutFrom)
   double texelScale = 0.0;           ///< texture length per unit of 3D length, equal for every chart
 };
 
@@ -124,11 +145,13 @@ int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangl
 
 /// Cuts the mesh open along the borders of faceLabels and at pinched vertices
 /// (splitAlongFaceLabels with LabelFans::Separate); each connected piece of a label is a chart
-/// (a label in several pieces gives several charts). Flattens each chart with
+/// (a label in several pieces gives several charts). Cuts the charts that are not disks but can
+/// be made disks by cutToDisk (options.cutToDisks; the copies of the vertices along these cuts
+/// are appended to result.split's vertices). Flattens each chart with
 /// leastSquaresConformalMap, scales each so its texture area equals its 3D
 /// area, measures the distortion, turns each chart to its minimal bounding box and packs them
 /// into the unit square with one scale for all (equal texel density). Throws kerf::Error listing
-/// every chart that is not a disk (by label, and piece if the label has several, with what it
+/// every chart that is not a disk and was not cut (by label, and piece if the label has several, with what it
 /// is: boundary loops and genus, non-manifold edges, zero-area triangles), for a label count other than the
 /// face count, an empty mesh or a margin outside [0, 0.25].
 ChartParameterizationResult parameterizeCharts(
