@@ -16,6 +16,7 @@ import best_isoline  # noqa: E402
 import cut_from_stroke  # noqa: E402
 import descriptors  # noqa: E402
 import segmentation_metrics  # noqa: E402
+import unwrap  # noqa: E402
 
 
 def build_cut_from_stroke(view):
@@ -50,8 +51,15 @@ def build_segmentation_metrics(view):
     simple.ColorBy(simple.Show(reference, view), ("CELLS", "Reference"))
 
 
+def build_unwrap(view):
+    atlas = unwrap.unwrap_pipeline()
+    atlas.UpdatePipeline()
+    return unwrap.show(atlas, view)
+
+
 BUILDERS = {"cut_from_stroke": build_cut_from_stroke, "best_isoline": build_best_isoline,
-            "descriptors": build_descriptors, "segmentation_metrics": build_segmentation_metrics}
+            "descriptors": build_descriptors, "segmentation_metrics": build_segmentation_metrics,
+            "unwrap": build_unwrap}
 
 
 def save_state(name, path, picture=None):
@@ -60,10 +68,11 @@ def save_state(name, path, picture=None):
     simple.ResetSession()
     view = simple.CreateView("RenderView", ViewSize=[600, 600])
     simple.AssignViewToLayout(view)
-    BUILDERS[name](view)
+    # A builder that adds views to the view's layout returns the layout: the picture shows it all.
+    shown = BUILDERS[name](view) or view
     simple.SaveState(path)
     if picture:
-        simple.SaveScreenshot(picture, view, ImageResolution=[600, 600])
+        simple.SaveScreenshot(picture, shown, ImageResolution=[600, 600] if shown is view else [1200, 600])
     with open(path) as f:
         text = f.read()
     with open(path, "w") as f:

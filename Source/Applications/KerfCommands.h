@@ -22,6 +22,7 @@ int RunDescriptors(const Arguments& args);
 int RunCut(const Arguments& args);
 int RunShowcase(const Arguments& args, const char* program);
 int RunBenchmark(const Arguments& args);
+int RunUnwrap(const Arguments& args);
 
 /// Updates an algorithm; its VTK error becomes a CommandError "<what>: <message>".
 void RunAlgorithm(vtkAlgorithm* algorithm, const std::string& what);

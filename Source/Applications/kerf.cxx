@@ -34,6 +34,21 @@ const Command Commands[] = {
     "Cut options: --weighting uniform|cotangent|concavity|smooth-concavity (cotangent),\n"
     "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.01),\n"
     "--soft-weight W (1)." },
+  { "unwrap",
+    "kerf unwrap MESH --curves CURVES [-o OUT.obj] [--png OUT.png] [--seams N] [--mode M] [--margin F]\n"
+    "            [--checker N] [--refuse-non-disks]",
+    "Cuts MESH open along curves on it (cuts from kerf cut or kerf showcase, seams; points on the\n"
+    "surface) and gives every chart texture coordinates (a UV atlas): the curves become mesh edges\n"
+    "(--mode scissor|snap|inverse-snap, default scissor: triangles split along the exact curves),\n"
+    "the charts they bound are flattened by least-squares conformal maps and packed into the unit\n"
+    "square (--margin F of its side between charts, default 0.01). A chart that is not a disk\n"
+    "(closed, several boundary loops, handles) is cut into one along short paths, or refused with\n"
+    "--refuse-non-disks. --seams N adds up to N seams to each chart where its map is worst (from\n"
+    "the tip of a protrusion to the border), until its L2 stretch is 1.2 (default 10; 0 for none).\n"
+    "Writes the cut mesh with its texture coordinates (-o; OBJ as vt, also .ply .vtp .vtk) and/or a\n"
+    "picture (--png): the mesh with a checkerboard texture of N squares per side (--checker,\n"
+    "default 24) beside the UV layout coloured by stretch; prints the charts' stretch, shear,\n"
+    "flipped triangles and overlaps." },
   { "descriptors", "kerf descriptors MESH [-o OUT.vtp] [--png OUT.png] [render options]",
     "Computes the surface descriptors (normals, principal curvatures and directions, mean and\n"
     "Gaussian curvature, concavity, normal-cone angle) and writes them and/or a picture." },
@@ -136,6 +151,10 @@ int main(int argc, char* argv[])
       if (name == "cut")
       {
         return kerf::RunCut(args);
+      }
+      if (name == "unwrap")
+      {
+        return kerf::RunUnwrap(args);
       }
       if (name == "convert")
       {

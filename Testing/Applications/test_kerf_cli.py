@@ -5,6 +5,7 @@ import sys
 import tempfile
 import unittest
 
+from vtkmodules.vtkIOGeometry import vtkOBJReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 KERF = sys.argv[1]
@@ -22,7 +23,7 @@ class CommandLine(unittest.TestCase):
     def test_help_lists_every_command(self):
         result = run("--help")
         self.assertEqual(result.returncode, 0)
-        for command in ("showcase", "cut", "descriptors", "info", "convert", "render", "benchmark"):
+        for command in ("showcase", "cut", "unwrap", "descriptors", "info", "convert", "render", "benchmark"):
             self.assertIn(command, result.stdout)
         self.assertEqual(run("descriptors", "--help").returncode, 0)
         self.assertEqual(run().returncode, 2)
@@ -95,6 +96,107 @@ class CommandLine(unittest.TestCase):
                      "--weighting", "concavity")
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("2 segments (5862, 13668 triangles)", result.stdout)
+
+    def unwrap_camel(self, *extra):
+        """The camel cut along the neck stroke (kerf cut --curve), then kerf unwrap along that cut."""
+        curve = os.path.join(self.folder, "neck-curve.vtp")
+        result = run("cut", os.path.join(SOURCE, "Data", "camel.off"), "--stroke",
+                     os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"), "--curve", curve, "--quiet")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        return run("unwrap", os.path.join(SOURCE, "Data", "camel.off"), "--curves", curve, *extra)
+
+    def test_unwrap_writes_an_obj_with_texture_coordinates_and_a_picture(self):
+        obj = os.path.join(self.folder, "camel-unwrapped.obj")
+        vtp = os.path.join(self.folder, "camel-unwrapped.vtp")
+        picture = os.path.join(self.folder, "camel-unwrapped.png")
+        result = self.unwrap_camel("-o", obj, "--png", picture, "--margin", "0.02")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        # The head and the body, the legs and other protrusions given seams to the neck; a few
+        # triangles flip at seam tips (baseline 4).
+        self.assertIn("2 charts (0 cut into disks, 13 seams added)", result.stdout)
+        self.assertIn("4 flipped triangles", result.stdout)
+        self.assertIn("0 overlapping chart pairs", result.stdout)
+        with open(picture, "rb") as png:
+            self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
+        self.assertGreater(os.path.getsize(picture), 50000)
+        # The OBJ: one vt per v (cut vertices are duplicated, one copy per chart), faces v/vt.
+        vertices, uvs, faces = [], [], []
+        with open(obj) as lines:
+            for line in lines:
+                words = line.split()
+                if words and words[0] == "v":
+                    vertices.append([float(w) for w in words[1:4]])
+                elif words and words[0] == "vt":
+                    uvs.append([float(w) for w in words[1:3]])
+                elif words and words[0] == "f":
+                    corners = [w.split("/") for w in words[1:]]
+                    self.assertEqual(len(corners), 3)
+                    for corner in corners:
+                        self.assertEqual(corner[0], corner[1])
+                    faces.append([int(c[0]) - 1 for c in corners])
+        self.assertEqual(len(uvs), len(vertices))
+        self.assertGreater(len(faces), 19536)  # scissor splits the triangles along the cut
+        self.assertGreater(len(vertices), 9770)
+        for u, v in uvs:
+            self.assertTrue(0.02 - 1e-6 <= u <= 0.98 + 1e-6 and 0.02 - 1e-6 <= v <= 0.98 + 1e-6, (u, v))
+        # The same run written as VTP (full precision) has the UVs the OBJ holds, and so does
+        # VTK's own OBJ reader (what MeshLab and Blender read as well).
+        self.assertEqual(self.unwrap_camel("-o", vtp, "--margin", "0.02", "--quiet").returncode, 0)
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(vtp)
+        reader.Update()
+        exact = reader.GetOutput().GetPointData().GetTCoords()
+        self.assertEqual(exact.GetName(), "UV")
+        self.assertEqual(exact.GetNumberOfTuples(), len(uvs))
+        obj_reader = vtkOBJReader()
+        obj_reader.SetFileName(obj)
+        obj_reader.Update()
+        read_back = obj_reader.GetOutput().GetPointData().GetTCoords()
+        self.assertEqual(obj_reader.GetOutput().GetNumberOfPolys(), len(faces))
+        worst = 0.0
+        for point in range(len(uvs)):
+            for k in range(2):
+                worst = max(worst, abs(exact.GetComponent(point, k) - uvs[point][k]))
+        self.assertLess(worst, 1e-5)
+        self.assertEqual(read_back.GetNumberOfTuples(), len(uvs))
+
+    def test_unwrap_cuts_charts_into_disks_or_refuses_them(self):
+        # An open curve over two camel vertices separates nothing: the one chart is the closed
+        # camel, cut into a disk (and given seams) by default, refused with --refuse-non-disks.
+        curve = os.path.join(self.folder, "open.vtk")
+        with open(curve, "w") as f:
+            f.write("# vtk DataFile Version 3.0\nopen\nASCII\nDATASET POLYDATA\nPOINTS 2 double\n"
+                    + self.camel_vertex(0) + "\n" + self.camel_vertex(1) + "\nLINES 1 3\n2 0 1\n")
+        out = os.path.join(self.folder, "whole.obj")
+        result = run("unwrap", os.path.join(SOURCE, "Data", "camel.off"), "--curves", curve, "-o", out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("1 chart (1 cut into disks", result.stdout)
+        self.assertIn("0 overlapping chart pairs", result.stdout)
+        self.assertTrue(os.path.exists(out))
+        never = os.path.join(self.folder, "never.obj")
+        result = run("unwrap", os.path.join(SOURCE, "Data", "camel.off"), "--curves", curve, "-o", never,
+                     "--refuse-non-disks")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("kerf: error: cannot flatten the charts", result.stderr)
+        self.assertIn("chart 0: it has 0 boundary loops and genus 0", result.stderr)
+        self.assertFalse(os.path.exists(never))
+        far = os.path.join(self.folder, "far.vtk")
+        with open(far, "w") as f:
+            f.write("# vtk DataFile Version 3.0\nfar\nASCII\nDATASET POLYDATA\nPOINTS 2 double\n"
+                    "5 5 5\n6 5 5\nLINES 1 3\n2 0 1\n")
+        result = run("unwrap", os.path.join(SOURCE, "Data", "camel.off"), "--curves", far, "-o", never)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("kerf: error: cannot cut the mesh along the curves", result.stderr)
+        self.assertNotIn("ERROR:", result.stderr)
+        result = run("unwrap", os.path.join(SOURCE, "Data", "camel.off"), "-o", never)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--curves", result.stderr)
+
+    @staticmethod
+    def camel_vertex(index):
+        with open(os.path.join(SOURCE, "Data", "camel.off")) as off:
+            lines = [line for line in off.read().split("\n") if line.strip()]
+        return lines[2 + index]
 
     def test_convert_round_trip_keeps_the_surface(self):
         for extension in (".ply", ".obj", ".stl", ".vtk", ".vtp", ".off"):

@@ -16,6 +16,7 @@ import best_isoline  # noqa: E402
 import cut_from_stroke  # noqa: E402
 import descriptors  # noqa: E402
 import segmentation_metrics  # noqa: E402
+import unwrap  # noqa: E402
 
 CAMEL_FACES = 19536
 
@@ -56,6 +57,21 @@ class ExamplesTest(unittest.TestCase):
         self.assertAlmostEqual(result["HammingDistance"], 0.000199, delta=2e-6)
         self.assertAlmostEqual(result["CutDiscrepancy"], 0.00206, delta=2e-5)
 
+    def test_unwrap(self):
+        result = unwrap.unwrap()
+        # The head and the body, cut apart at the neck; the body gets seams from its legs, tail
+        # and humps to the neck, the head from its ears and snout (baselines); no chart overlaps.
+        self.assertEqual(result["charts"], 2)
+        self.assertEqual(result["seams"], [3, 10])
+        self.assertEqual(result["overlapping_chart_pairs"], 0)
+        self.assertEqual(result["flipped"], 4)
+        self.assertAlmostEqual(result["mean_shear"], 1.0605, delta=0.002)
+        self.assertGreaterEqual(result["uv_range"][0], 0.02 - 1e-12)
+        self.assertLessEqual(result["uv_range"][1], 0.98 + 1e-12)
+        # The scissor cut adds 114 triangles along the neck; every seam copies its vertices.
+        self.assertEqual(result["triangles"], CAMEL_FACES + 114)
+        self.assertGreater(result["points"], 9770 + 114)
+
     def load_state(self, name):
         """Loads states/<name>.pvsm from the test's own folder, its files found under Data;
         returns its proxies by XML name."""
@@ -86,6 +102,11 @@ class ExamplesTest(unittest.TestCase):
         with self.subTest(state="segmentation_metrics"):
             table = servermanager.Fetch(self.load_state("segmentation_metrics")["KerfSegmentationMetrics"])
             self.assertAlmostEqual(table.GetColumnByName("RandIndexError").GetValue(0), 0.000307, delta=2e-6)
+        with self.subTest(state="unwrap"):
+            loaded = self.load_state("unwrap")
+            surface = servermanager.Fetch(loaded["KerfChartParameterization"])
+            self.assertEqual(surface.GetFieldData().GetArray("ChartCount").GetValue(0), 2)
+            self.assertEqual(surface.GetPointData().GetTCoords().GetName(), "UV")
 
 
 if __name__ == "__main__":
