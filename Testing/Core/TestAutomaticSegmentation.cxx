@@ -12,11 +12,14 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
 #include <functional>
+#include <map>
 #include <memory>
 #include <set>
 #include <string>
@@ -394,6 +397,167 @@ TEST(AutomaticSegmentation, FaceClusteringOnABoxWithACylinder)
   expectBoxWithCylinder("face clustering",
     [] { return cutHierarchyAtCount(buildFaceClusterHierarchy(FaceGraph(boxWithCylinder().surface->mesh()), HierarchicalClusteringOptions()), 2); },
     0.5);
+}
+
+// The contraction order of Garland et al. (2001) computed the plain way, as the reference of
+// buildFaceClusterHierarchy: every cost of a changed cluster recomputed, the whole list of
+// adjacent pairs searched for the least (cost, x, y) at each step. Same quadrics, same
+// arithmetic, same slots (the cluster with more neighbours keeps its slot; ties the smaller).
+FaceClusterHierarchy referenceFaceClusterHierarchy(const FaceGraph& graph, const HierarchicalClusteringOptions& options)
+{
+  struct Cluster
+  {
+    Eigen::Matrix3d A = Eigen::Matrix3d::Zero(), D = Eigen::Matrix3d::Zero();
+    Vector3 b = Vector3::Zero(), e = Vector3::Zero();
+    double c = 0.0, f = 0.0, area = 0.0, perimeter = 0.0;
+  };
+  const auto irregularity = [](double perimeter, double area) {
+    return area > 0.0 ? perimeter * perimeter / (4.0 * Pi * area) : 1.0;
+  };
+  FaceClusterHierarchy hierarchy;
+  hierarchy.faceCount = graph.faceCount();
+  const auto cost = [&](const Cluster& x, const Cluster& y, double shared) {
+    ++hierarchy.costEvaluations;
+    const Eigen::Matrix3d A = x.A + y.A, D = x.D + y.D;
+    const Vector3 b = x.b + y.b, e = x.e + y.e;
+    const double c = x.c + y.c, f = x.f + y.f, area = x.area + y.area;
+    const Eigen::Matrix3d Z = A - b * b.transpose() / c;
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
+    eigen.computeDirect(Z);
+    Vector3 n = eigen.eigenvectors().col(0);
+    const double fit = std::max(0.0, eigen.eigenvalues()(0)) / c;
+    if (n.dot(e) > 0.0)
+    {
+      n = -n;
+    }
+    const double direction = f > 0.0 ? std::max(0.0, (n.dot(D * n) + 2.0 * e.dot(n) + f) / f) : 0.0;
+    const double gamma = irregularity(x.perimeter + y.perimeter - 2.0 * shared, area);
+    const double shape =
+      gamma > 0.0 ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma : 0.0;
+    return fit + options.directionWeight * direction + options.shapeWeight * shape;
+  };
+  const TriangleMesh& mesh = graph.mesh();
+  const int n = graph.faceCount();
+  Vector3 low = mesh.point(0), high = low;
+  for (const Vector3& p : mesh.points())
+  {
+    low = low.cwiseMin(p);
+    high = high.cwiseMax(p);
+  }
+  const Vector3 centre = 0.5 * (low + high);
+  const double scale = 1.0 / (high - low).norm();
+  std::vector<Cluster> clusters(n);
+  std::vector<std::map<int, double>> neighbours(n); // neighbour slot -> shared length
+  for (int face = 0; face < n; ++face)
+  {
+    Cluster& s = clusters[face];
+    for (int v : mesh.triangle(face))
+    {
+      const Vector3 p = (mesh.point(v) - centre) * scale;
+      s.A += p * p.transpose();
+      s.b += p;
+      s.c += 1.0;
+    }
+    const double w = graph.area(face) * scale * scale;
+    s.D = w * graph.normal(face) * graph.normal(face).transpose();
+    s.e = -w * graph.normal(face);
+    s.f = w;
+    s.area = w;
+    s.perimeter = graph.perimeter(face) * scale;
+  }
+  std::map<std::pair<int, int>, double> costs;
+  for (const DualEdge& dual : graph.edges())
+  {
+    const int x = dual.faces[0], y = dual.faces[1];
+    neighbours[x][y] = neighbours[y][x] = dual.length * scale;
+    costs[{ x, y }] = cost(clusters[x], clusters[y], dual.length * scale);
+  }
+  std::vector<int> node(n);
+  for (int face = 0; face < n; ++face)
+  {
+    node[face] = face;
+  }
+  while (!costs.empty())
+  {
+    auto best = costs.begin();
+    for (auto it = costs.begin(); it != costs.end(); ++it)
+    {
+      if (it->second < best->second) // the map is ordered by (x, y): the first least cost wins ties
+      {
+        best = it;
+      }
+    }
+    int keep = best->first.first, gone = best->first.second;
+    if (neighbours[gone].size() > neighbours[keep].size())
+    {
+      std::swap(keep, gone);
+    }
+    hierarchy.merges.push_back({ { std::min(node[keep], node[gone]), std::max(node[keep], node[gone]) } });
+    hierarchy.costs.push_back(best->second);
+    node[keep] = n + static_cast<int>(hierarchy.merges.size()) - 1;
+    const double shared = neighbours[keep][gone];
+    Cluster& k = clusters[keep];
+    const Cluster& g = clusters[gone];
+    k.A += g.A;
+    k.b += g.b;
+    k.c += g.c;
+    k.D += g.D;
+    k.e += g.e;
+    k.f += g.f;
+    k.area += g.area;
+    k.perimeter = k.perimeter + g.perimeter - 2.0 * shared;
+    neighbours[keep].erase(gone);
+    neighbours[gone].erase(keep);
+    for (const auto& [m, length] : neighbours[gone])
+    {
+      neighbours[keep][m] += length;
+      neighbours[m].erase(gone);
+      costs.erase({ std::min(m, gone), std::max(m, gone) });
+    }
+    neighbours[gone].clear();
+    costs.erase(best);
+    for (const auto& [m, length] : neighbours[keep])
+    {
+      neighbours[m][keep] = length;
+      costs[{ std::min(keep, m), std::max(keep, m) }] = cost(clusters[keep], clusters[m], length);
+    }
+  }
+  return hierarchy;
+}
+
+// The merge tree (merges and costs, to the bit) is the reference's: the lazily bounded costs
+// and the indexed heap change the work, not the order. Flat meshes give ties broken by slot.
+TEST(AutomaticSegmentation, FaceClusterHierarchyFollowsTheReferenceContractionOrder)
+{
+  const std::vector<std::pair<std::string, TriangleMesh>> meshes = {
+    { "fingers", makeProtrusions(FingerCount, FingerLength, FingerWidth, 3) },
+    { "lobes", makeDumbbell(LobesHalfLength, LobeRadii, NeckHeight, NeckDepth, 3) },
+    { "flat grid", makeGrid(2.0, 1.0, 16, 8) },
+    { "open bumpy cylinder", makeBumpyCylinder(1.0, 2.0, 24, 12, 3, 1.0, 0.4, 0.15) },
+  };
+  for (const auto& [name, mesh] : meshes)
+  {
+    const FaceGraph graph(mesh);
+    for (const double shapeWeight : { 0.1, 1.0 })
+    {
+      HierarchicalClusteringOptions options;
+      options.shapeWeight = shapeWeight;
+      const FaceClusterHierarchy built = buildFaceClusterHierarchy(graph, options);
+      const FaceClusterHierarchy reference = referenceFaceClusterHierarchy(graph, options);
+      ASSERT_EQ(built.merges.size(), reference.merges.size()) << name;
+      std::size_t firstDifference = 0;
+      while (firstDifference < built.merges.size() && built.merges[firstDifference] == reference.merges[firstDifference] &&
+        built.costs[firstDifference] == reference.costs[firstDifference])
+      {
+        ++firstDifference;
+      }
+      EXPECT_EQ(firstDifference, built.merges.size()) << name << ", a2 = " << shapeWeight << ": merge " << firstDifference
+                                                      << " of " << built.merges.size() << " differs";
+      EXPECT_LT(built.costEvaluations, reference.costEvaluations / 2) << name;
+      std::cout << name << ", a2 = " << shapeWeight << ": " << built.costEvaluations << " costs computed, "
+                << reference.costEvaluations << " by the reference\n";
+    }
+  }
 }
 
 } // namespace kerf

@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <queue>
 
 namespace kerf
 {
@@ -53,9 +52,18 @@ double irregularity(double perimeter, double area)
   return area > 0.0 ? perimeter * perimeter / (4.0 * Pi * area) : 1.0;
 }
 
-// E = E_fit + a1 E_dir + a2 E_shape of joining x and y, which share a boundary of length `shared`.
+// a2-free E_shape = (gamma - max(gamma_1, gamma_2)) / gamma, gamma = p^2 / (4 pi w), of joining x
+// and y, which share a boundary of length `shared` (Garland et al. 2001, section 3.2).
+double shapeError(const ClusterState& x, const ClusterState& y, double shared, double area)
+{
+  const double gamma = irregularity(x.perimeter + y.perimeter - 2.0 * shared, area);
+  return gamma > 0.0 ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma : 0.0;
+}
+
+// E = E_fit + a1 E_dir + a2 E_shape of joining x and y, which share a boundary of length `shared`;
+// `smallestEigenvalue` receives the smallest eigenvalue of the joined cluster's Z.
 double contractionCost(const ClusterState& x, const ClusterState& y, double shared,
-  const HierarchicalClusteringOptions& options)
+  const HierarchicalClusteringOptions& options, double& smallestEigenvalue)
 {
   ClusterState sum = x;
   sum.add(y);
@@ -64,7 +72,8 @@ double contractionCost(const ClusterState& x, const ClusterState& y, double shar
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
   eigen.computeDirect(Z);
   Vector3 n = eigen.eigenvectors().col(0);
-  const double fit = std::max(0.0, eigen.eigenvalues()(0)) / sum.c;
+  smallestEigenvalue = eigen.eigenvalues()(0);
+  const double fit = std::max(0.0, smallestEigenvalue) / sum.c;
   // The plane's normal faces the way the cluster's faces do (e = -sum w_i n_i).
   if (n.dot(sum.e) > 0.0)
   {
@@ -75,22 +84,241 @@ double contractionCost(const ClusterState& x, const ClusterState& y, double shar
   {
     direction = std::max(0.0, (n.dot(sum.D * n) + 2.0 * sum.e.dot(n) + sum.f) / sum.f);
   }
-  // E_shape = (gamma - max(gamma_1, gamma_2)) / gamma, gamma = p^2 / (4 pi w) (section 3.2).
-  const double gamma = irregularity(x.perimeter + y.perimeter - 2.0 * shared, sum.area);
-  const double shape =
-    gamma > 0.0 ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma : 0.0;
+  const double shape = shapeError(x, y, shared, sum.area);
   return fit + options.directionWeight * direction + options.shapeWeight * shape;
 }
 
-struct HeapEntry
+// A lower bound of min over unit n of the direction quadric n^T D n + 2 e.n + f = sum w_i (1 - n_i.n)^2.
+// By Lagrange duality (the trust-region subproblem; More and Sorensen 1983), every mu with D - mu I
+// positive definite gives f + mu - e^T (D - mu I)^{-1} e below it; mu follows More and Sorensen's
+// Newton iteration on 1 / |(D - mu I)^{-1} e| = 1 from the left, where each iterate is such a mu.
+// The factorization is backward stable, so the rounding stays near eps (f + |mu|), far below the margin.
+double directionQuadricMinimumBound(const Eigen::Matrix3d& D, const Vector3& e, double f)
 {
-  double cost;
-  int x, y;          // cluster slots, x < y
-  unsigned vx, vy;   // their versions when the cost was computed
-  bool operator>(const HeapEntry& o) const
+  const double eNorm = e.norm();
+  if (!(f > 0.0) || !(eNorm > 0.0))
   {
-    return cost != o.cost ? cost > o.cost : (x != o.x ? x > o.x : y > o.y);
+    return 0.0;
   }
+  double mu = -eNorm; // |(D - mu I)^{-1} e| <= |e| / |mu| = 1 as D is positive semidefinite
+  double best = 0.0;
+  for (int iteration = 0; iteration < 6; ++iteration)
+  {
+    // Cholesky factor L of D - mu I.
+    const double m00 = D(0, 0) - mu;
+    if (!(m00 > 0.0))
+    {
+      break;
+    }
+    const double l00 = std::sqrt(m00), l10 = D(1, 0) / l00, l20 = D(2, 0) / l00;
+    const double m11 = D(1, 1) - mu - l10 * l10;
+    if (!(m11 > 0.0))
+    {
+      break;
+    }
+    const double l11 = std::sqrt(m11), l21 = (D(2, 1) - l20 * l10) / l11;
+    const double m22 = D(2, 2) - mu - l20 * l20 - l21 * l21;
+    if (!(m22 > 0.0))
+    {
+      break;
+    }
+    const double l22 = std::sqrt(m22);
+    // z = L^{-1} e, so e^T (D - mu I)^{-1} e = |z|^2; y = L^{-T} z.
+    const double z0 = e(0) / l00, z1 = (e(1) - l10 * z0) / l11, z2 = (e(2) - l20 * z0 - l21 * z1) / l22;
+    best = std::max(best, f + mu - (z0 * z0 + z1 * z1 + z2 * z2) - 1e-10 * (f + std::abs(mu)));
+    const double y2 = z2 / l22, y1 = (z1 - l21 * y2) / l11, y0 = (z0 - l10 * y1 - l20 * y2) / l00;
+    const double yNorm = std::sqrt(y0 * y0 + y1 * y1 + y2 * y2);
+    if (std::abs(yNorm - 1.0) < 1e-9)
+    {
+      break;
+    }
+    // q = L^{-1} y; the Newton step of More and Sorensen (1983), equation 3.5 (lambda = -mu).
+    const double q0 = y0 / l00, q1 = (y1 - l10 * q0) / l11, q2 = (y2 - l20 * q0 - l21 * q1) / l22;
+    mu -= (yNorm * yNorm / (q0 * q0 + q1 * q1 + q2 * q2)) * (yNorm - 1.0);
+  }
+  return best;
+}
+
+// What contractionCostLowerBound reads of a cluster, packed for the neighbour loops: from its
+// state, and the smallest eigenvalue of its Z and a lower bound of its direction quadric's minimum
+// (both 0 for a face: its corners span a plane, and one normal fits it exactly).
+struct ClusterSummary
+{
+  double c = 0.0;
+  double traceA = 0.0;
+  Vector3 b = Vector3::Zero();
+  double f = 0.0;
+  double area = 0.0;
+  double perimeter = 0.0;
+  double irregularity = 0.0;
+  double smallestEigenvalue = 0.0;
+  double directionMinimum = 0.0;
+
+  ClusterSummary() = default;
+  explicit ClusterSummary(const ClusterState& s, double lambda = 0.0, double direction = 0.0)
+    : c(s.c)
+    , traceA(s.A.trace())
+    , b(s.b)
+    , f(s.f)
+    , area(s.area)
+    , perimeter(s.perimeter)
+    , irregularity(kerf::irregularity(s.perimeter, s.area))
+    , smallestEigenvalue(lambda)
+    , directionMinimum(direction)
+  {
+  }
+};
+
+// A lower bound of contractionCost(x, y) without its eigenproblem. Z of the join is Z_x + Z_y plus
+// a positive semidefinite term, so its smallest eigenvalue is at least lambda_x + lambda_y (Weyl's
+// inequality); the join's direction quadric is the sum of x's and y's, so its value at the fitted
+// normal is at least the sum of their minima. The margins cover rounding: about 1e-15 tr(A) in
+// forming Z, at worst sqrt(eps) tr(Z) (1.5e-8) in the closed-form eigenvalues where two of them
+// nearly coincide, and about 1e-15 f in E_dir. E_shape is computed as the cost computes it and the
+// terms are summed in the cost's order, so the bound never exceeds the cost computed in floating point.
+double contractionCostLowerBound(
+  const ClusterSummary& x, const ClusterSummary& y, double shared, const HierarchicalClusteringOptions& options)
+{
+  const double c = x.c + y.c;
+  const double traceA = x.traceA + y.traceA;
+  const double traceZ = std::max(0.0, traceA - (x.b + y.b).squaredNorm() / c);
+  const double fitMargin = 1e-6 * traceZ + 1e-10 * traceA;
+  const double fit = std::max(0.0, x.smallestEigenvalue + y.smallestEigenvalue - fitMargin) / c;
+  const double f = x.f + y.f;
+  double direction = 0.0;
+  if (f > 0.0)
+  {
+    direction = std::max(0.0, (x.directionMinimum + y.directionMinimum - 1e-10 * f) / f);
+  }
+  const double gamma = irregularity(x.perimeter + y.perimeter - 2.0 * shared, x.area + y.area);
+  const double shape = gamma > 0.0 ? (gamma - std::max(x.irregularity, y.irregularity)) / gamma : 0.0;
+  return fit + options.directionWeight * direction + options.shapeWeight * shape;
+}
+
+// An indexed binary min-heap of cluster pairs ordered by (key, x, y): one entry per pair, whose
+// key is raised or lowered in place and which is removed when the pair disappears, so the heap
+// never holds more entries than the dual graph has edges.
+class PairHeap
+{
+public:
+  struct Entry
+  {
+    double key;
+    int x, y; // cluster slots, x < y
+    int pair;
+  };
+
+  explicit PairHeap(int pairCount)
+    : Position(static_cast<std::size_t>(pairCount), -1)
+  {
+    this->Entries.reserve(static_cast<std::size_t>(pairCount));
+  }
+
+  bool empty() const { return this->Entries.empty(); }
+  const Entry& top() const { return this->Entries.front(); }
+
+  /// Adds entries in any order; heapify() orders them (Floyd's linear-time construction).
+  void append(const Entry& entry)
+  {
+    this->Position[entry.pair] = static_cast<int>(this->Entries.size());
+    this->Entries.push_back(entry);
+  }
+  void heapify()
+  {
+    for (std::size_t i = this->Entries.size() / 2; i-- > 0;)
+    {
+      const Entry entry = this->Entries[i];
+      this->siftDown(i, entry);
+    }
+  }
+
+  /// Sets the key and slots of a pair in the heap.
+  void update(const Entry& entry)
+  {
+    const std::size_t i = static_cast<std::size_t>(this->Position[entry.pair]);
+    if (less(entry, this->Entries[i]))
+    {
+      this->siftUp(i, entry);
+    }
+    else
+    {
+      this->siftDown(i, entry);
+    }
+  }
+
+  void remove(int pair)
+  {
+    const std::size_t i = static_cast<std::size_t>(this->Position[pair]);
+    this->Position[pair] = -1;
+    const Entry last = this->Entries.back();
+    this->Entries.pop_back();
+    if (i == this->Entries.size())
+    {
+      return;
+    }
+    if (less(last, this->Entries[i]))
+    {
+      this->siftUp(i, last);
+    }
+    else
+    {
+      this->siftDown(i, last);
+    }
+  }
+
+private:
+  static bool less(const Entry& a, const Entry& b)
+  {
+    return a.key != b.key ? a.key < b.key : (a.x != b.x ? a.x < b.x : a.y < b.y);
+  }
+
+  void place(std::size_t i, const Entry& entry)
+  {
+    this->Entries[i] = entry;
+    this->Position[entry.pair] = static_cast<int>(i);
+  }
+
+  void siftUp(std::size_t i, const Entry& entry)
+  {
+    while (i > 0)
+    {
+      const std::size_t parent = (i - 1) / 2;
+      if (!less(entry, this->Entries[parent]))
+      {
+        break;
+      }
+      this->place(i, this->Entries[parent]);
+      i = parent;
+    }
+    this->place(i, entry);
+  }
+
+  void siftDown(std::size_t i, const Entry& entry)
+  {
+    const std::size_t size = this->Entries.size();
+    for (;;)
+    {
+      std::size_t child = 2 * i + 1;
+      if (child >= size)
+      {
+        break;
+      }
+      if (child + 1 < size && less(this->Entries[child + 1], this->Entries[child]))
+      {
+        ++child;
+      }
+      if (!less(this->Entries[child], entry))
+      {
+        break;
+      }
+      this->place(i, this->Entries[child]);
+      i = child;
+    }
+    this->place(i, entry);
+  }
+
+  std::vector<Entry> Entries;
+  std::vector<int> Position; // index in Entries of each pair, -1 when absent
 };
 
 // Union-find labels after the first `count` merges, numbered by first face.
@@ -153,7 +381,6 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   const double lengthScale = scale;
 
   std::vector<ClusterState> clusters(n);
-  std::vector<std::vector<std::pair<int, double>>> adjacency(n); // neighbour slot, shared length
   for (int f = 0; f < n; ++f)
   {
     ClusterState& s = clusters[f];
@@ -172,105 +399,130 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     s.area = w;
     s.perimeter = graph.perimeter(f) * lengthScale;
   }
-  for (int e = 0; e < graph.edgeCount(); ++e)
-  {
-    const DualEdge& dual = graph.edge(e);
-    adjacency[dual.faces[0]].push_back({ dual.faces[1], dual.length * lengthScale });
-    adjacency[dual.faces[1]].push_back({ dual.faces[0], dual.length * lengthScale });
-  }
-  for (auto& list : adjacency)
-  {
-    std::sort(list.begin(), list.end());
-  }
+  std::vector<ClusterSummary> summaries(clusters.begin(), clusters.end());
 
-  std::vector<unsigned> version(n, 0);
-  std::vector<int> node(n);
-  std::iota(node.begin(), node.end(), 0);
-  std::vector<char> alive(n, 1);
-  std::vector<HeapEntry> storage;
-  storage.reserve(static_cast<std::size_t>(graph.edgeCount()) * 2);
-  std::priority_queue<HeapEntry, std::vector<HeapEntry>, std::greater<HeapEntry>> heap(
-    std::greater<HeapEntry>(), std::move(storage));
+  // One record per pair of adjacent clusters, made from a dual edge; when a cluster is absorbed its
+  // records pass to the survivor, or fold into the survivor's record with the same neighbour.
+  struct ClusterPair
+  {
+    int x, y;                  // cluster slots, x < y
+    double length;             // shared boundary
+    double key;                // the cost if exact, else a lower bound of it
+    double smallestEigenvalue; // of the joined Z, once the cost is exact
+    bool exact;
+  };
+  std::vector<ClusterPair> pairs;
+  pairs.reserve(static_cast<std::size_t>(graph.edgeCount()));
+  std::vector<std::vector<int>> adjacency(n); // the pairs of each cluster
+  const auto other = [&pairs](int pair, int slot) { return pairs[pair].x == slot ? pairs[pair].y : pairs[pair].x; };
   for (int e = 0; e < graph.edgeCount(); ++e)
   {
     const DualEdge& dual = graph.edge(e);
     const int x = dual.faces[0], y = dual.faces[1];
-    heap.push({ contractionCost(clusters[x], clusters[y], dual.length * lengthScale, options), x, y, 0, 0 });
-    ++hierarchy.costEvaluations;
-  }
-  hierarchy.merges.reserve(static_cast<std::size_t>(n) - 1);
-  hierarchy.costs.reserve(static_cast<std::size_t>(n) - 1);
-  std::vector<std::pair<int, double>> combined;
-  while (!heap.empty())
-  {
-    const HeapEntry top = heap.top();
-    heap.pop();
-    if (!alive[top.x] || !alive[top.y] || version[top.x] != top.vx || version[top.y] != top.vy)
+    const double length = dual.length * lengthScale;
+    // Two faces with two or three common edges (a closed pair of triangles) form one pair.
+    const auto twin = std::find_if(adjacency[x].begin(), adjacency[x].end(), [&](int q) { return other(q, x) == y; });
+    if (twin != adjacency[x].end())
     {
+      pairs[*twin].length += length;
       continue;
     }
-    // The larger neighbour list survives, so lists are copied O(n log n) times in all.
-    int keep = top.x, gone = top.y;
+    adjacency[x].push_back(static_cast<int>(pairs.size()));
+    adjacency[y].push_back(static_cast<int>(pairs.size()));
+    pairs.push_back({ x, y, length, 0.0, 0.0, false });
+  }
+
+  // Costs are evaluated lazily: a pair enters the heap keyed on a lower bound of its cost, which
+  // is computed only when the bound reaches the top. The popped exact entry is then the least
+  // (cost, x, y) of all pairs, as if every cost had been computed.
+  const auto bound = [&](int q) {
+    ClusterPair& p = pairs[q];
+    p.key = contractionCostLowerBound(summaries[p.x], summaries[p.y], p.length, options);
+    p.exact = false;
+    return PairHeap::Entry{ p.key, p.x, p.y, q };
+  };
+  PairHeap heap(static_cast<int>(pairs.size()));
+  for (int q = 0; q < static_cast<int>(pairs.size()); ++q)
+  {
+    heap.append(bound(q));
+  }
+  heap.heapify();
+
+  std::vector<int> node(n);
+  std::iota(node.begin(), node.end(), 0);
+  // For each neighbour of the surviving cluster, its pair with it, valid while mark == merge index.
+  std::vector<int> neighbourPair(n, -1), mark(n, -1);
+  hierarchy.merges.reserve(static_cast<std::size_t>(n) - 1);
+  hierarchy.costs.reserve(static_cast<std::size_t>(n) - 1);
+  while (!heap.empty())
+  {
+    const int top = heap.top().pair;
+    ClusterPair& contracted = pairs[top];
+    if (!contracted.exact)
+    {
+      contracted.key = contractionCost(clusters[contracted.x], clusters[contracted.y], contracted.length, options,
+        contracted.smallestEigenvalue);
+      contracted.exact = true;
+      ++hierarchy.costEvaluations;
+      heap.update({ contracted.key, contracted.x, contracted.y, top });
+      continue;
+    }
+    heap.remove(top);
+    // The larger neighbour list survives (ties: the smaller slot), so lists are copied
+    // O(n log n) times in all.
+    int keep = contracted.x, gone = contracted.y;
     if (adjacency[gone].size() > adjacency[keep].size())
     {
       std::swap(keep, gone);
     }
-    double shared = 0.0;
-    for (const auto& [m, length] : adjacency[keep])
-    {
-      if (m == gone)
-      {
-        shared = length;
-      }
-    }
+    const double shared = contracted.length;
+    const int mergeIndex = static_cast<int>(hierarchy.merges.size());
     hierarchy.merges.push_back({ { std::min(node[keep], node[gone]), std::max(node[keep], node[gone]) } });
-    hierarchy.costs.push_back(top.cost);
-    node[keep] = n + static_cast<int>(hierarchy.merges.size()) - 1;
+    hierarchy.costs.push_back(contracted.key);
+    node[keep] = n + mergeIndex;
     clusters[keep].add(clusters[gone]);
     clusters[keep].perimeter = clusters[keep].perimeter + clusters[gone].perimeter - 2.0 * shared;
-    alive[gone] = 0;
-    ++version[keep];
-    // Merge the two sorted neighbour lists; the neighbours of `gone` now see `keep`.
-    combined.clear();
-    const auto& a = adjacency[keep];
-    const auto& b = adjacency[gone];
-    std::size_t i = 0, j = 0;
-    while (i < a.size() || j < b.size())
+    summaries[keep] = ClusterSummary(clusters[keep], contracted.smallestEigenvalue,
+      directionQuadricMinimumBound(clusters[keep].D, clusters[keep].e, clusters[keep].f));
+
+    // The neighbours of `keep`, without the contracted pair.
+    std::vector<int>& kept = adjacency[keep];
+    kept.erase(std::find(kept.begin(), kept.end(), top));
+    for (int q : kept)
     {
-      std::pair<int, double> next;
-      if (j == b.size() || (i < a.size() && a[i].first < b[j].first))
+      const int m = other(q, keep);
+      neighbourPair[m] = q;
+      mark[m] = mergeIndex;
+    }
+    // The neighbours of `gone` now see `keep`: a common neighbour's two pairs fold into one.
+    for (int q : adjacency[gone])
+    {
+      if (q == top)
       {
-        next = a[i++];
+        continue;
       }
-      else if (i == a.size() || b[j].first < a[i].first)
+      const int m = other(q, gone);
+      if (mark[m] == mergeIndex)
       {
-        next = b[j++];
+        ClusterPair& common = pairs[neighbourPair[m]];
+        common.length = common.length + pairs[q].length;
+        heap.remove(q);
+        std::vector<int>& list = adjacency[m];
+        *std::find(list.begin(), list.end(), q) = list.back();
+        list.pop_back();
       }
       else
       {
-        next = { a[i].first, a[i].second + b[j].second };
-        ++i;
-        ++j;
-      }
-      if (next.first != keep && next.first != gone)
-      {
-        combined.push_back(next);
+        pairs[q].x = std::min(keep, m);
+        pairs[q].y = std::max(keep, m);
+        kept.push_back(q);
       }
     }
-    adjacency[keep].swap(combined);
-    std::vector<std::pair<int, double>>().swap(adjacency[gone]);
-    for (const auto& [m, length] : adjacency[keep])
+    std::vector<int>().swap(adjacency[gone]);
+    // `keep` changed, so every cost of its pairs did.
+    for (int q : kept)
     {
-      auto& list = adjacency[m];
-      list.erase(std::remove_if(list.begin(), list.end(),
-                   [keep, gone](const auto& p) { return p.first == keep || p.first == gone; }),
-        list.end());
-      list.insert(std::lower_bound(list.begin(), list.end(), std::make_pair(keep, 0.0),
-                    [](const auto& p, const auto& q) { return p.first < q.first; }),
-        { keep, length });
-      const int x = std::min(keep, m), y = std::max(keep, m);
-      heap.push({ contractionCost(clusters[keep], clusters[m], length, options), x, y, version[x], version[y] });
-      ++hierarchy.costEvaluations;
+      heap.update(bound(q));
     }
   }
   return hierarchy;

@@ -35,15 +35,17 @@ struct FaceClusterHierarchy
   int faceCount = 0;
   std::vector<std::array<int, 2>> merges; ///< the two nodes joined by each merge, in order
   std::vector<double> costs;              ///< E of each merge
-  long long costEvaluations = 0;          ///< contraction costs computed while building (the work)
+  long long costEvaluations = 0;          ///< contraction costs computed while building (the work; bounds not counted)
 };
 
 /// Builds the tree: each face a cluster with its fit quadric (its corners, positions divided by the
 /// bounding-box diagonal so E_fit is scale-free) and direction quadric (its normal, weighted by its
-/// area); every dual edge in a min-heap keyed on its contraction cost; the cheapest contracted,
-/// the quadrics summed and its neighbours' costs recomputed, until the heap is empty. The best plane
-/// of a cluster is the eigenvector of A - b b^T / c with the smallest eigenvalue. O(n log n) for
-/// clusters of bounded degree. Deterministic (ties by node index). Throws kerf::Error for negative
+/// area); the pair of adjacent clusters with the least contraction cost contracted, the quadrics
+/// summed, until no pair is left. The best plane of a cluster is the eigenvector of A - b b^T / c
+/// with the smallest eigenvalue. One heap entry per adjacent pair, keyed on a lower bound of its
+/// cost until the bound reaches the top, where the cost is computed: the order is that of computing
+/// every cost, with about one cost computed per face. A merge bounds again every pair of the kept
+/// cluster, O(degree log n). Deterministic (ties by cluster slot). Throws kerf::Error for negative
 /// or NaN weights.
 FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const HierarchicalClusteringOptions& options);
 
