@@ -382,7 +382,7 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
   {
     for (const auto& [name, body] : benchmarks)
     {
-      if ((name.rfind("BM_CGAL", 0) == 0 || name.rfind("BM_GeodesicPolyline", 0) == 0) && size.cells > 100)
+      if (name.rfind("BM_CGAL", 0) == 0 && size.cells > 100)
       {
         continue;
       }
