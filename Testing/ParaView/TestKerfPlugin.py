@@ -336,6 +336,13 @@ class KerfPluginTest(unittest.TestCase):
                     names.append(one_name)
         self.assertLessEqual({"StrokeCut", "IsolineCut", "OFFReader", "OFFWriter", "SurfaceDescriptors"}, set(names))
 
+    def test_chart_labels_keep_their_default_in_scripts(self):
+        """A script creates a whole pipeline before any of it runs: Chart Parameterization's
+        Chart Labels must stay Chart (what Curve Export writes), which ParaView's array list
+        would replace by "0" for a still empty input without the NoDefault hint."""
+        camel = simple.OpenDataFile(CAMEL)
+        self.assertEqual(list(simple.ChartParameterization(Input=camel).ChartLabels), ["CELLS", "Chart"])
+
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}
         for name, definition in proxy_definitions("filters"):
