@@ -7,10 +7,13 @@
 
 #include <vtkErrorCode.h>
 #include <vtkExecutive.h>
+#include <vtkFloatArray.h>
 #include <vtkInformation.h>
 #include <vtkOBJWriter.h>
 #include <vtkObjectFactory.h>
+#include <vtkNew.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkSTLWriter.h>
@@ -118,7 +121,20 @@ void vtkMeshFileWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
     return;
   }
-  writer.algorithm->SetInputDataObject(input);
+  // vtkPLYWriter reads texture coordinates as floats whatever their type (a double array
+  // crashes it): a PLY gets a float copy.
+  vtkSmartPointer<vtkPolyData> written = input;
+  vtkDataArray* tcoords = input ? input->GetPointData()->GetTCoords() : nullptr;
+  if (extension == ".ply" && tcoords && !vtkFloatArray::SafeDownCast(tcoords))
+  {
+    written = vtkSmartPointer<vtkPolyData>::New();
+    written->ShallowCopy(input);
+    vtkNew<vtkFloatArray> floats;
+    floats->DeepCopy(tcoords);
+    floats->SetName(tcoords->GetName());
+    written->GetPointData()->SetTCoords(floats);
+  }
+  writer.algorithm->SetInputDataObject(written);
   auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
   writer.algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
   writer.algorithm->GetExecutive()->AddObserver(

@@ -6,6 +6,7 @@ import tempfile
 import unittest
 
 from vtkmodules.vtkIOGeometry import vtkOBJReader
+from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
 KERF = sys.argv[1]
@@ -193,10 +194,33 @@ class CommandLine(unittest.TestCase):
         self.assertIn("--curves", result.stderr)
 
     @staticmethod
-    def camel_vertex(index):
-        with open(os.path.join(SOURCE, "Data", "camel.off")) as off:
+    def camel_vertex(index, mesh="camel.off"):
+        with open(os.path.join(SOURCE, "Data", mesh)) as off:
             lines = [line for line in off.read().split("\n") if line.strip()]
         return lines[2 + index]
+
+    def test_unwrap_cuts_the_handles_of_the_elephant(self):
+        # The elephant has genus 3 (trunk and tusks joined to the head): one chart, cut into a
+        # disk along loops through its handles, flattened without overlaps.
+        curve = os.path.join(self.folder, "elephant-open.vtk")
+        with open(curve, "w") as f:
+            f.write("# vtk DataFile Version 3.0\nopen\nASCII\nDATASET POLYDATA\nPOINTS 2 double\n"
+                    + self.camel_vertex(0, "elephant.off") + "\n" + self.camel_vertex(1, "elephant.off")
+                    + "\nLINES 1 3\n2 0 1\n")
+        out = os.path.join(self.folder, "elephant.ply")
+        result = run("unwrap", os.path.join(SOURCE, "Data", "elephant.off"), "--curves", curve, "-o", out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("1 chart (1 cut into disks", result.stdout)
+        self.assertIn("0 overlapping chart pairs", result.stdout)
+        # 5,558 triangles, and those the curve crosses split by the scissor (baseline).
+        self.assertIn("5936 triangles", result.stdout)
+        # The PLY holds the texture coordinates (u, v) of every point, as VTK's reader reads them.
+        reader = vtkPLYReader()
+        reader.SetFileName(out)
+        reader.Update()
+        self.assertEqual(reader.GetOutput().GetNumberOfPolys(), 5936)
+        self.assertEqual(reader.GetOutput().GetPointData().GetTCoords().GetNumberOfTuples(),
+                         reader.GetOutput().GetNumberOfPoints())
 
     def test_convert_round_trip_keeps_the_surface(self):
         for extension in (".ply", ".obj", ".stl", ".vtk", ".vtp", ".off"):

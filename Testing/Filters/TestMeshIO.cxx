@@ -2,6 +2,7 @@
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkMeshFileReader.h"
+#include "vtkMeshFileWriter.h"
 #include "vtkOFFReader.h"
 #include "vtkOFFWriter.h"
 #include "vtkSegmentationReader.h"
@@ -10,6 +11,7 @@
 #include <vtkCellData.h>
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -17,6 +19,7 @@
 #include <vtkOBJWriter.h>
 #include <vtkPLYReader.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkPolyDataWriter.h>
@@ -27,6 +30,8 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtksys/SystemTools.hxx>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <vector>
@@ -172,6 +177,46 @@ int TestMeshIO(int argc, char* argv[])
     ok &= KERF_CHECK(reader->GetOutput()->GetNumberOfPolys() == torus->GetNumberOfPolys());
     // STL stores each facet separately; its reader merges points back.
     ok &= KERF_CHECK(reader->GetOutput()->GetNumberOfPoints() == torus->GetNumberOfPoints());
+  }
+
+  // Texture coordinates in double precision (Chart Parameterization's UV) travel through every
+  // format that holds them and read back within float precision; input untouched.
+  {
+    auto textured = vtkSmartPointer<vtkPolyData>::New();
+    textured->ShallowCopy(torus);
+    vtkNew<vtkDoubleArray> uv;
+    uv->SetName("UV");
+    uv->SetNumberOfComponents(2);
+    for (vtkIdType v = 0; v < textured->GetNumberOfPoints(); ++v)
+    {
+      uv->InsertNextTuple2(0.001 * static_cast<double>(v % 997), 0.5 + 0.0003 * static_cast<double>(v % 1201));
+    }
+    textured->GetPointData()->SetTCoords(uv);
+    for (const char* extension : { ".ply", ".obj", ".vtp", ".vtk" })
+    {
+      const std::string file = temp + "/kerf-io-uv" + extension;
+      vtkNew<vtkMeshFileWriter> writer;
+      writer->SetInputData(textured);
+      writer->SetFileName(file.c_str());
+      ok &= KERF_CHECK(writer->Write() == 1);
+      ok &= KERF_CHECK(textured->GetPointData()->GetTCoords() == uv.Get());
+      vtkNew<vtkMeshFileReader> reader;
+      reader->SetFileName(file.c_str());
+      error = kerf::test::UpdateAndCaptureError(reader);
+      ok &= KERF_CHECK(error.empty());
+      vtkDataArray* back = reader->GetOutput()->GetPointData()->GetTCoords();
+      ok &= KERF_CHECK(back && back->GetNumberOfTuples() == uv->GetNumberOfTuples() && back->GetNumberOfComponents() == 2);
+      double worst = back ? 0.0 : 1.0;
+      for (vtkIdType v = 0; back && v < back->GetNumberOfTuples(); ++v)
+      {
+        for (int k = 0; k < 2; ++k)
+        {
+          worst = std::max(worst, std::abs(back->GetComponent(v, k) - uv->GetComponent(v, k)));
+        }
+      }
+      std::cout << "texture coordinates through " << extension << ": largest difference " << worst << std::endl;
+      ok &= KERF_CHECK(worst < 1e-6);
+    }
   }
 
   // Kerf's PLY, STL and OBJ parsers and its checks before VTK's legacy and XML readers give what

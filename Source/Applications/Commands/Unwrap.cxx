@@ -128,7 +128,7 @@ int RunUnwrap(const Arguments& args)
     right.frameLongestAxis = false;
     right.azimuth = 0.0;
     right.elevation = 0.0;
-    right.zoom = 1.1;
+    right.zoom = 0.9;
     right.legendTitle = "stretch";
     right.caption = "UV layout in the unit square, coloured by stretch";
     std::string error;
