@@ -10,6 +10,7 @@
 #include <vtkDataObject.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -20,6 +21,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
+
+#include <array>
 
 vtkStandardNewMacro(vtkChartParameterization);
 
@@ -40,7 +43,9 @@ void writeSurface(const kerf::ChartParameterizationResult& result, const kerf::S
   points->SetNumberOfPoints(mesh.vertexCount());
   vtkPointData* inputPoints = input->GetPointData();
   output->GetPointData()->CopyAllocate(inputPoints, mesh.vertexCount());
-  vtkNew<vtkDoubleArray> uv;
+  // Texture coordinates in single precision, as renderers, VTK's readers and writers (the PLY
+  // writer reads them as floats whatever their type) and file formats hold them.
+  vtkNew<vtkFloatArray> uv;
   uv->SetName(uvName);
   uv->SetNumberOfComponents(2);
   uv->SetNumberOfTuples(mesh.vertexCount());
@@ -52,7 +57,8 @@ void writeSurface(const kerf::ChartParameterizationResult& result, const kerf::S
     points->SetPoint(v, mesh.point(v).data());
     const int original = result.split.originalPoint[static_cast<std::size_t>(v)];
     output->GetPointData()->CopyData(inputPoints, original, v);
-    uv->SetTuple(v, result.uv[static_cast<std::size_t>(v)].data());
+    const kerf::Vector2& texture = result.uv[static_cast<std::size_t>(v)];
+    uv->SetTypedTuple(v, std::array<float, 2>{ { static_cast<float>(texture.x()), static_cast<float>(texture.y()) } }.data());
     originalIds->SetValue(v, original);
   }
   output->SetPoints(points);
@@ -131,9 +137,11 @@ void writeLayout(const kerf::ChartParameterizationResult& result, vtkPolyData* s
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(result.uv.size()));
-  for (std::size_t v = 0; v < result.uv.size(); ++v)
+  // At the texture coordinates as output 0 holds them (in single precision).
+  vtkDataArray* uv = surface->GetPointData()->GetTCoords();
+  for (vtkIdType v = 0; v < static_cast<vtkIdType>(result.uv.size()); ++v)
   {
-    points->SetPoint(static_cast<vtkIdType>(v), result.uv[v].x(), result.uv[v].y(), 0.0);
+    points->SetPoint(v, uv->GetComponent(v, 0), uv->GetComponent(v, 1), 0.0);
   }
   layout->SetPoints(points);
   layout->SetPolys(surface->GetPolys());

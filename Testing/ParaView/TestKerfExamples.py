@@ -66,8 +66,8 @@ class ExamplesTest(unittest.TestCase):
         self.assertEqual(result["overlapping_chart_pairs"], 0)
         self.assertEqual(result["flipped"], 4)
         self.assertAlmostEqual(result["mean_shear"], 1.0605, delta=0.002)
-        self.assertGreaterEqual(result["uv_range"][0], 0.02 - 1e-12)
-        self.assertLessEqual(result["uv_range"][1], 0.98 + 1e-12)
+        self.assertGreaterEqual(result["uv_range"][0], 0.02 - 1e-7)  # single precision
+        self.assertLessEqual(result["uv_range"][1], 0.98 + 1e-7)
         # The scissor cut adds 114 triangles along the neck; every seam copies its vertices.
         self.assertEqual(result["triangles"], CAMEL_FACES + 114)
         self.assertGreater(result["points"], 9770 + 114)

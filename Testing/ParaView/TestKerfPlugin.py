@@ -110,6 +110,27 @@ class KerfPluginTest(unittest.TestCase):
             others = set(corners[charts != chart].ravel().tolist())
             self.assertFalse(others & set(corners[charts == chart].ravel().tolist()))
 
+    def test_unwrapped_camel_saves_with_paraviews_writers(self):
+        """Chart Parameterization's texture coordinates saved by ParaView's own PLY and OBJ
+        writers (File > Save Data) and read back with the same UVs (to single precision)."""
+        import tempfile
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()  # Stroke Cut's default stroke is placed from the input's bounds
+        cut = simple.StrokeCut(Input=camel)
+        export = simple.CurveExport(Input=camel, Curves=simple.OutputPort(cut, 1))
+        atlas = simple.ChartParameterization(Input=export)
+        atlas.UpdatePipeline()
+        uv = vtk_to_numpy(servermanager.Fetch(atlas).GetPointData().GetTCoords())
+        folder = tempfile.mkdtemp(prefix="kerf-save-", dir=os.environ.get("KERF_TEST_OUTPUT"))
+        for extension in (".ply", ".obj"):
+            with self.subTest(format=extension):
+                path = os.path.join(folder, "camel-uv" + extension)
+                simple.SaveData(path, proxy=atlas)
+                back = servermanager.Fetch(simple.OpenDataFile(path))
+                read = vtk_to_numpy(back.GetPointData().GetTCoords())
+                self.assertEqual(read.shape, uv.shape)
+                self.assertLess(abs(read - uv).max(), 1e-6)
+
     def test_point_filters_apply_at_once(self):
         """A first-time user adds Geodesic Distance, Geodesic Seam (on Stroke Cut's cut), ROI
         Scissor or Geodesic Polyline to the camel and presses Apply: their points start at the input's
