@@ -1,7 +1,7 @@
 // Benchmarks of the curve export operators (scissor, snap, inverse snap) with 10 isolines on a dumbbell.
 //
 // The surface is the benchmarks' cube dumbbell (kerf::benchmarks::MakeBenchmarkDumbbell) with
-// 22,188 and 99,372 triangles; the curves are the 10 isolines of the height z at evenly spaced
+// 22,188, 99,372 and 1,002,252 triangles; the curves are the 10 isolines of the height z at evenly spaced
 // levels between the caps (closed loops around the axis), extracted once per size outside the
 // timed loops. For each size:
 //   BM_CoreExtractTenIsolines/<size>   kerf::extractIsolines at the 10 levels, for reference (the
@@ -28,7 +28,7 @@ struct ExportSize
   const char* name;
   int cells;
 };
-const std::array<ExportSize, 2> Sizes = { { { "22k", 43 }, { "100k", 91 } } };
+const std::array<ExportSize, 3> Sizes = { { { "22k", 43 }, { "100k", 91 }, { "1M", 289 } } };
 constexpr int CurveCount = 10;
 
 struct ExportScene

@@ -241,6 +241,13 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
 }
 } // namespace
 
+namespace
+{
+// leastSquaresConformalMap of a chart known to be a disk (parameterizeCharts checks every chart
+// once, before any is flattened).
+std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver solver);
+} // namespace
+
 std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver)
 {
   const std::string problem = chartTopologyProblem(chart);
@@ -248,6 +255,13 @@ std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSo
   {
     throw Error("the chart is not a disk: " + problem);
   }
+  return conformalMapOfDisk(chart, solver);
+}
+
+namespace
+{
+std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver solver)
+{
   const int n = chart.vertexCount();
   const std::vector<int>& loop = chart.boundaryLoops().front();
   const int pinA = farthestBoundaryVertex(chart, loop, farthestBoundaryVertex(chart, loop, loop.front()));
@@ -333,6 +347,8 @@ std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSo
   }
   return uv;
 }
+
+} // namespace
 
 FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
   const Vector2& t1, const Vector2& t2)
@@ -790,7 +806,7 @@ ChartParameterizationResult parameterizeCharts(
   std::vector<std::vector<Vector2>> chartUV(labels.size());
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
-    chartUV[c] = leastSquaresConformalMap(charts[c], options.solver);
+    chartUV[c] = conformalMapOfDisk(charts[c], options.solver);
     addSeams(charts[c], toChart[c], chartUV[c], summaries[c], options);
   }
   // Vertices copied by the cuts: the first copy keeps the split mesh's vertex, the others are
@@ -912,7 +928,33 @@ ChartParameterizationResult parameterizeCharts(
       p = p * result.texelScale + boxCorners[c];
     }
   }
-  result.overlappingChartPairs = countChartOverlaps(result.uv, split.triangles(), faceChart, options.overlapResolution);
+  // Only charts whose packed boxes intersect can overlap: the raster check runs on their
+  // triangles alone (none, when the packing kept every box apart).
+  std::vector<char> boxOverlaps(labels.size(), 0);
+  for (std::size_t a = 0; a < labels.size(); ++a)
+  {
+    for (std::size_t b = a + 1; b < labels.size(); ++b)
+    {
+      const Vector2 lowA = boxCorners[a], highA = boxCorners[a] + boxSizes[a] * result.texelScale;
+      const Vector2 lowB = boxCorners[b], highB = boxCorners[b] + boxSizes[b] * result.texelScale;
+      if (lowA.x() < highB.x() && lowB.x() < highA.x() && lowA.y() < highB.y() && lowB.y() < highA.y())
+      {
+        boxOverlaps[a] = boxOverlaps[b] = 1;
+      }
+    }
+  }
+  std::vector<Triangle> suspects;
+  std::vector<int> suspectCharts;
+  for (int f = 0; f < split.faceCount(); ++f)
+  {
+    if (boxOverlaps[static_cast<std::size_t>(faceChart[static_cast<std::size_t>(f)])])
+    {
+      suspects.push_back(split.triangle(f));
+      suspectCharts.push_back(faceChart[static_cast<std::size_t>(f)]);
+    }
+  }
+  result.overlappingChartPairs =
+    suspects.empty() ? 0 : countChartOverlaps(result.uv, suspects, suspectCharts, options.overlapResolution);
   return result;
 }
 
