@@ -74,6 +74,64 @@ vtkMTimeType vtkGeometrySeamCarving::GetMTime()
   return time;
 }
 
+namespace
+{
+// The handle transform's matrix; the identity without a transform.
+Eigen::Matrix4d handleMatrix(vtkLinearTransform* transform)
+{
+  Eigen::Matrix4d matrix = Eigen::Matrix4d::Identity();
+  if (transform)
+  {
+    vtkMatrix4x4* m = transform->GetMatrix();
+    for (int r = 0; r < 4; ++r)
+    {
+      for (int c = 0; c < 4; ++c)
+      {
+        matrix(r, c) = m->GetElement(r, c);
+      }
+    }
+  }
+  return matrix;
+}
+
+// The deformed surface with OriginalPointId, the region array (named as the input's; new points
+// are modeling points), RingSeam, Sector, and the session's counts as field data.
+void writeCarving(const kerf::SeamCarvingResult& result, const std::vector<double>& inputRegion, const char* regionName,
+  vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(result.points.size()));
+  for (std::size_t i = 0; i < result.points.size(); ++i)
+  {
+    points->SetPoint(static_cast<vtkIdType>(i), result.points[i].data());
+  }
+  vtkNew<vtkCellArray> triangles;
+  triangles->AllocateExact(static_cast<vtkIdType>(result.triangles.size()), 3 * static_cast<vtkIdType>(result.triangles.size()));
+  for (const kerf::Triangle& t : result.triangles)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    triangles->InsertNextCell(3, ids);
+  }
+  output->SetPoints(points);
+  output->SetPolys(triangles);
+  std::vector<double> region;
+  for (int origin : result.pointOrigin)
+  {
+    region.push_back(origin >= 0 ? inputRegion[static_cast<std::size_t>(origin)] : 1.0);
+  }
+  output->GetPointData()->AddArray(kerf::MakeIntArray("OriginalPointId", result.pointOrigin));
+  output->GetPointData()->AddArray(kerf::MakeArray(regionName, region));
+  output->GetCellData()->AddArray(kerf::MakeIntArray("RingSeam", result.faceRing));
+  output->GetCellData()->AddArray(kerf::MakeIntArray("Sector", result.faceSector));
+  output->GetCellData()->SetActiveScalars("RingSeam");
+  output->GetFieldData()->AddArray(kerf::MakeIntArray("SectorState", result.sectorState));
+  output->GetFieldData()->AddArray(kerf::MakeFieldValue("SplitSegments", static_cast<double>(result.splitSegments)));
+  output->GetFieldData()->AddArray(kerf::MakeFieldValue("CollapsedSegments", static_cast<double>(result.collapsedSegments)));
+  output->GetFieldData()->AddArray(kerf::MakeFieldValue("SkippedOperations", static_cast<double>(result.skippedOperations)));
+}
+} // namespace
+
 int vtkGeometrySeamCarving::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -91,32 +149,24 @@ int vtkGeometrySeamCarving::RequestData(
                         "Geometry Seams, first)");
     }
     const kerf::TriangleMesh& mesh = surface.Mesh();
-    const auto read = [&](int index, vtkIdType count, const char* what) {
+    // The arrays Geometry Seams writes; a message says to run it when one is missing or wrong.
+    const auto fromGeometrySeams = [](const char* what, const auto& readArray) {
       try
       {
-        return kerf::ReadInputArray(this, index, count, "the surface");
+        return readArray();
       }
       catch (const kerf::Error& e)
       {
         throw kerf::Error(std::string(e.what()) + " (the " + what + " array that Geometry Seams writes; run it first)");
       }
     };
+    const vtkIdType cells = input->GetNumberOfCells();
     kerf::SeamCarvingInput in;
     in.mesh = &mesh;
-    in.region = read(0, input->GetNumberOfPoints(), "region");
-    const std::vector<double> rings = read(1, input->GetNumberOfCells(), "ring seam");
-    const std::vector<double> sectors = read(2, input->GetNumberOfCells(), "sector");
-    in.faceCost = read(3, input->GetNumberOfCells(), "edge cost");
-    for (std::size_t f = 0; f < rings.size(); ++f)
-    {
-      if (!std::isfinite(rings[f]) || !std::isfinite(sectors[f]) || rings[f] != std::floor(rings[f]) ||
-        sectors[f] != std::floor(sectors[f]) || rings[f] < -1.0 || sectors[f] < -1.0 || rings[f] > 1e9 || sectors[f] > 1e9)
-      {
-        throw kerf::Error("cell " + std::to_string(f) + " has a ring or sector that is not an index (-1 or more)");
-      }
-      in.faceRing.push_back(static_cast<int>(rings[f]));
-      in.faceSector.push_back(static_cast<int>(sectors[f]));
-    }
+    in.region = fromGeometrySeams("region", [&] { return kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface"); });
+    in.faceRing = fromGeometrySeams("ring seam", [&] { return kerf::ReadTriangleLabels(this, 1, surface, cells, "the surface"); });
+    in.faceSector = fromGeometrySeams("sector", [&] { return kerf::ReadTriangleLabels(this, 2, surface, cells, "the surface"); });
+    in.faceCost = fromGeometrySeams("edge cost", [&] { return kerf::ReadInputArray(this, 3, cells, "the surface"); });
     in.normalConeAngle = surface.GetSurface().descriptors().normalConeAngle;
 
     kerf::SeamCarvingOptions options;
@@ -125,8 +175,8 @@ int vtkGeometrySeamCarving::RequestData(
     options.plastic = this->Plastic;
     const std::array<double, 3> optionKey{ { options.stiffnessScale, options.stiffnessEpsilon, options.plastic ? 1.0 : 0.0 } };
     std::vector<double> arrayKey = in.region;
-    arrayKey.insert(arrayKey.end(), rings.begin(), rings.end());
-    arrayKey.insert(arrayKey.end(), sectors.begin(), sectors.end());
+    arrayKey.insert(arrayKey.end(), in.faceRing.begin(), in.faceRing.end());
+    arrayKey.insert(arrayKey.end(), in.faceSector.begin(), in.faceSector.end());
     arrayKey.insert(arrayKey.end(), in.faceCost.begin(), in.faceCost.end());
     Internals& state = *this->State;
     if (!state.session || state.sessionSurface != surface.SharedSurface() || state.sessionOptions != optionKey ||
@@ -140,57 +190,9 @@ int vtkGeometrySeamCarving::RequestData(
     }
     this->UpdateProgress(0.2);
 
-    Eigen::Matrix4d matrix = Eigen::Matrix4d::Identity();
-    if (state.transform)
-    {
-      vtkMatrix4x4* m = state.transform->GetMatrix();
-      for (int r = 0; r < 4; ++r)
-      {
-        for (int c = 0; c < 4; ++c)
-        {
-          matrix(r, c) = m->GetElement(r, c);
-        }
-      }
-    }
-    const kerf::SeamCarvingResult& result = state.session->deform(matrix);
-
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(result.points.size()));
-    for (std::size_t i = 0; i < result.points.size(); ++i)
-    {
-      points->SetPoint(static_cast<vtkIdType>(i), result.points[i].data());
-    }
-    vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(static_cast<vtkIdType>(result.triangles.size()), 3 * static_cast<vtkIdType>(result.triangles.size()));
-    for (const kerf::Triangle& t : result.triangles)
-    {
-      const vtkIdType ids[3] = { t[0], t[1], t[2] };
-      triangles->InsertNextCell(3, ids);
-    }
-    output->SetPoints(points);
-    output->SetPolys(triangles);
-    std::vector<double> region;
-    for (int origin : result.pointOrigin)
-    {
-      region.push_back(origin >= 0 ? in.region[static_cast<std::size_t>(origin)] : 1.0);
-    }
+    const kerf::SeamCarvingResult& result = state.session->deform(handleMatrix(state.transform));
     vtkDataArray* regionArray = this->GetInputArrayToProcess(0, input);
-    output->GetPointData()->AddArray(kerf::MakeIntArray("OriginalPointId", result.pointOrigin));
-    output->GetPointData()->AddArray(kerf::MakeArray(regionArray && regionArray->GetName() ? regionArray->GetName() : "Region", region));
-    output->GetCellData()->AddArray(kerf::MakeIntArray("RingSeam", result.faceRing));
-    output->GetCellData()->AddArray(kerf::MakeIntArray("Sector", result.faceSector));
-    output->GetCellData()->SetActiveScalars("RingSeam");
-    vtkNew<vtkIntArray> sectorState;
-    sectorState->SetName("SectorState");
-    for (int count : result.sectorState)
-    {
-      sectorState->InsertNextValue(count);
-    }
-    output->GetFieldData()->AddArray(sectorState);
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SplitSegments", static_cast<double>(result.splitSegments)));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("CollapsedSegments", static_cast<double>(result.collapsedSegments)));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("SkippedOperations", static_cast<double>(result.skippedOperations)));
+    writeCarving(result, in.region, regionArray && regionArray->GetName() ? regionArray->GetName() : "Region", output);
   });
 }
 

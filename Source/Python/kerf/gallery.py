@@ -93,11 +93,26 @@ def coloured(mesh, array):
     return copy
 
 
+def add_label(renderer, name, x, y, orientation):
+    """A dark 16-point label centred at pixel (x, y), turned by `orientation` degrees."""
+    from vtkmodules.vtkRenderingCore import vtkActor2D, vtkTextMapper
+    text = vtkTextMapper()
+    text.SetInput(name)
+    text.GetTextProperty().SetFontSize(16)
+    text.GetTextProperty().SetColor(0.1, 0.1, 0.1)
+    text.GetTextProperty().SetOrientation(orientation)
+    text.GetTextProperty().SetJustificationToCentered()
+    label = vtkActor2D()
+    label.SetMapper(text)
+    label.SetPosition(x, y)
+    renderer.AddActor2D(label)
+
+
 def draw(rows, columns, pictures, path):
     """Draws pictures[r][c] = (mesh, array name) in a grid with the row and column names."""
     from vtkmodules.vtkIOImage import vtkPNGWriter
-    from vtkmodules.vtkRenderingCore import (vtkActor, vtkActor2D, vtkPolyDataMapper, vtkRenderer,
-                                             vtkRenderWindow, vtkTextMapper, vtkWindowToImageFilter)
+    from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer, vtkRenderWindow,
+                                             vtkWindowToImageFilter)
     import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the rendering back end)
     import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
     width = HEADER + CELL * len(columns)
@@ -128,26 +143,9 @@ def draw(rows, columns, pictures, path):
             camera_for(renderer, mesh)
             window.AddRenderer(renderer)
     for c, name in enumerate(columns):
-        text = vtkTextMapper()
-        text.SetInput(name)
-        text.GetTextProperty().SetFontSize(16)
-        text.GetTextProperty().SetColor(0.1, 0.1, 0.1)
-        text.GetTextProperty().SetJustificationToCentered()
-        label = vtkActor2D()
-        label.SetMapper(text)
-        label.SetPosition(HEADER + c * CELL + CELL // 2, height - HEADER + 7)
-        background.AddActor2D(label)
+        add_label(background, name, HEADER + c * CELL + CELL // 2, height - HEADER + 7, 0.0)
     for r, name in enumerate(rows):
-        text = vtkTextMapper()
-        text.SetInput(name)
-        text.GetTextProperty().SetFontSize(16)
-        text.GetTextProperty().SetColor(0.1, 0.1, 0.1)
-        text.GetTextProperty().SetOrientation(90.0)
-        text.GetTextProperty().SetJustificationToCentered()
-        label = vtkActor2D()
-        label.SetMapper(text)
-        label.SetPosition(HEADER - 8, height - HEADER - r * CELL - CELL // 2)
-        background.AddActor2D(label)
+        add_label(background, name, HEADER - 8, height - HEADER - r * CELL - CELL // 2, 90.0)
     window.Render()
     image = vtkWindowToImageFilter()
     image.SetInput(window)
