@@ -619,8 +619,13 @@ void addSeams(TriangleMesh& chart, std::vector<int>& toChart, std::vector<Vector
     int seams = 0;
     double seamLength = 0.0;
   };
-  State current{ chart, toChart, uv, {}, 0.0, 0, 0.0 };
-  current.score = seamScore(current.chart, current.uv, current.faceScore);
+  std::vector<double> faceScore;
+  const double score = seamScore(chart, uv, faceScore);
+  if (!(score > options.seamStretchTarget))
+  {
+    return; // nothing to cut, nothing copied
+  }
+  State current{ chart, toChart, uv, std::move(faceScore), score, 0, 0.0 };
   State best = current;
   while (current.seams < options.maximumSeams && current.score > options.seamStretchTarget)
   {
