@@ -16,7 +16,7 @@
  *   isoline nearest each stroke as its cut, and the segments all cuts bound together; scored
  *   against humans 1 to n-1, so the input human is never a reference. Parameters: weighting
  *   (cotangent, uniform, concavity, smooth-concavity; default cotangent), samples (4), offset
- *   (0.01 of the diagonal), spacing (0.03 of the diagonal), weight (soft-constraint weight, 1).
+ *   (0.005 of the diagonal), spacing (0.03 of the diagonal), weight (soft-constraint weight, 1).
  * - "region-growing" and "region-growing+snakes": Easy Mesh Cutting (Ji et al. 2006), each human
  *   in turn giving the input: one stroke per segment through its innermost faces
  *   (kerf::innermostStrokes), region growing under the isophotic metric, then `corrections`

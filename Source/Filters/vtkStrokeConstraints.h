@@ -8,7 +8,7 @@
  * stroke; ParaView shows them as an interactive polyline). Each stroke segment is resampled to
  * SamplesPerSegment points (N_S; default 4 as in the paper); each sample is projected onto the
  * surface and offset by +/- Offset (eps_C, a fraction of the bounding-box diagonal, default
- * 0.01 as in the paper) along the direction tangent to the surface and orthogonal to the
+ * 0.005, half the paper's 0.01) along the direction tangent to the surface and orthogonal to the
  * stroke; both points are projected again and get the values IsoValue + 1 (left of the stroke,
  * seen from outside) and IsoValue - 1. IsoValue is 0 for a new cut; to refine a cut at iso-value
  * I, set it to I (SeamCut, section 3).
@@ -44,7 +44,8 @@ public:
 
   ///@{
   /// Offset eps_C of the constraint points from the stroke, as a fraction of the surface's
-  /// bounding-box diagonal. Default 0.01.
+  /// bounding-box diagonal. Default 0.005 (half the paper's 0.01: measured closer to the
+  /// user's intent on the benchmark, see Documentation/filters/HarmonicCuts.md).
   vtkSetClampMacro(Offset, double, 1e-6, 0.5);
   vtkGetMacro(Offset, double);
   ///@}
@@ -82,7 +83,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int SamplesPerSegment = 4;
-  double Offset = 0.01;
+  double Offset = 0.005;
   double IsoValue = 0.0;
   double MaximumProjectionDistance = 0.05;
 

@@ -63,7 +63,7 @@ public:
 
   ///@{
   /// Offset of the constraint points from the stroke (eps_C), a fraction of the bounding-box
-  /// diagonal. Default 0.01.
+  /// diagonal. Default 0.005.
   vtkSetClampMacro(Offset, double, 1e-6, 0.5);
   vtkGetMacro(Offset, double);
   ///@}
@@ -103,7 +103,7 @@ protected:
   int Formulation = 1;
   double SoftConstraintWeight = 1.0;
   int SamplesPerSegment = 4;
-  double Offset = 0.01;
+  double Offset = 0.005;
   double IsoValue = 0.0;
   double MaximumProjectionDistance = 0.05;
 

@@ -72,7 +72,8 @@ int TestHarmonicCut(int, char*[])
   vtkPolyData* points = constraints->GetOutput();
   ok &= KERF_CHECK(points->GetNumberOfPoints() == 2 * 4 * 6);
   vtkDataArray* values = points->GetPointData()->GetArray("ConstraintValue");
-  const double offset = 0.01 * std::sqrt(2.0 * 2.0 + 2.0 * 2.0 + 4.0 * 4.0);
+  const double offset = constraints->GetOffset() * std::sqrt(2.0 * 2.0 + 2.0 * 2.0 + 4.0 * 4.0);
+  ok &= KERF_CHECK(constraints->GetOffset() == 0.005); // the default
   for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
   {
     // Pairs above and below the stroke, eps_C away along the cylinder.

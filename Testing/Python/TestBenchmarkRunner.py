@@ -104,14 +104,15 @@ class BenchmarkRunner(unittest.TestCase):
         rows = {int(r["Model"]): r for r in read_rows(os.path.join(out, "results.csv"))}
         humans = readme_human_rand_index()
         self.assertEqual(sorted(rows), sorted(humans))
-        # Over psb-dev, every human in turn as the input: mean fidelity 0.0040, the worst model
-        # 0.035 (a bird whose human drew four segments of 1 to 47 faces, smaller than the strokes'
-        # constraint offset), the input's number of segments reproduced in 94% of the runs.
+        # Over psb-dev, every human in turn as the input: mean fidelity 0.0029 (the goal: at most
+        # 0.003), the worst model 0.034 (a bird whose human drew four segments of 1 to 47 faces,
+        # smaller than the strokes' constraint offset), the input's number of segments reproduced
+        # in 98.3% of the runs (the goal: 95%).
         fidelities = [float(r["Fidelity"]) for r in rows.values()]
-        self.assertLess(sum(fidelities) / len(fidelities), 0.005)
+        self.assertLessEqual(sum(fidelities) / len(fidelities), 0.003)
         self.assertLess(max(fidelities), 0.05)
         matched = [float(r["InputSegmentsMatched"]) for r in rows.values()]
-        self.assertGreater(sum(matched) / len(matched), 0.90)
+        self.assertGreaterEqual(sum(matched) / len(matched), 0.95)
         for model in (36, 125, 342):
             row = rows[model]
             segs = len([f for f in os.listdir(os.path.join(DATA, "seg", str(model))) if f.endswith(".seg")])

@@ -155,11 +155,12 @@ class HarmonicCutTest(unittest.TestCase):
         self.assertEqual(int((values == 1.0).sum()), expected // 2)
         numpy.testing.assert_array_equal(sides, numpy.sign(values))
         self.assertEqual(field_data_value(constraints, "IsoValue"), 0.0)
-        # Each pair sits on both sides of the stroke, about eps_C = 1% of the diagonal from it.
+        # Each pair sits on both sides of the stroke, about eps_C = 0.5% of the diagonal (the
+        # default offset) from it.
         pairs = points_of(constraints).reshape(-1, 2, 3)
         gaps = numpy.linalg.norm(pairs[:, 0] - pairs[:, 1], axis=1)
-        self.assertTrue(numpy.all(gaps > 0.01 * self.diagonal))
-        self.assertTrue(numpy.all(gaps < 0.03 * self.diagonal))
+        self.assertTrue(numpy.all(gaps > 0.005 * self.diagonal))
+        self.assertTrue(numpy.all(gaps < 0.015 * self.diagonal))
 
     def test_first_solve_factors(self):
         self.assertEqual(self.pipeline.solver_work(), "factorization")

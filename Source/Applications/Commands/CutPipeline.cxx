@@ -37,7 +37,7 @@ void CutPipeline::Run(vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& a
   this->constraints->SetInputConnection(this->descriptors->GetOutputPort());
   this->constraints->SetInputData(1, stroke);
   this->constraints->SetSamplesPerSegment(args.integer("samples", 4, 1, 1000));
-  this->constraints->SetOffset(args.number("offset", 0.01, 1e-6, 0.5));
+  this->constraints->SetOffset(args.number("offset", 0.005, 1e-6, 0.5));
   this->constraints->SetIsoValue(args.number("iso-value", 0.0, -1e15, 1e15));
   timed(this->constraints, "stroke constraints");
   this->field->SetInputConnection(this->descriptors->GetOutputPort());

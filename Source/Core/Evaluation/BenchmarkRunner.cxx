@@ -268,7 +268,7 @@ MethodOutput segmentWithHarmonicCuts(
   const double diagonal = mesh.boundingBoxDiagonal();
   StrokeOptions strokeOptions;
   strokeOptions.samplesPerSegment = static_cast<int>(parameters.positive("samples", 4));
-  strokeOptions.offset = parameters.positive("offset", 0.01) * diagonal;
+  strokeOptions.offset = parameters.positive("offset", 0.005) * diagonal;
   strokeOptions.maximumDistance = 0.05 * diagonal;
   const double spacing = parameters.positive("spacing", 0.03) * diagonal;
   const double support = parameters.positive("support", 3.0) * strokeOptions.offset;
