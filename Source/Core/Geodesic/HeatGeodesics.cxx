@@ -5,6 +5,7 @@
 #include "Error.h"
 #include "Geodesic/IntrinsicTriangulation.h"
 #include "Harmonic/FieldGradient.h"
+#include "Harmonic/SerialOpenMP.h"
 #include "Session/Surface.h"
 
 #include <Eigen/SparseCore>
@@ -81,8 +82,12 @@ public:
 #ifdef KERF_HAVE_CHOLMOD
     cholmod_sparse view = this->view(lower);
     cholmod_factor* factor = this->Factors[index];
-    if (!cholmod_factorize(&view, factor, &this->Common) || this->Common.status != CHOLMOD_OK ||
-      factor->minor < factor->n)
+    bool factored = false;
+    {
+      const SerialOpenMP serial;
+      factored = cholmod_factorize(&view, factor, &this->Common) != 0;
+    }
+    if (!factored || this->Common.status != CHOLMOD_OK || factor->minor < factor->n)
     {
       throw Error("the heat-method matrices could not be factored (not positive definite)");
     }

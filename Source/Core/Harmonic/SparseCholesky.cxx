@@ -2,6 +2,7 @@
 #include "Harmonic/SparseCholesky.h"
 
 #include "Error.h"
+#include "Harmonic/SerialOpenMP.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +13,6 @@
 
 #ifdef KERF_HAVE_CHOLMOD
 #include <cholmod.h>
-#include <dlfcn.h>
 #else
 #include <Eigen/SparseCholesky>
 #endif
@@ -185,39 +185,6 @@ void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys
   }
 }
 
-// CHOLMOD's supernodal factorization runs a few memory copies in OpenMP parallel regions with a
-// fixed team size. On small machines their synchronisation costs more than it saves (a
-// 100k-triangle factorization takes twice as long on two cores), so while one is alive the
-// OpenMP runtime CHOLMOD loaded, if any, runs parallel regions on the calling thread. The
-// factor is the same either way.
-class SerialOpenMP
-{
-public:
-  SerialOpenMP()
-    : Get(reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels")))
-    , Set(reinterpret_cast<void (*)(int)>(dlsym(RTLD_DEFAULT, "omp_set_max_active_levels")))
-  {
-    if (this->Get && this->Set)
-    {
-      this->Previous = this->Get();
-      this->Set(0);
-    }
-  }
-  ~SerialOpenMP()
-  {
-    if (this->Get && this->Set)
-    {
-      this->Set(this->Previous);
-    }
-  }
-  SerialOpenMP(const SerialOpenMP&) = delete;
-  SerialOpenMP& operator=(const SerialOpenMP&) = delete;
-
-private:
-  int (*Get)() = nullptr;
-  void (*Set)(int) = nullptr;
-  int Previous = 1;
-};
 
 // Resets workspace entries to -1 when it goes out of scope, exceptions included.
 class Marks
