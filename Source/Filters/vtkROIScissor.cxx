@@ -65,7 +65,9 @@ int vtkROIScissor::RequestData(
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::ClickDistances& distances = this->State->surface.SessionFor(this->State->clickDistances);
     const double diagonal = distances.surface().mesh().boundingBoxDiagonal();
-    const double radius = kerf::RelativeDistance(this->Radius, diagonal, "Radius");
+    const double radius = kerf::Finite(this->AbsoluteRadius, "AbsoluteRadius") > 0.0
+      ? this->AbsoluteRadius
+      : kerf::RelativeDistance(this->Radius, diagonal, "Radius");
 
     std::vector<kerf::RoiClick> clicks, subtracted;
     vtkPointSet* clickInput = vtkPointSet::GetData(inputVector[1], 0);
@@ -148,6 +150,7 @@ void vtkROIScissor::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ClickPoint: " << this->ClickPoint[0] << " " << this->ClickPoint[1] << " " << this->ClickPoint[2]
      << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
+  os << indent << "AbsoluteRadius: " << this->AbsoluteRadius << "\n";
   os << indent << "InnerFraction: " << this->InnerFraction << "\n";
   os << indent << "IsolineCount: " << this->IsolineCount << "\n";
   os << indent << "SegmentFraction: " << this->SegmentFraction << "\n";

@@ -65,6 +65,14 @@ public:
   ///@}
 
   ///@{
+  /// Geodesic radius of each click's disc in the input's units; when positive it replaces Radius
+  /// (clicks' own radii stay fractions of the diagonal). ParaView sets it with the sphere widget
+  /// centred on the click. Default 0 (Radius is used).
+  vtkSetClampMacro(AbsoluteRadius, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(AbsoluteRadius, double);
+  ///@}
+
+  ///@{
   /// Vertices nearer than this fraction of r to a click get the value 1. Default 0.1.
   vtkSetClampMacro(InnerFraction, double, 1e-3, 0.9);
   vtkGetMacro(InnerFraction, double);
@@ -125,6 +133,7 @@ protected:
 
   double ClickPoint[3] = { 0.0, 0.0, 0.0 };
   double Radius = 0.25;
+  double AbsoluteRadius = 0.0;
   double InnerFraction = 0.1;
   int IsolineCount = 50;
   double SegmentFraction = 0.1;

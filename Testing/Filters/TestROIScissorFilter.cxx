@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -114,6 +115,29 @@ int TestROIScissorFilter(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
   ok &= KERF_CHECK(fieldValue(roi->GetOutput(), "ClickDistanceFields") == 1.0);
   ok &= KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
+
+  // The radius in the input's units (ParaView's sphere widget) gives the same output as the
+  // same radius as a fraction of the diagonal, field for field; a NaN is refused.
+  roi->SetRadius(0.5);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  vtkNew<vtkPolyData> byFraction;
+  byFraction->DeepCopy(roi->GetOutput());
+  roi->SetRadius(0.9);
+  roi->SetAbsoluteRadius(0.5 * mesh.boundingBoxDiagonal());
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
+  ok &= KERF_CHECK(labelsOf(roi->GetOutput()) == labels);
+  vtkDataArray* field = roi->GetOutput()->GetPointData()->GetArray("RoiField");
+  vtkDataArray* fractionField = byFraction->GetPointData()->GetArray("RoiField");
+  bool sameField = field && fractionField && field->GetNumberOfTuples() == fractionField->GetNumberOfTuples();
+  for (vtkIdType v = 0; sameField && v < field->GetNumberOfTuples(); ++v)
+  {
+    const double a = field->GetComponent(v, 0), b = fractionField->GetComponent(v, 0);
+    sameField = (std::isnan(a) && std::isnan(b)) || a == b;
+  }
+  ok &= KERF_CHECK(sameField);
+  roi->SetAbsoluteRadius(std::numeric_limits<double>::quiet_NaN());
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).find("AbsoluteRadius must be a number") != std::string::npos);
+  roi->SetAbsoluteRadius(0.0);
 
   // The click as input 1 gives the same region as the Click Point.
   roi->SetRadius(0.5);

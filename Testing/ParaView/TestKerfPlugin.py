@@ -298,7 +298,9 @@ class KerfPluginTest(unittest.TestCase):
         camel.UpdatePipeline()
         points = vtk_to_numpy(servermanager.Fetch(camel).GetPoints().GetData())
         hoof = points[points[:, 1].argmin()]
-        roi = simple.ROIScissor(Input=camel, ClickPoint=list(map(float, hoof)), Radius=0.2)
+        bounds = camel.GetDataInformation().GetBounds()
+        diagonal = sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
+        roi = simple.ROIScissor(Input=camel, ClickPoint=list(map(float, hoof)), DiscRadius=0.2 * diagonal)
         roi.UpdatePipeline()
         region = vtk_to_numpy(servermanager.Fetch(roi).GetCellData().GetArray("RoiRegion"))
         self.assertEqual(len(region), 19536)
