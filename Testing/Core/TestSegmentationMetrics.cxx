@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -63,6 +64,29 @@ TEST(GraphDistance, GridDistancesAreEdgePathLengths)
   EXPECT_DOUBLE_EQ(d[24], 4.0 * std::sqrt(2.0)); // along the diagonals
   EXPECT_DOUBLE_EQ(d[5 * 4 + 2], std::sqrt(2.0) * 2.0 + 2.0); // (2, 4): two diagonals, two up
   EXPECT_THROW(edgeGraphDistances(grid, { 99 }), Error);
+}
+
+TEST(GraphDistance, LoweringEqualsTheMinimumOfFullSearches)
+{
+  // Farthest-point sampling's update: each new source lowers the distances in place, bit for bit
+  // the minimum of the old values and a full search from the new source, and visits less.
+  const TriangleMesh sphere = makeIcosphere(1.0, 4);
+  std::vector<double> lowered = edgeGraphDistances(sphere, { 0 });
+  std::vector<double> minimum = lowered;
+  for (int source : { 2000, 517, 1999, 0, 2561 })
+  {
+    lowerEdgeGraphDistances(sphere, source, lowered);
+    const std::vector<double> full = edgeGraphDistances(sphere, { source });
+    for (int v = 0; v < sphere.vertexCount(); ++v)
+    {
+      minimum[v] = std::min(minimum[v], full[v]);
+    }
+    EXPECT_EQ(lowered, minimum) << "after source " << source;
+  }
+  EXPECT_EQ(lowered, edgeGraphDistances(sphere, { 0, 2000, 517, 1999, 2561 }));
+  EXPECT_THROW(lowerEdgeGraphDistances(sphere, -1, lowered), Error);
+  std::vector<double> tooShort(3, 0.0);
+  EXPECT_THROW(lowerEdgeGraphDistances(sphere, 0, tooShort), Error);
 }
 
 TEST(SegmentationMetrics, IdenticalSegmentationsScoreZero)

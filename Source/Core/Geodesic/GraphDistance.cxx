@@ -11,24 +11,14 @@
 namespace kerf
 {
 
-std::vector<double> edgeGraphDistances(const TriangleMesh& mesh, const std::vector<int>& sources)
+namespace
 {
-  const double infinity = std::numeric_limits<double>::infinity();
-  std::vector<double> distance(mesh.vertexCount(), infinity);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
-  for (int s : sources)
-  {
-    if (s < 0 || s >= mesh.vertexCount())
-    {
-      throw Error("source vertex " + std::to_string(s) + " is not a vertex of the mesh");
-    }
-    if (distance[s] != 0.0)
-    {
-      distance[s] = 0.0;
-      queue.emplace(0.0, s);
-    }
-  }
+using Entry = std::pair<double, int>;
+using MinimumQueue = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+
+// Dijkstra from the entries already queued, relaxing only where a value gets smaller.
+void relax(const TriangleMesh& mesh, MinimumQueue& queue, std::vector<double>& distance)
+{
   while (!queue.empty())
   {
     const auto [d, v] = queue.top();
@@ -48,7 +38,51 @@ std::vector<double> edgeGraphDistances(const TriangleMesh& mesh, const std::vect
       }
     }
   }
+}
+
+void checkSource(const TriangleMesh& mesh, int s)
+{
+  if (s < 0 || s >= mesh.vertexCount())
+  {
+    throw Error("source vertex " + std::to_string(s) + " is not a vertex of the mesh");
+  }
+}
+} // namespace
+
+std::vector<double> edgeGraphDistances(const TriangleMesh& mesh, const std::vector<int>& sources)
+{
+  std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
+  MinimumQueue queue;
+  for (int s : sources)
+  {
+    checkSource(mesh, s);
+    if (distance[s] != 0.0)
+    {
+      distance[s] = 0.0;
+      queue.emplace(0.0, s);
+    }
+  }
+  relax(mesh, queue, distance);
   return distance;
+}
+
+void lowerEdgeGraphDistances(const TriangleMesh& mesh, int source, std::vector<double>& distance)
+{
+  checkSource(mesh, source);
+  if (distance.size() != static_cast<std::size_t>(mesh.vertexCount()))
+  {
+    throw Error("the distances to lower need one value per vertex");
+  }
+  // A vertex whose value the new source cannot lower is not expanded: every path through it is
+  // at least as long from the new source as from the old ones (the old values satisfy
+  // distance[w] <= distance[v] + |vw| as rounded, and rounding is monotonic).
+  MinimumQueue queue;
+  if (distance[source] != 0.0)
+  {
+    distance[source] = 0.0;
+    queue.emplace(0.0, source);
+  }
+  relax(mesh, queue, distance);
 }
 
 } // namespace kerf

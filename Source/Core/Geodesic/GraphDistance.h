@@ -16,4 +16,11 @@ namespace kerf
 /// broken by vertex index, so the result is deterministic.
 std::vector<double> edgeGraphDistances(const TriangleMesh& mesh, const std::vector<int>& sources);
 
+/// Adds `source` to the sources of `distance` (one value per vertex, from edgeGraphDistances or
+/// an earlier call): lowers each value to the vertex's distance from `source` where that is
+/// smaller. The search stops at vertices whose value it cannot lower, so it costs the region the
+/// new source takes over, not the mesh; the result equals the element-wise minimum of `distance`
+/// and edgeGraphDistances(mesh, {source}) bit for bit.
+void lowerEdgeGraphDistances(const TriangleMesh& mesh, int source, std::vector<double>& distance);
+
 } // namespace kerf
