@@ -7,6 +7,7 @@
 //   BM_HeatSetup/<size>          kerf::HeatGeodesics: intrinsic Delaunay flips, one AMD analysis,
 //                                two numeric factorizations
 //   BM_HeatSetupMetis/<size>     the same with METIS ordering
+//   BM_HeatSetupGeometric/<size> the same with the geometric nested dissection
 //   BM_HeatSource/<size>         one new source vertex (distance and face gradients)
 //   BM_VTKDijkstraPath/<size>    vtkDijkstraGraphGeodesicPath, one path between two vertices on a
 //                                new filter (its graph built each time), for reference; counter
@@ -365,6 +366,7 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
   std::vector<std::pair<std::string, Body>> benchmarks = {
     { "BM_HeatSetup", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::AMD); } },
     { "BM_HeatSetupMetis", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::METIS); } },
+    { "BM_HeatSetupGeometric", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::Geometric); } },
     { "BM_HeatSource", heatSource },
     { "BM_VTKDijkstraPath", vtkDijkstraPath },
     { "BM_GeodesicPolylineFirst", geodesicPathFirst },

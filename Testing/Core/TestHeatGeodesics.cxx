@@ -95,6 +95,34 @@ TEST(HeatGeodesics, SphereMatchesGreatCircleDistance)
   EXPECT_LE(e.maximum, 0.03);
 }
 
+TEST(HeatGeodesics, EveryOrderingGivesTheSameDistances)
+{
+  // The orderings change the factor's fill, not the solution: distances equal to round-off.
+  // Automatic is AMD on this sphere (below GeometricOrderingRows vertices).
+  const TriangleMesh sphere = makeIcosphere(1.0, 4);
+  GeodesicSource from;
+  from.vertices = { 3 };
+  HeatGeodesicOptions options;
+  options.ordering = CholeskyOrdering::AMD;
+  const std::vector<double> reference = HeatGeodesics(sphere, options).compute(from).distance;
+  for (CholeskyOrdering ordering : { CholeskyOrdering::Automatic, CholeskyOrdering::METIS, CholeskyOrdering::Geometric })
+  {
+    options.ordering = ordering;
+    const std::vector<double> distance = HeatGeodesics(sphere, options).compute(from).distance;
+    ASSERT_EQ(distance.size(), reference.size());
+    double worst = 0.0;
+    for (std::size_t v = 0; v < distance.size(); ++v)
+    {
+      worst = std::max(worst, std::abs(distance[v] - reference[v]));
+    }
+    EXPECT_LE(worst, 1e-12) << "ordering " << static_cast<int>(ordering);
+    if (ordering == CholeskyOrdering::Automatic)
+    {
+      EXPECT_EQ(distance, reference);
+    }
+  }
+}
+
 TEST(HeatGeodesics, PointInsideAFaceMatchesGreatCircleDistance)
 {
   const TriangleMesh& sphere = unitSphere();

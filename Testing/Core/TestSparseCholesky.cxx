@@ -1,9 +1,13 @@
 // Sparse Cholesky against dense references for both orderings and every low-rank route; results
 // that do not depend on earlier calls or on the order of the low-rank columns.
 #include "Error.h"
+#include "Harmonic/NestedDissection.h"
 #include "Harmonic/SparseCholesky.h"
+#include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
 
 #include <numeric>
 
@@ -348,4 +352,81 @@ TEST(SparseCholesky, OrderingsAndLowRankRoutesAgree)
     EXPECT_TRUE(bitwiseEqual(again.gram, afresh.gram));
     EXPECT_TRUE(bitwiseEqual(cholesky.apply(again, s), fresh.apply(afresh, s)));
   }
+}
+
+namespace
+{
+// The lower triangle of a mesh's vertex adjacency plus a dominant diagonal.
+Eigen::SparseMatrix<double> meshSystem(const TriangleMesh& mesh)
+{
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const std::array<int, 2>& ev = mesh.edgeVertices(e);
+    entries.emplace_back(std::max(ev[0], ev[1]), std::min(ev[0], ev[1]), -1.0);
+  }
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    entries.emplace_back(v, v, 12.0);
+  }
+  Eigen::SparseMatrix<double> A(mesh.vertexCount(), mesh.vertexCount());
+  A.setFromTriplets(entries.begin(), entries.end());
+  A.makeCompressed();
+  return A;
+}
+} // namespace
+
+TEST(NestedDissection, IsADeterministicDissectingPermutation)
+{
+  const TriangleMesh sphere = makeIcosphere(1.0, 4); // 2,562 vertices
+  const Eigen::SparseMatrix<double> A = meshSystem(sphere);
+  const std::vector<int> perm = geometricNestedDissection(sphere.points(), A, 16);
+  std::vector<int> sorted = perm;
+  std::sort(sorted.begin(), sorted.end());
+  for (int k = 0; k < sphere.vertexCount(); ++k)
+  {
+    ASSERT_EQ(sorted[k], k);
+  }
+  EXPECT_EQ(perm, geometricNestedDissection(sphere.points(), A, 16));
+  // One dissection (halves no larger than the leaf size): the rows come as three increasing
+  // runs, two halves and their separator, and no edge joins the two halves.
+  const int n = sphere.vertexCount();
+  const std::vector<int> once = geometricNestedDissection(sphere.points(), A, n - 1);
+  std::vector<int> runStarts{ 0 };
+  for (int k = 1; k < n; ++k)
+  {
+    if (once[k] < once[k - 1])
+    {
+      runStarts.push_back(k);
+    }
+  }
+  ASSERT_EQ(runStarts.size(), 3u);
+  std::vector<int> run(n);
+  for (int r = 0; r < 3; ++r)
+  {
+    const int end = r + 1 < 3 ? runStarts[r + 1] : n;
+    for (int k = runStarts[r]; k < end; ++k)
+    {
+      run[once[k]] = r;
+    }
+  }
+  const int separator = n - runStarts[2];
+  RecordProperty("TopSeparator", std::to_string(separator));
+  EXPECT_GT(separator, 0);
+  EXPECT_LT(separator, n / 10); // about a great circle: 2 pi / (edge length 0.08) = 80 rows
+  for (int e = 0; e < sphere.edgeCount(); ++e)
+  {
+    const std::array<int, 2>& ev = sphere.edgeVertices(e);
+    EXPECT_FALSE(run[ev[0]] + run[ev[1]] == 1) << "edge " << e << " joins the two halves";
+  }
+  // The factor is sparser than with AMD on a closed surface (flops are halved at 1M triangles).
+  SparseCholesky given, amd;
+  ASSERT_TRUE(given.factor(A, perm));
+  ASSERT_TRUE(amd.factor(A, SparseCholesky::Ordering::AMD));
+  RecordProperty("GeometricFactorNonZeros", std::to_string(given.factorNonZeros()));
+  RecordProperty("AMDFactorNonZeros", std::to_string(amd.factorNonZeros()));
+  EXPECT_LE(given.factorNonZeros(), amd.factorNonZeros() * 11 / 10);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  EXPECT_LE((given.solve(b) - amd.solve(b)).norm(), 1e-12 * b.norm());
+  EXPECT_THROW(geometricNestedDissection(std::vector<Vector3>(3), A), Error);
 }

@@ -5,6 +5,7 @@
 #include "Error.h"
 #include "Geodesic/IntrinsicTriangulation.h"
 #include "Harmonic/FieldGradient.h"
+#include "Harmonic/NestedDissection.h"
 #include "Harmonic/SerialOpenMP.h"
 #include "Session/Surface.h"
 
@@ -33,15 +34,29 @@ using SparseMatrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 class SharedPatternCholesky
 {
 public:
-  SharedPatternCholesky(const SparseMatrix& lowerPattern, CholeskyOrdering ordering, int count)
+  /// `points`: one per row, for the geometric ordering.
+  SharedPatternCholesky(
+    const SparseMatrix& lowerPattern, CholeskyOrdering ordering, int count, const std::vector<Vector3>& points)
   {
 #ifdef KERF_HAVE_CHOLMOD
     cholmod_start(&this->Common);
+    if (ordering == CholeskyOrdering::Automatic)
+    {
+      ordering = lowerPattern.rows() >= GeometricOrderingRows ? CholeskyOrdering::Geometric : CholeskyOrdering::AMD;
+    }
     this->Common.nmethods = 1;
-    this->Common.method[0].ordering = ordering == CholeskyOrdering::METIS ? CHOLMOD_METIS : CHOLMOD_AMD;
+    this->Common.method[0].ordering = ordering == CholeskyOrdering::METIS ? CHOLMOD_METIS
+      : ordering == CholeskyOrdering::Geometric                          ? CHOLMOD_GIVEN
+                                                                         : CHOLMOD_AMD;
     this->Common.postorder = 1;
     cholmod_sparse view = this->view(lowerPattern);
-    cholmod_factor* symbolic = cholmod_analyze(&view, &this->Common);
+    std::vector<int> given;
+    if (ordering == CholeskyOrdering::Geometric)
+    {
+      given = geometricNestedDissection(points, lowerPattern, getenv("KERF_LEAF") ? atoi(getenv("KERF_LEAF")) : 64);
+    }
+    cholmod_factor* symbolic = given.empty() ? cholmod_analyze(&view, &this->Common)
+                                             : cholmod_analyze_p(&view, given.data(), nullptr, 0, &this->Common);
     if (!symbolic || this->Common.status < CHOLMOD_OK)
     {
       if (symbolic)
@@ -52,6 +67,7 @@ public:
       throw Error("the sparse Cholesky analysis of the heat-method matrices failed");
     }
     this->Factors.push_back(symbolic);
+    if (getenv("KERF_STATS")) fprintf(stderr, "n %d lnz %g fl %g nsuper %d\n", (int)symbolic->n, this->Common.lnz, this->Common.fl, (int)symbolic->nsuper);
     for (int i = 1; i < count; ++i)
     {
       this->Factors.push_back(cholmod_copy_factor(symbolic, &this->Common));
@@ -59,6 +75,7 @@ public:
 #else
     (void)lowerPattern;
     (void)ordering;
+    (void)points;
     this->Factors.resize(count);
 #endif
   }
@@ -181,8 +198,9 @@ struct HeatGeodesics::Implementation
 std::string cacheKey(const HeatGeodesicOptions& options)
 {
   static const char* const boundaries[] = { "neumann", "dirichlet", "mean" };
+  static const char* const orderings[] = { "automatic", "amd", "metis", "geometric" };
   return "t=" + cacheKey(options.timeFactor) + " boundary=" + boundaries[static_cast<int>(options.boundary)] +
-    " ordering=" + (options.ordering == CholeskyOrdering::AMD ? "amd" : "metis");
+    " ordering=" + orderings[static_cast<int>(options.ordering)];
 }
 
 HeatGeodesics::HeatGeodesics(const TriangleMesh& mesh, const HeatGeodesicOptions& options)
@@ -289,7 +307,7 @@ HeatGeodesics::HeatGeodesics(const TriangleMesh& mesh, const HeatGeodesicOptions
   laplacian.setFromTriplets(entries.begin(), entries.end());
   laplacian.makeCompressed();
 
-  m.cholesky = std::make_unique<SharedPatternCholesky>(laplacian, options.ordering, m.dirichlet ? 3 : 2);
+  m.cholesky = std::make_unique<SharedPatternCholesky>(laplacian, options.ordering, m.dirichlet ? 3 : 2, mesh.points());
 
   std::vector<char> pinned(m.componentCount, 0);
   SparseMatrix heat = laplacian;

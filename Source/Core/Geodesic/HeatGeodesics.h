@@ -16,11 +16,16 @@ class Surface;
 /// The fill-reducing ordering of the sparse Cholesky factorizations.
 enum class CholeskyOrdering
 {
-  /// Approximate minimum degree: cheap to compute; the faster set-up on one core up to a million
-  /// triangles (Documentation/filters/Geodesics.md has the figures).
+  /// Geometric from GeometricOrderingRows vertices (a million triangles), AMD below.
+  Automatic,
+  /// Approximate minimum degree: cheap to compute; the faster set-up on one core below about
+  /// 50k vertices (Documentation/filters/Geodesics.md has the figures).
   AMD,
-  /// Nested dissection (METIS): less fill, so cheaper solves, but a costlier analysis.
-  METIS
+  /// Nested dissection (METIS): the least fill, but the costliest analysis.
+  METIS,
+  /// Nested dissection by coordinate bisection of the vertices (geometricNestedDissection):
+  /// between AMD's and METIS's fill, its analysis about AMD's.
+  Geometric
 };
 
 /// How the heat flow treats the mesh boundary (Crane et al. 2013, boundary conditions).
@@ -36,7 +41,7 @@ struct HeatGeodesicOptions
   /// The time step is t = timeFactor * h^2, h the mean edge length (Crane et al. 2013: m = 1).
   double timeFactor = 1.0;
   HeatBoundaryCondition boundary = HeatBoundaryCondition::Mean;
-  CholeskyOrdering ordering = CholeskyOrdering::AMD;
+  CholeskyOrdering ordering = CholeskyOrdering::Automatic;
 };
 
 /// A key naming these options (HeatGeodesics::of caches by it).

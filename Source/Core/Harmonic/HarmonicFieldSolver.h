@@ -84,7 +84,8 @@ std::vector<double> clampToConstraintRange(const std::vector<double>& field, con
 /// - LeastSquares (SeamCut, Eq. 1): f minimises ||L_F f||^2 + w^2 sum_i (C_i f - c_i)^2 over the
 ///   free values, L_F the Laplacian rows of the free vertices: (L_F^T L_F + w^2 C_F^T C_F) f_F =
 ///   -L_F^T L_FD f_D + w^2 C_F^T (c - C_D f_D).
-/// The first term is factored once per surface, weighting and hard set (AMD ordering); the
+/// The first term is factored once per surface, weighting and hard set (AMD ordering, or
+/// geometricNestedDissection from geometricOrderingRows() free vertices); the
 /// constraint term is the low-rank correction U U^T, applied through the Woodbury identity
 /// (SparseCholesky::prepare/apply), so new strokes cost a sparse forward solve over the strokes'
 /// elimination-tree reach and a k x k solve, and new values only the k x k solve and one
@@ -107,6 +108,11 @@ public:
   /// Forgets the cached factorization.
   void reset();
 
+  /// From this many free vertices the factored term is ordered by geometricNestedDissection
+  /// instead of AMD. Default GeometricOrderingRows; applies from the next factorization.
+  void setGeometricOrderingRows(int rows) { this->GeometricRows = rows; }
+  int geometricOrderingRows() const { return this->GeometricRows; }
+
   /// Past this many soft constraints (or more than half the unknowns), the constraint term is
   /// factored together with the Laplacian term instead of through the Woodbury identity, whose
   /// dense k x k capacitance matrix grows as k^3.
@@ -118,6 +124,7 @@ public:
   static constexpr double PointValueStiffness = 1e3;
 
 private:
+  int GeometricRows;
   struct Problem;
   struct Cache;
   // The steps of solve(), in order.
