@@ -424,7 +424,7 @@ double largestCorrection(const TriangleMesh& chart)
   return largest;
 }
 
-TEST(LinearABF, DevelopableChartsNeedNoCorrectionAndUnrollWithoutDistortion)
+TEST(LinearABFCharts, DevelopableChartsNeedNoCorrectionAndUnrollWithoutDistortion)
 {
   const TriangleMesh cylinder = makeSlitCylinder(1.0, 2.0, 48, 12);
   const TriangleMesh cone = makeConeSector(0.5, 0.4, 1.6, 1.5 * M_PI, 10, 40);
@@ -507,7 +507,7 @@ double meanAngleError(const ChartParameterizationResult& result)
   return total / (3.0 * mesh.faceCount());
 }
 
-TEST(LinearABF, AnglesMeetTheTriangleAndVertexSums)
+TEST(LinearABFCharts, AnglesMeetTheTriangleAndVertexSums)
 {
   const TriangleMesh chart = hemisphere();
   const LinearABFAngles angles = linearAngleBasedAngles(chart);
@@ -546,7 +546,7 @@ TEST(LinearABF, AnglesMeetTheTriangleAndVertexSums)
   EXPECT_LT(wheel, 5e-4);
 }
 
-TEST(LinearABF, HemisphereHasLessAngleDistortionThanLSCM)
+TEST(LinearABFCharts, HemisphereHasLessAngleDistortionThanLSCM)
 {
   const TriangleMesh chart = hemisphere();
   const ChartParameterizationResult conformal = parameterizeCharts(chart, oneLabel(chart));
@@ -572,7 +572,7 @@ TEST(LinearABF, HemisphereHasLessAngleDistortionThanLSCM)
   EXPECT_LT(angular.distortion.surfaceStretch, conformal.distortion.surfaceStretch);
 }
 
-TEST(LinearABF, IsDeterministic)
+TEST(LinearABFCharts, IsDeterministic)
 {
   const TriangleMesh sphere = makeIcosphere(1.0, 3);
   const std::vector<int> labels = octantLabels(sphere);
@@ -587,7 +587,7 @@ TEST(LinearABF, IsDeterministic)
   EXPECT_EQ(first.overlappingChartPairs, 0);
 }
 
-TEST(LinearABF, SeamsAndCutsWorkWithEitherMethod)
+TEST(LinearABFCharts, SeamsAndCutsWorkWithEitherMethod)
 {
   // One closed chart with five fingers: cut into a disk, then seams where the map is worst.
   // Measured (5,120 triangles): LSCM L2 stretch 533 without seams, 3.83 after 3 seams (2
@@ -619,7 +619,7 @@ TEST(LinearABF, SeamsAndCutsWorkWithEitherMethod)
   EXPECT_LT(seamedStretch[1], seamedStretch[0]);
 }
 
-TEST(LinearABF, RefusesWhatIsNotADisk)
+TEST(LinearABFCharts, RefusesWhatIsNotADisk)
 {
   const TriangleMesh sphere = makeIcosphere(1.0, 2);
   EXPECT_THROW(linearAngleBasedFlattening(sphere), Error);
