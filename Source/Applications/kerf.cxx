@@ -36,15 +36,17 @@ const Command Commands[] = {
     "--soft-weight W (1)." },
   { "unwrap",
     "kerf unwrap MESH --curves CURVES [-o OUT.obj] [--png OUT.png] [--seams N] [--mode M] [--margin F]\n"
-    "            [--checker N] [--refuse-non-disks]",
+    "            [--method lscm|linabf] [--checker N] [--refuse-non-disks]",
     "Cuts MESH open along curves on it (cuts from kerf cut or kerf showcase, seams; points on the\n"
     "surface) and gives every chart texture coordinates (a UV atlas): the curves become mesh edges\n"
     "(--mode scissor|snap|inverse-snap, default scissor: triangles split along the exact curves),\n"
-    "the charts they bound are flattened by least-squares conformal maps and packed into the unit\n"
-    "square (--margin F of its side between charts, default 0.01). A chart that is not a disk\n"
-    "(closed, several boundary loops, handles) is cut into one along short paths, or refused with\n"
-    "--refuse-non-disks. --seams N adds up to N seams to each chart where its map is worst (from\n"
-    "the tip of a protrusion to the border), until its L2 stretch is 1.2 (default 10; 0 for none).\n"
+    "the charts they bound are flattened (--method lscm, least-squares conformal maps, the default\n"
+    "and the faster; or linabf, linear angle based flattening, less distortion on strongly curved\n"
+    "charts at about twice the time) and packed into the unit square (--margin F of its side\n"
+    "between charts, default 0.01). A chart that is not a disk (closed, several boundary loops,\n"
+    "handles) is cut into one along short paths, or refused with --refuse-non-disks. --seams N\n"
+    "adds up to N seams to each chart where its map is worst (from the tip of a protrusion to the\n"
+    "border), until its L2 stretch is 1.2 (default 10; 0 for none).\n"
     "Writes the cut mesh with its texture coordinates (-o; OBJ as vt, also .ply .vtp .vtk) and/or a\n"
     "picture (--png): the mesh with a checkerboard texture of N squares per side (--checker,\n"
     "default 24) beside the UV layout coloured by stretch; prints the charts' stretch, shear,\n"

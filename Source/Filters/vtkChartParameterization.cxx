@@ -178,6 +178,7 @@ int vtkChartParameterization::RequestData(vtkInformation*, vtkInformationVector*
       this->State->surface, input->GetNumberOfCells(), "the surface's chart labels");
 
     kerf::ChartParameterizationOptions options;
+    options.method = this->Method == LINABF ? kerf::ChartMethod::LinABF : kerf::ChartMethod::LSCM;
     options.margin = this->Margin;
     options.cutToDisks = this->CutToDisks;
     options.maximumSeams = this->MaximumSeams;
@@ -195,6 +196,7 @@ int vtkChartParameterization::RequestData(vtkInformation*, vtkInformationVector*
 void vtkChartParameterization::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "Method: " << (this->Method == LINABF ? "LinABF" : "LSCM") << "\n";
   os << indent << "Margin: " << this->Margin << "\n";
   os << indent << "CutToDisks: " << this->CutToDisks << "\n";
   os << indent << "MaximumSeams: " << this->MaximumSeams << "\n";

@@ -1,7 +1,8 @@
 /**
  * @class vtkChartParameterization
  * @brief Texture coordinates for a surface cut into charts: each chart flattened by least-squares
- * conformal maps (Levy et al. 2002) and packed into the unit square.
+ * conformal maps (Levy et al. 2002) or linear angle based flattening (LinABF, Zayer, Levy and
+ * Seidel 2007) and packed into the unit square.
  *
  * Input: a triangle surface (polygons are triangulated) with a per-cell label array, selected with
  * SetInputArrayToProcess (default the cell array "Chart"; "Segment" of the segmentation filters
@@ -9,7 +10,9 @@
  * disk (closed, with several boundary loops, or with handles) is cut into one when CutToDisks is
  * on (the default; kerf::cutToDisk: handles cut along short loops, boundary loops joined by
  * shortest paths, a closed sphere-like chart opened along the shortest path between two
- * vertices far apart); with it off such charts are refused.
+ * vertices far apart); with it off such charts are refused. Method chooses how each chart is
+ * flattened: LSCM (the default, the faster) or LINABF (angles first, then positions; less
+ * distortion where a chart is strongly curved, about twice the time).
  *
  * Output 0: the surface cut open along the chart borders (a point is duplicated for each chart
  * that uses it), with the point arrays TextureCoordinatesName (default "UV", the texture
@@ -47,6 +50,22 @@ public:
   static vtkChartParameterization* New();
   vtkTypeMacro(vtkChartParameterization, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum FlatteningMethod
+  {
+    LSCM = 0,
+    LINABF = 1
+  };
+
+  ///@{
+  /// How each chart is flattened: LSCM (0), least-squares conformal maps, or LINABF (1), linear
+  /// angle based flattening (kerf::linearAngleBasedFlattening). Default LSCM, the faster (timings
+  /// and distortion in Documentation/filters/ChartParameterization.md).
+  vtkSetClampMacro(Method, int, LSCM, LINABF);
+  vtkGetMacro(Method, int);
+  void SetMethodToLSCM() { this->SetMethod(LSCM); }
+  void SetMethodToLinABF() { this->SetMethod(LINABF); }
+  ///@}
 
   ///@{
   /// Gap between charts, and between a chart and the border of the unit square, as a fraction of
@@ -91,6 +110,7 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
+  int Method = LSCM;
   double Margin = 0.01;
   bool CutToDisks = true;
   int MaximumSeams = 10;

@@ -161,6 +161,17 @@ class CommandLine(unittest.TestCase):
         self.assertLess(worst, 1e-5)
         self.assertEqual(read_back.GetNumberOfTuples(), len(uvs))
 
+    def test_unwrap_flattens_with_linabf_on_request(self):
+        obj = os.path.join(self.folder, "camel-linabf.obj")
+        result = self.unwrap_camel("-o", obj, "--method", "linabf")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("2 charts (0 cut into disks", result.stdout)
+        self.assertIn("0 overlapping chart pairs", result.stdout)
+        self.assertTrue(os.path.exists(obj))
+        result = self.unwrap_camel("-o", obj, "--method", "abf")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--method must be lscm or linabf, got 'abf'", result.stderr)
+
     def test_unwrap_cuts_charts_into_disks_or_refuses_them(self):
         # An open curve over two camel vertices separates nothing: the one chart is the closed
         # camel, cut into a disk (and given seams) by default, refused with --refuse-non-disks.

@@ -1,15 +1,18 @@
-// Benchmarks of kerf::parameterizeCharts (split, LSCM per chart, distortion, packing, overlap count) with each solver.
+// Benchmarks of kerf::parameterizeCharts (split, LSCM or LinABF per chart, distortion, packing, overlap count) with each solver.
 //
 // The surfaces are the benchmarks' cube dumbbells (BenchmarkMeshes.h) of 22,188, 99,372 and
 // 1,002,252 triangles (1M with the default solver only), cut into 12 charts: each of the six cube faces it is made from (2 cells^2
 // consecutive triangles, row by row) cut in two halves of rows, each a disk.
-//   BM_ChartParameterization/<size>/<solver>   the whole of parameterizeCharts, one thread,
-//                                               with CHOLMOD or Eigen's SimplicialLDLT
+//   BM_ChartParameterization/<size>/<solver>   the whole of parameterizeCharts with LSCM, one
+//                                               thread, with CHOLMOD or Eigen's SimplicialLDLT
+//   BM_ChartParameterization/<size>/LinABF     the same with LinABF (its angle system, then the
+//                                               reconstruction with the default ComplexLDLT)
 //   BM_ChartSeams/<size>                       one closed chart, a sphere with five fingers
 //                                               (kerf::makeProtrusions, 20,480 and 81,920
 //                                               triangles): cut into a disk (cutToDisk), then up
 //                                               to 10 seams added where the map is worst, each
 //                                               followed by a new LSCM solve (ComplexLDLT)
+//   BM_ChartSeams/<size>/LinABF                the same with LinABF
 // The reference is libigl's igl::lscm, about 475 ms at 100k triangles on this machine (not
 // installed here, so not run beside).
 #include "BenchmarkMeshes.h"
@@ -50,13 +53,14 @@ const ChartScene& chartScene(int cells)
   return found->second;
 }
 
-void chartParameterization(benchmark::State& state, int cells, kerf::ChartSolver solver)
+void chartParameterization(benchmark::State& state, int cells, kerf::ChartMethod method, kerf::ChartSolver solver)
 {
   kerf::ChartParameterizationResult result;
   kerf::benchmarks::RunOnScene(
     state, [&]() -> const ChartScene& { return chartScene(cells); },
     [&](benchmark::State& s, const ChartScene& scene) {
       kerf::ChartParameterizationOptions options;
+      options.method = method;
       options.solver = solver;
       for (auto _ : s)
       {
@@ -90,13 +94,14 @@ const kerf::TriangleMesh& fingers(int levels)
   return found->second;
 }
 
-void chartSeams(benchmark::State& state, int levels)
+void chartSeams(benchmark::State& state, int levels, kerf::ChartMethod method)
 {
   kerf::ChartParameterizationResult result;
   kerf::benchmarks::RunOnScene(
     state, [&]() -> const kerf::TriangleMesh& { return fingers(levels); },
     [&](benchmark::State& s, const kerf::TriangleMesh& mesh) {
       kerf::ChartParameterizationOptions options;
+      options.method = method;
       options.maximumSeams = 10;
       const std::vector<int> labels(static_cast<std::size_t>(mesh.faceCount()), 0);
       for (auto _ : s)
@@ -128,19 +133,26 @@ namespace benchmarks
 void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
 {
   const std::pair<const char*, int> sizes[] = { { "22k", 43 }, { "100k", 91 }, { "1M", 289 } };
-  const std::pair<const char*, ChartSolver> solvers[] = { { "ComplexLDLT", ChartSolver::ComplexLDLT },
-    { "RealCHOLMOD", ChartSolver::RealCHOLMOD }, { "RealLDLT", ChartSolver::RealLDLT } };
+  struct Variant
+  {
+    const char* name;
+    ChartMethod method;
+    ChartSolver solver;
+  };
+  const Variant variants[] = { { "ComplexLDLT", ChartMethod::LSCM, ChartSolver::ComplexLDLT },
+    { "RealCHOLMOD", ChartMethod::LSCM, ChartSolver::RealCHOLMOD }, { "RealLDLT", ChartMethod::LSCM, ChartSolver::RealLDLT },
+    { "LinABF", ChartMethod::LinABF, ChartSolver::ComplexLDLT } };
   for (const auto& [label, cells] : sizes)
   {
-    for (const auto& [solverName, solver] : solvers)
+    for (const Variant& variant : variants)
     {
-      if (cells > 100 && solver != ChartSolver::ComplexLDLT)
+      if (cells > 100 && variant.solver != ChartSolver::ComplexLDLT)
       {
-        continue; // at 1M the default only
+        continue; // at 1M the default solver only, with either method
       }
-      const std::string name = std::string("BM_ChartParameterization/") + label + "/" + solverName;
-      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
-        name.c_str(), [cells = cells, solver = solver](benchmark::State& state) { chartParameterization(state, cells, solver); });
+      const std::string name = std::string("BM_ChartParameterization/") + label + "/" + variant.name;
+      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(name.c_str(),
+        [cells = cells, variant](benchmark::State& state) { chartParameterization(state, cells, variant.method, variant.solver); });
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {
@@ -150,13 +162,16 @@ void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
   }
   for (const auto& [label, levels] : { std::pair<const char*, int>{ "20k", 5 }, std::pair<const char*, int>{ "82k", 6 } })
   {
-    const std::string name = std::string("BM_ChartSeams/") + label;
-    benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
-      name.c_str(), [levels = levels](benchmark::State& state) { chartSeams(state, levels); });
-    registered->Unit(benchmark::kMillisecond)->UseRealTime();
-    if (useSizeMinimumTimes)
+    for (ChartMethod method : { ChartMethod::LSCM, ChartMethod::LinABF })
     {
-      registered->MinTime(1.0);
+      const std::string name = std::string("BM_ChartSeams/") + label + (method == ChartMethod::LinABF ? "/LinABF" : "");
+      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
+        name.c_str(), [levels = levels, method](benchmark::State& state) { chartSeams(state, levels, method); });
+      registered->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (useSizeMinimumTimes)
+      {
+        registered->MinTime(1.0);
+      }
     }
   }
 }

@@ -1,4 +1,4 @@
-// vtkChartParameterization as a VTK filter: the Core's texture coordinates, the arrays, the layout, the errors, the input untouched.
+// vtkChartParameterization as a VTK filter: the Core's texture coordinates with either method (LSCM, LinABF), the arrays, the layout, the errors, the input untouched.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "Parameterization/ChartParameterization.h"
@@ -14,6 +14,7 @@
 #include <vtkPolyData.h>
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace
@@ -38,7 +39,12 @@ double fieldValue(vtkPolyData* data, const char* name)
   return array ? array->GetTuple1(0) : std::nan("");
 }
 
-bool developableCylinder()
+kerf::ChartMethod coreMethod(int method)
+{
+  return method == vtkChartParameterization::LINABF ? kerf::ChartMethod::LinABF : kerf::ChartMethod::LSCM;
+}
+
+bool developableCylinder(int method)
 {
   bool ok = true;
   const kerf::TriangleMesh cylinder = kerf::makeSlitCylinder(1.0, 2.0, 32, 8);
@@ -46,6 +52,7 @@ bool developableCylinder()
   const vtkMTimeType inputTime = input->GetMTime();
   vtkNew<vtkChartParameterization> filter;
   filter->SetInputData(input);
+  filter->SetMethod(method);
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
   vtkPolyData* output = filter->GetOutput(0);
   vtkDataArray* uv = output->GetPointData()->GetTCoords();
@@ -69,7 +76,7 @@ bool developableCylinder()
   return ok;
 }
 
-bool segmentsMatchTheCore()
+bool segmentsMatchTheCore(int method)
 {
   bool ok = true;
   const kerf::TriangleMesh sphere = kerf::makeIcosphere(1.0, 3);
@@ -79,9 +86,11 @@ bool segmentsMatchTheCore()
   filter->SetInputData(input);
   filter->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Segment");
   filter->SetMargin(0.03);
+  filter->SetMethod(method);
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
   kerf::ChartParameterizationOptions options;
   options.margin = 0.03;
+  options.method = coreMethod(method);
   const kerf::ChartParameterizationResult core = kerf::parameterizeCharts(sphere, labels, options);
   vtkPolyData* output = filter->GetOutput(0);
   vtkPolyData* layout = filter->GetOutput(1);
@@ -103,6 +112,35 @@ bool segmentsMatchTheCore()
   ok &= KERF_CHECK(output->GetCellData()->GetArray("Segment") != nullptr);
   vtkDataArray* perChart = vtkDataArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("ChartMeanStretch"));
   ok &= KERF_CHECK(perChart && perChart->GetNumberOfTuples() == 8 && perChart->GetTuple1(3) == core.charts[3].distortion.meanStretch);
+  ok &= KERF_CHECK(fieldValue(output, "FlippedFaces") == 0 && fieldValue(output, "OverlappingChartPairs") == 0);
+  return ok;
+}
+
+// The method: LSCM by default, clamped to the two methods, and a LinABF map that differs from LSCM's.
+bool methodProperty()
+{
+  bool ok = true;
+  vtkNew<vtkChartParameterization> filter;
+  ok &= KERF_CHECK(filter->GetMethod() == vtkChartParameterization::LSCM);
+  filter->SetMethodToLinABF();
+  ok &= KERF_CHECK(filter->GetMethod() == vtkChartParameterization::LINABF);
+  filter->SetMethod(7);
+  ok &= KERF_CHECK(filter->GetMethod() == vtkChartParameterization::LINABF);
+  filter->SetMethodToLSCM();
+  ok &= KERF_CHECK(filter->GetMethod() == vtkChartParameterization::LSCM);
+  std::ostringstream printed;
+  filter->SetMethodToLinABF();
+  filter->Print(printed);
+  ok &= KERF_CHECK(printed.str().find("Method: LinABF") != std::string::npos);
+  // On the octants of a sphere the two maps differ, and LinABF's worst shear is the lower.
+  const kerf::TriangleMesh sphere = kerf::makeIcosphere(1.0, 3);
+  filter->SetInputData(labelled(sphere, kerf::octantLabels(sphere), "Chart"));
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
+  const double angularShear = fieldValue(filter->GetOutput(0), "MaxShear");
+  filter->SetMethodToLSCM();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
+  const double conformalShear = fieldValue(filter->GetOutput(0), "MaxShear");
+  ok &= KERF_CHECK(angularShear != conformalShear && angularShear < conformalShear);
   return ok;
 }
 
@@ -124,20 +162,24 @@ bool errors()
       "no one-component cell array named 'Chart'" },
     { labelled(sphere, std::vector<int>(static_cast<std::size_t>(sphere.faceCount()), -3), "Chart"), "not a label" },
   };
-  for (const Case& c : cases)
+  for (int method : { vtkChartParameterization::LSCM, vtkChartParameterization::LINABF })
   {
-    vtkNew<vtkChartParameterization> filter;
-    filter->SetInputData(c.input);
-    filter->CutToDisksOff();
-    const vtkMTimeType inputTime = c.input->GetMTime();
-    const std::string error = kerf::test::UpdateAndCaptureError(filter);
-    ok &= KERF_CHECK(error.find(c.expected) != std::string::npos);
-    if (error.find(c.expected) == std::string::npos)
+    for (const Case& c : cases)
     {
-      std::cerr << "expected '" << c.expected << "' in: " << error << "\n";
+      vtkNew<vtkChartParameterization> filter;
+      filter->SetInputData(c.input);
+      filter->SetMethod(method);
+      filter->CutToDisksOff();
+      const vtkMTimeType inputTime = c.input->GetMTime();
+      const std::string error = kerf::test::UpdateAndCaptureError(filter);
+      ok &= KERF_CHECK(error.find(c.expected) != std::string::npos);
+      if (error.find(c.expected) == std::string::npos)
+      {
+        std::cerr << "expected '" << c.expected << "' in: " << error << "\n";
+      }
+      ok &= KERF_CHECK(filter->GetOutput(0)->GetNumberOfPoints() == 0 && filter->GetOutput(1)->GetNumberOfPoints() == 0);
+      ok &= KERF_CHECK(c.input->GetMTime() == inputTime && c.input->GetPointData()->GetNumberOfArrays() == 0);
     }
-    ok &= KERF_CHECK(filter->GetOutput(0)->GetNumberOfPoints() == 0 && filter->GetOutput(1)->GetNumberOfPoints() == 0);
-    ok &= KERF_CHECK(c.input->GetMTime() == inputTime && c.input->GetPointData()->GetNumberOfArrays() == 0);
   }
   return ok;
 }
@@ -177,8 +219,13 @@ bool torusCutIntoADisk()
 
 int TestChartParameterizationFilter(int, char*[])
 {
-  bool ok = developableCylinder();
-  ok &= segmentsMatchTheCore();
+  bool ok = true;
+  for (int method : { vtkChartParameterization::LSCM, vtkChartParameterization::LINABF })
+  {
+    ok &= developableCylinder(method);
+    ok &= segmentsMatchTheCore(method);
+  }
+  ok &= methodProperty();
   ok &= errors();
   ok &= torusCutIntoADisk();
   return ok ? 0 : 1;

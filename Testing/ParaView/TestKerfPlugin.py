@@ -131,6 +131,25 @@ class KerfPluginTest(unittest.TestCase):
                 self.assertEqual(read.shape, uv.shape)
                 self.assertLess(abs(read - uv).max(), 1e-6)
 
+    def test_chart_parameterization_flattens_with_either_method(self):
+        """Method: LSCM by default, LinABF on request, both giving the camel cut at the neck a
+        packed atlas without overlapping charts."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        cut = simple.StrokeCut(Input=camel)
+        export = simple.CurveExport(Input=camel, Curves=simple.OutputPort(cut, 1))
+        atlas = simple.ChartParameterization(Input=export)
+        self.assertEqual(atlas.Method, "LSCM")
+        fields = {}
+        for method in ("LSCM", "LinABF"):
+            atlas.Method = method
+            atlas.UpdatePipeline()
+            fields[method] = servermanager.Fetch(atlas).GetFieldData()
+            self.assertEqual(fields[method].GetArray("ChartCount").GetValue(0), 2)
+            self.assertEqual(fields[method].GetArray("OverlappingChartPairs").GetValue(0), 0)
+        self.assertNotEqual(fields["LSCM"].GetArray("MeanShear").GetValue(0),
+                            fields["LinABF"].GetArray("MeanShear").GetValue(0))
+
     def test_point_filters_apply_at_once(self):
         """A first-time user adds Geodesic Distance, Geodesic Seam (on Stroke Cut's cut), ROI
         Scissor or Geodesic Polyline to the camel and presses Apply: their points start at the input's

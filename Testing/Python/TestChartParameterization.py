@@ -1,4 +1,4 @@
-# kerf.vtkChartParameterization from Python: a plane cut into two charts unrolls exactly into the unit square.
+# kerf.vtkChartParameterization from Python: a plane cut into two charts unrolls exactly into the unit square, with LSCM and with LinABF.
 import unittest
 
 import numpy
@@ -66,6 +66,28 @@ class ChartParameterizationTest(unittest.TestCase):
         self.assertEqual(numpy.abs(points[:, 2]).max(), 0.0)
         uv = vtk_to_numpy(self.surface.GetPointData().GetTCoords())
         self.assertTrue(numpy.array_equal(points[:, :2], uv))
+
+    def test_linear_angle_based_flattening(self):
+        """LinABF (Method 1) unrolls the plane exactly too, into the same square."""
+        atlas = kerf.vtkChartParameterization()
+        self.assertEqual(atlas.GetMethod(), kerf.vtkChartParameterization.LSCM)
+        atlas.SetMethodToLinABF()
+        self.assertEqual(atlas.GetMethod(), kerf.vtkChartParameterization.LINABF)
+        atlas.SetInputData(self.input)
+        atlas.SetInputArrayToProcess(0, 0, 0, vtkDataObject.FIELD_ASSOCIATION_CELLS, "Segment")
+        atlas.SetMargin(MARGIN)
+        self.assertEqual(atlas.GetExecutive().Update(), 1)
+        surface = atlas.GetOutput(0)
+        for name in ("Stretch", "Shear"):
+            values = vtk_to_numpy(surface.GetCellData().GetArray(name))
+            self.assertLess(numpy.abs(values - 1.0).max(), 1e-9, name)
+        self.assertEqual(vtk_to_numpy(surface.GetCellData().GetArray("Flipped")).sum(), 0)
+        uv = vtk_to_numpy(surface.GetPointData().GetTCoords())
+        self.assertGreaterEqual(uv.min(), MARGIN - 1e-12)
+        self.assertLessEqual(uv.max(), 1.0 - MARGIN + 1e-12)
+        # A plane's charts are the same rectangles with either method: the same layout.
+        lscm = vtk_to_numpy(self.surface.GetPointData().GetTCoords())
+        self.assertLess(numpy.abs(uv - lscm).max(), 1e-5)
 
     def test_original_point_ids(self):
         ids = vtk_to_numpy(self.surface.GetPointData().GetArray("OriginalPointId"))

@@ -37,6 +37,19 @@ int exportMode(const std::string& name)
   throw CommandError{ "--mode must be scissor, snap or inverse-snap, got '" + name + "'" };
 }
 
+int flatteningMethod(const std::string& name)
+{
+  if (name == "lscm")
+  {
+    return vtkChartParameterization::LSCM;
+  }
+  if (name == "linabf")
+  {
+    return vtkChartParameterization::LINABF;
+  }
+  throw CommandError{ "--method must be lscm or linabf, got '" + name + "'" };
+}
+
 double fieldValue(vtkPolyData* data, const char* name)
 {
   vtkDataArray* array = data->GetFieldData()->GetArray(name);
@@ -71,6 +84,7 @@ int RunUnwrap(const Arguments& args)
     throw CommandError{ "unwrap needs -o OUT.obj and/or --png OUT.png (nothing would be written)" };
   }
   const int mode = exportMode(args.get("mode", "scissor"));
+  const int method = flatteningMethod(args.get("method", "lscm"));
   const double margin = args.number("margin", 0.01, 0.0, 0.25);
   const int squares = args.integer("checker", 24, 1, 512);
   const int seams = args.integer("seams", 10, 0, 1000);
@@ -93,6 +107,7 @@ int RunUnwrap(const Arguments& args)
   const double exportTime = MillisecondsSince(stage);
   vtkNew<vtkChartParameterization> atlas;
   atlas->SetInputConnection(cut->GetOutputPort(0));
+  atlas->SetMethod(method);
   atlas->SetMargin(margin);
   atlas->SetMaximumSeams(seams);
   atlas->SetCutToDisks(!args.has("refuse-non-disks"));

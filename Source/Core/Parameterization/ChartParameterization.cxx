@@ -1,15 +1,17 @@
-// parameterizeCharts: split, disk check, LSCM, distortion, minimal boxes, shelf packing, overlap count.
+// parameterizeCharts: split, disk check, LSCM or LinABF, distortion, minimal boxes, shelf packing, overlap count.
 #include "Parameterization/ChartParameterization.h"
 
 #include "Error.h"
 #include "Harmonic/SparseCholesky.h"
 #include "Mesh/MeshValidation.h"
 #include "Parameterization/CutToDisk.h"
+#include "Parameterization/LinearABF.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -27,10 +29,27 @@ double cross2(const Vector2& a, const Vector2& b)
   return a.x() * b.y() - a.y() * b.x();
 }
 
+// The cotangent of each triangle corner's 3D angle, corner k of triangle f at 3 f + k.
+std::vector<double> cornerCotangents(const TriangleMesh& chart)
+{
+  std::vector<double> cotangents(3 * static_cast<std::size_t>(chart.faceCount()));
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vector3 a = chart.point(t[static_cast<std::size_t>((k + 1) % 3)]) - chart.point(t[static_cast<std::size_t>(k)]);
+      const Vector3 b = chart.point(t[static_cast<std::size_t>((k + 2) % 3)]) - chart.point(t[static_cast<std::size_t>(k)]);
+      cotangents[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)] = a.dot(b) / a.cross(b).norm();
+    }
+  }
+  return cotangents;
+}
+
 // Calls edge(i, j, w) for each triangle's edge i-j with its share w = cot(angle opposite) / 2 of
-// the cotangent Laplacian's weight.
+// the cotangent Laplacian's weight, the cotangents given per corner (cornerCotangents).
 template <typename EdgeFunction>
-void forEachCotangentWeight(const TriangleMesh& chart, EdgeFunction edge)
+void forEachCotangentWeight(const TriangleMesh& chart, const std::vector<double>& cotangents, EdgeFunction edge)
 {
   for (int f = 0; f < chart.faceCount(); ++f)
   {
@@ -39,9 +58,7 @@ void forEachCotangentWeight(const TriangleMesh& chart, EdgeFunction edge)
     {
       const int i = t[static_cast<std::size_t>((k + 1) % 3)];
       const int j = t[static_cast<std::size_t>((k + 2) % 3)];
-      const Vector3 a = chart.point(i) - chart.point(t[static_cast<std::size_t>(k)]);
-      const Vector3 b = chart.point(j) - chart.point(t[static_cast<std::size_t>(k)]);
-      edge(i, j, 0.5 * a.dot(b) / a.cross(b).norm());
+      edge(i, j, 0.5 * cotangents[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)]);
     }
   }
 }
@@ -177,7 +194,8 @@ namespace
 // The conformal energy as the Hermitian form z^H H z / 2 in z = u + i v: H = L - i C, L the
 // cotangent Laplacian and C the antisymmetric boundary term of the real form, so H has the
 // Laplacian's pattern and half the real form's unknowns.
-std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::vector<int>& loop, int pinA, int pinB, double pinDistance)
+std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::vector<double>& cotangents,
+  const std::vector<int>& loop, int pinA, int pinB, double pinDistance)
 {
   using Complex = std::complex<double>;
   const int n = chart.vertexCount();
@@ -212,7 +230,7 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
       rhs[fb] -= std::conj(value) * pinned[static_cast<std::size_t>(a)];
     }
   };
-  forEachCotangentWeight(chart, [&](int i, int j, double weight) {
+  forEachCotangentWeight(chart, cotangents, [&](int i, int j, double weight) {
     add(i, i, weight);
     add(j, j, weight);
     add(i, j, -weight);
@@ -243,24 +261,38 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
 
 namespace
 {
-// leastSquaresConformalMap of a chart known to be a disk (parameterizeCharts checks every chart
-// once, before any is flattened).
-std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver solver);
-} // namespace
+// leastSquaresConformalMap or linearAngleBasedFlattening of a chart known to be a disk
+// (parameterizeCharts checks every chart once, before any is flattened).
+std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, ChartSolver solver);
 
-std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver)
+void requireDisk(const TriangleMesh& chart)
 {
   const std::string problem = chartTopologyProblem(chart);
   if (!problem.empty())
   {
     throw Error("the chart is not a disk: " + problem);
   }
-  return conformalMapOfDisk(chart, solver);
+}
+} // namespace
+
+std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver)
+{
+  requireDisk(chart);
+  return flattenDisk(chart, ChartMethod::LSCM, solver);
+}
+
+std::vector<Vector2> linearAngleBasedFlattening(const TriangleMesh& chart, ChartSolver solver)
+{
+  requireDisk(chart);
+  return flattenDisk(chart, ChartMethod::LinABF, solver);
 }
 
 namespace
 {
-std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver solver)
+// The conformal energy E_D - A with the cotangent weights of `cotangents` (per corner) minimised
+// with the two boundary vertices farthest apart pinned: LSCM with the 3D angles' cotangents, the
+// angle-based reconstruction with LinABF's.
+std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, const std::vector<double>& cotangents, ChartSolver solver)
 {
   const int n = chart.vertexCount();
   const std::vector<int>& loop = chart.boundaryLoops().front();
@@ -269,7 +301,7 @@ std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver s
   const double pinDistance = (chart.point(pinA) - chart.point(pinB)).norm();
   if (solver == ChartSolver::ComplexLDLT)
   {
-    std::vector<Vector2> uv = complexConformalMap(chart, loop, pinA, pinB, pinDistance);
+    std::vector<Vector2> uv = complexConformalMap(chart, cotangents, loop, pinA, pinB, pinDistance);
     for (std::size_t v = 0; v < uv.size(); ++v)
     {
       if (!uv[v].allFinite())
@@ -315,7 +347,7 @@ std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver s
     }
   };
   // Dirichlet energy: the cotangent Laplacian on u and on v.
-  forEachCotangentWeight(chart, [&](int i, int j, double weight) {
+  forEachCotangentWeight(chart, cotangents, [&](int i, int j, double weight) {
     for (int c = 0; c < 2; ++c)
     {
       add(2 * i + c, 2 * i + c, weight);
@@ -346,6 +378,43 @@ std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, ChartSolver s
     }
   }
   return uv;
+}
+
+// LinABF's smallest angle passed to the reconstruction. Its linearised wheel condition can leave
+// a corner of a very distorted chart at or below zero, where a triangle with those angles does
+// not exist: such a corner is raised to this and its triangle's three angles scaled to sum pi.
+constexpr double MinimumReconstructionAngle = 1e-6;
+
+std::vector<double> reconstructionCotangents(const TriangleMesh& chart)
+{
+  const LinearABFAngles angles = linearAngleBasedAngles(chart);
+  std::vector<double> cotangents(angles.angles.size());
+  for (std::size_t c = 0; c < cotangents.size(); c += 3)
+  {
+    std::array<double, 3> alpha = { { angles.angles[c], angles.angles[c + 1], angles.angles[c + 2] } };
+    if (std::min({ alpha[0], alpha[1], alpha[2] }) < MinimumReconstructionAngle)
+    {
+      for (double& a : alpha)
+      {
+        a = std::max(a, MinimumReconstructionAngle);
+      }
+      const double scale = M_PI / (alpha[0] + alpha[1] + alpha[2]);
+      for (double& a : alpha)
+      {
+        a *= scale;
+      }
+    }
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      cotangents[c + k] = 1.0 / std::tan(alpha[k]);
+    }
+  }
+  return cotangents;
+}
+
+std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, ChartSolver solver)
+{
+  return conformalMapOfDisk(chart, method == ChartMethod::LinABF ? reconstructionCotangents(chart) : cornerCotangents(chart), solver);
 }
 
 } // namespace
@@ -665,7 +734,8 @@ void addSeams(TriangleMesh& chart, std::vector<int>& toChart, std::vector<Vector
     EdgeCut cut = splitAlongEdges(current.chart, flags);
     try
     {
-      current.uv = leastSquaresConformalMap(cut.mesh, options.solver);
+      requireDisk(cut.mesh);
+      current.uv = flattenDisk(cut.mesh, options.method, options.solver);
     }
     catch (const Error&)
     {
@@ -811,7 +881,7 @@ ChartParameterizationResult parameterizeCharts(
   std::vector<std::vector<Vector2>> chartUV(labels.size());
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
-    chartUV[c] = conformalMapOfDisk(charts[c], options.solver);
+    chartUV[c] = flattenDisk(charts[c], options.method, options.solver);
     addSeams(charts[c], toChart[c], chartUV[c], summaries[c], options);
   }
   // Vertices copied by the cuts: the first copy keeps the split mesh's vertex, the others are

@@ -1,4 +1,4 @@
-// Texture coordinates for a surface cut into charts: LSCM per chart, distortion, packing into the unit square.
+// Texture coordinates for a surface cut into charts: LSCM or LinABF per chart, distortion, packing into the unit square.
 #pragma once
 
 #include "Mesh/SplitAlongFaceLabels.h"
@@ -14,7 +14,18 @@ namespace kerf
 
 using Vector2 = Eigen::Vector2d;
 
-/// How the LSCM system is solved (both exact; timings in Documentation/filters/ChartParameterization.md).
+/// How each chart is flattened (timings and distortion in Documentation/filters/ChartParameterization.md).
+enum class ChartMethod
+{
+  /// Least-squares conformal map (leastSquaresConformalMap): one sparse solve per chart.
+  LSCM,
+  /// Linear angle based flattening (linearAngleBasedFlattening): the angles of LinABF, then the
+  /// same least-squares solve with those angles.
+  LinABF
+};
+
+/// How the least-squares system of the positions (LSCM's, and LinABF's reconstruction) is solved
+/// (all exact; timings in Documentation/filters/ChartParameterization.md).
 enum class ChartSolver
 {
   /// The energy as a Hermitian form in z = u + i v: n complex unknowns with the Laplacian's
@@ -32,6 +43,9 @@ struct ChartParameterizationOptions
   /// Gap left between charts and between a chart and the border of the unit square, as a
   /// fraction of the square's side, in [0, 0.25]. Default 0.01.
   double margin = 0.01;
+  /// LSCM, the default: LinABF costs more per chart (measured in
+  /// Documentation/filters/ChartParameterization.md).
+  ChartMethod method = ChartMethod::LSCM;
   ChartSolver solver = ChartSolver::ComplexLDLT;
   /// Side, in texels, of the grid on which countChartOverlaps samples the layout. Default 1024.
   int overlapResolution = 1024;
@@ -44,7 +58,7 @@ struct ChartParameterizationOptions
   /// Sander et al. 2001, whatever the triangles' orientation, capped at 1000) is above
   /// seamStretchTarget, the chart is cut from the vertex farthest from its boundary among the
   /// triangles with at least a tenth of the worst stretch, along the shortest edge path to the boundary,
-  /// and flattened again; a seam that does not lower the stretch is dropped and ends the search.
+  /// and flattened again (with `method`); a seam that does not lower the stretch is dropped and ends the search.
   /// Default 0: no seam.
   int maximumSeams = 0;
   double seamStretchTarget = 1.2;
@@ -117,6 +131,17 @@ std::string chartTopologyProblem(const TriangleMesh& chart);
 /// kerf::Error for a chart that is not a disk or a system the solver cannot factor.
 std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexLDLT);
 
+/// Linear angle based flattening of a disk: the planar angles of LinABF (linearAngleBasedAngles,
+/// Zayer, Lévy and Seidel 2007), then the positions that fit them best, by the least-squares
+/// reconstruction of ABF++ (Sheffer et al. 2005): per triangle (p1, p2, p3) with angles a1, a2, a3,
+/// p3 - p1 = (sin a2 / sin a3) R(a1) (p2 - p1), the residual weighted by sin a3 / (4 sin a1 sin a2)
+/// so that it is the triangle's conformal energy relative to a triangle with those angles and
+/// does not depend on which corner is p1. The sum is LSCM's energy with cot(alpha) in place of
+/// the 3D cotangents, solved the same way, with the same two pinned vertices: LSCM is the case
+/// alpha = the 3D angles. Returns one point per vertex. Throws kerf::Error for a chart that is not
+/// a disk or a system that cannot be factored.
+std::vector<Vector2> linearAngleBasedFlattening(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexLDLT);
+
 /// Distortion of the affine map from triangle (p0, p1, p2) to (t0, t1, t2): the singular values
 /// s1 >= s2 of its Jacobian.
 FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
@@ -148,7 +173,7 @@ int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangl
 /// (a label in several pieces gives several charts). Cuts the charts that are not disks but can
 /// be made disks by cutToDisk (options.cutToDisks; the copies of the vertices along these cuts
 /// are appended to result.split's vertices). Flattens each chart with
-/// leastSquaresConformalMap, scales each so its texture area equals its 3D
+/// leastSquaresConformalMap or linearAngleBasedFlattening (options.method), scales each so its texture area equals its 3D
 /// area, measures the distortion, turns each chart to its minimal bounding box and packs them
 /// into the unit square with one scale for all (equal texel density). Throws kerf::Error listing
 /// every chart that is not a disk and was not cut (by label, and piece if the label has several, with what it
