@@ -11,6 +11,9 @@
 //                                            strokeConstraints, HarmonicFieldSolver::solve
 //                                            (factorization included), extractIsolines at 0,
 //                                            nearestIsoline to the stroke, labelCuts
+//   BM_SolverFirstCutAMD/<size>/<formulation>  the same with the factorization ordered by AMD at
+//                                            every size (the solver's geometric nested
+//                                            dissection from GeometricOrderingRows rows)
 //   BM_SolverNewCut/<size>/<formulation>     a new stroke on the factored mesh, stroke to labels
 //                                            (work: update)
 //   BM_SolverRefinement/<size>/<formulation> a refinement stroke appended to the first stroke's
@@ -50,6 +53,7 @@
 #include <array>
 #include <cmath>
 #include <exception>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -254,7 +258,7 @@ void setCounters(benchmark::State& state, const SolverScene& scene)
 
 using Formulation = kerf::SoftConstraintFormulation;
 
-void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulation)
+void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulation, bool alwaysAMD = false)
 {
   int segments = 0;
   kerf::HarmonicFieldSolution solution;
@@ -264,6 +268,10 @@ void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulati
     surface.mesh = kerf::TriangleMesh(scene.points, scene.triangles);
     prepareSurface(surface);
     kerf::HarmonicFieldSolver solver;
+    if (alwaysAMD)
+    {
+      solver.setGeometricOrderingRows(std::numeric_limits<int>::max());
+    }
     const kerf::FieldConstraints constraints =
       fieldConstraints(surface, constraintsOf(surface, scene.strokes[0], 0.0), formulation);
     segments = cutToLabels(solver, surface, constraints, scene.strokes[0], 0.0, solution);
@@ -524,6 +532,8 @@ void RegisterHarmonicSolverBenchmarks()
       const std::string suffix = label + "/" + formulationName(formulation);
       add("BM_SolverFirstCut" + suffix, size,
         [formulation](benchmark::State& state, SolverScene& scene) { firstCut(state, scene, formulation); });
+      add("BM_SolverFirstCutAMD" + suffix, size,
+        [formulation](benchmark::State& state, SolverScene& scene) { firstCut(state, scene, formulation, true); });
       add("BM_SolverNewCut" + suffix, size,
         [formulation](benchmark::State& state, SolverScene& scene) { alternateCuts(state, scene, formulation, false); });
       add("BM_SolverRefinement" + suffix, size,
