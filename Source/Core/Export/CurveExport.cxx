@@ -253,16 +253,29 @@ bool strictlyInside(const std::vector<LocalPoint>& pts, int a, int b, int p)
 class Scissor
 {
 public:
-  Scissor(const TriangleMesh& mesh, double tolerance)
+  // `newVertices`: how many vertices to make room for (the curve points, say).
+  Scissor(const TriangleMesh& mesh, double tolerance, std::size_t newVertices)
     : Mesh(mesh)
     , Tolerance(tolerance)
-    , EdgePoints(static_cast<std::size_t>(mesh.edgeCount()))
+    , FirstOnEdge(static_cast<std::size_t>(mesh.edgeCount()), -1)
     , WorkOfFace(static_cast<std::size_t>(mesh.faceCount()), -1)
   {
+    const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
+    this->Points.reserve(n + newVertices);
+    this->Points.assign(mesh.points().begin(), mesh.points().end());
+    this->Origins.reserve(n + newVertices);
+    this->OriginalIds.reserve(n + newVertices);
     for (int v = 0; v < mesh.vertexCount(); ++v)
     {
-      this->Points.push_back(mesh.point(v));
-      this->Origins.push_back(SurfacePoint{ -1, Vector3::Zero() });
+      // vertexSurfacePoint: the vertex in its first triangle.
+      SurfacePoint origin{ -1, Vector3::Zero() };
+      const IndexRange faces = mesh.vertexFaces(v);
+      if (!faces.empty())
+      {
+        const Triangle& t = mesh.triangle(faces[0]);
+        origin = SurfacePoint{ faces[0], Vector3(t[0] == v ? 1.0 : 0.0, t[1] == v ? 1.0 : 0.0, t[2] == v ? 1.0 : 0.0) };
+      }
+      this->Origins.push_back(origin);
       this->OriginalIds.push_back(v);
     }
   }
@@ -276,12 +289,13 @@ public:
         return location.index;
       case CurvePointLocation::Edge:
       {
-        auto& onEdge = this->EdgePoints[static_cast<std::size_t>(location.index)];
-        for (const auto& entry : onEdge)
+        int* last = &this->FirstOnEdge[static_cast<std::size_t>(location.index)];
+        for (; *last >= 0; last = &this->OnEdges[static_cast<std::size_t>(*last)].next)
         {
-          if (std::abs(entry.first - location.t) <= this->Tolerance)
+          const EdgePoint& entry = this->OnEdges[static_cast<std::size_t>(*last)];
+          if (std::abs(entry.t - location.t) <= this->Tolerance)
           {
-            return entry.second;
+            return entry.id;
           }
         }
         const auto& ends = this->Mesh.edgeVertices(location.index);
@@ -290,7 +304,12 @@ public:
         b[cornerOf(this->Mesh.triangle(face), ends[0])] = 1.0 - location.t;
         b[cornerOf(this->Mesh.triangle(face), ends[1])] = location.t;
         const int id = this->addVertex(locationPosition(this->Mesh, location), SurfacePoint{ face, b });
-        onEdge.emplace_back(location.t, id);
+        if (last == &this->FirstOnEdge[static_cast<std::size_t>(location.index)])
+        {
+          this->SplitEdges.push_back(location.index);
+        }
+        *last = static_cast<int>(this->OnEdges.size());
+        this->OnEdges.push_back(EdgePoint{ location.t, id, -1 });
         return id;
       }
       default:
@@ -312,7 +331,8 @@ public:
     }
   }
 
-  void addSegment(int face, int a, int b, const std::string& name)
+  // The segment of `curve` from its point `point` to the next, in `face`, between output vertices a and b.
+  void addSegment(int face, int a, int b, std::size_t curve, std::size_t point)
   {
     if (a == b)
     {
@@ -320,8 +340,8 @@ public:
     }
     if (isZeroArea(this->Mesh, face))
     {
-      throw Error(name + " is on triangle " + std::to_string(face) + ", which has zero area; remove degenerate "
-        "triangles before cutting");
+      throw Error(pointName(curve, point) + " is on triangle " + std::to_string(face) +
+        ", which has zero area; remove degenerate triangles before cutting");
     }
     FaceWork& work = this->work(face);
     work.constraints.emplace_back(this->localIndex(face, a), this->localIndex(face, b));
@@ -331,12 +351,9 @@ public:
   {
     const TriangleMesh& mesh = this->Mesh;
     // Triangles beside edges that received points are split too, so the mesh stays conforming.
-    for (int e = 0; e < mesh.edgeCount(); ++e)
+    std::sort(this->SplitEdges.begin(), this->SplitEdges.end());
+    for (int e : this->SplitEdges)
     {
-      if (this->EdgePoints[static_cast<std::size_t>(e)].empty())
-      {
-        continue;
-      }
       if (!mesh.isManifoldEdge(e))
       {
         throw Error("a curve crosses edge " + std::to_string(e) + ", which is shared by more than two triangles");
@@ -358,6 +375,7 @@ public:
     std::vector<Triangle> triangles;
     std::vector<int> originalFaces;
     triangles.reserve(static_cast<std::size_t>(mesh.faceCount()) + 4 * this->Works.size());
+    originalFaces.reserve(triangles.capacity());
     std::vector<std::pair<int, int>> cuts;
     for (int f = 0; f < mesh.faceCount(); ++f)
     {
@@ -372,26 +390,21 @@ public:
       for (int k = 0; k < 3; ++k)
       {
         const int edge = mesh.faceEdge(f, k);
-        for (const auto& entry : this->EdgePoints[static_cast<std::size_t>(edge)])
+        for (int i = edge >= 0 ? this->FirstOnEdge[static_cast<std::size_t>(edge)] : -1; i >= 0;
+             i = this->OnEdges[static_cast<std::size_t>(i)].next)
         {
-          this->localIndex(f, entry.second);
+          this->localIndex(f, this->OnEdges[static_cast<std::size_t>(i)].id);
         }
       }
       this->triangulate(f, work, triangles, originalFaces, cuts);
     }
 
+    // Only the adjacency around the split triangles is built again.
     CurveExportResult result;
-    result.mesh = TriangleMesh(this->Points, std::move(triangles));
+    result.mesh = mesh.refined(std::move(this->Points), std::move(triangles), originalFaces);
     result.originalFaces = std::move(originalFaces);
-    result.originalPointIds = this->OriginalIds;
-    result.pointOrigins = this->Origins;
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-    {
-      if (!mesh.vertexFaces(v).empty())
-      {
-        result.pointOrigins[static_cast<std::size_t>(v)] = vertexSurfacePoint(mesh, v);
-      }
-    }
+    result.originalPointIds = std::move(this->OriginalIds);
+    result.pointOrigins = std::move(this->Origins);
     result.cutEdges.assign(static_cast<std::size_t>(result.mesh.edgeCount()), 0);
     for (const auto& cut : cuts)
     {
@@ -431,6 +444,7 @@ private:
       w = static_cast<int>(this->Works.size());
       this->Works.emplace_back();
       FaceWork& created = this->Works.back();
+      created.points.reserve(6); // the corners and, mostly, two points on sides
       for (int k = 0; k < 3; ++k)
       {
         LocalPoint corner{ this->Mesh.triangle(face)[k], k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0, -2, k, 0.0 };
@@ -689,7 +703,15 @@ private:
   std::vector<Vector3> Points;
   std::vector<SurfacePoint> Origins;
   std::vector<int> OriginalIds;
-  std::vector<std::vector<std::pair<double, int>>> EdgePoints; // per input edge: (t, output vertex)
+  struct EdgePoint
+  {
+    double t = 0.0; // along the edge, as CurvePointLocation::t
+    int id = -1;    // output vertex
+    int next = -1;  // the edge's next point in OnEdges, in order of creation
+  };
+  std::vector<int> FirstOnEdge;   // per input edge: its first point in OnEdges, -1 for none
+  std::vector<EdgePoint> OnEdges;
+  std::vector<int> SplitEdges;    // the input edges with points
   std::vector<int> WorkOfFace;
   std::vector<FaceWork> Works;
 };
@@ -891,7 +913,12 @@ CurveExportResult exportCurves(
 
   if (options.mode == CurveExportMode::Scissor)
   {
-    Scissor scissor(mesh, options.locationTolerance);
+    std::size_t curvePoints = 0;
+    for (const SurfaceCurve& curve : curves)
+    {
+      curvePoints += curve.points.size();
+    }
+    Scissor scissor(mesh, options.locationTolerance, curvePoints);
     std::vector<std::vector<int>> ids(curves.size());
     for (std::size_t c = 0; c < curves.size(); ++c)
     {
@@ -904,7 +931,7 @@ CurveExportResult exportCurves(
     {
       for (std::size_t i = 0; i < curves[c].faces.size(); ++i)
       {
-        scissor.addSegment(curves[c].faces[i], ids[c][i], ids[c][(i + 1) % ids[c].size()], pointName(c, i));
+        scissor.addSegment(curves[c].faces[i], ids[c][i], ids[c][(i + 1) % ids[c].size()], c, i);
       }
       for (int id : ids[c])
       {
