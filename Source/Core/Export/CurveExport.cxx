@@ -2,14 +2,12 @@
 #include "Export/CurveExport.h"
 
 #include "Error.h"
-#include "Mesh/FaceRegions.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <queue>
 #include <string>
 #include <utility>
@@ -99,7 +97,7 @@ bool inClosure(const TriangleMesh& mesh, const CurvePointLocation& location, int
 
 // The location of a point between segments in faces f0 and f1 that disagree: what they share.
 CurvePointLocation sharedLocation(
-  const TriangleMesh& mesh, int f0, int f1, const Vector3& p, double tolerance, const std::string& name)
+  const TriangleMesh& mesh, int f0, int f1, const Vector3& p, double tolerance, std::size_t curve, std::size_t point)
 {
   for (int k = 0; k < 3; ++k)
   {
@@ -136,8 +134,8 @@ CurvePointLocation sharedLocation(
       return location;
     }
   }
-  throw Error(name + " joins segments in triangles " + std::to_string(f0) + " and " + std::to_string(f1) +
-    ", which do not touch");
+  throw Error(pointName(curve, point) + " joins segments in triangles " + std::to_string(f0) + " and " +
+    std::to_string(f1) + ", which do not touch");
 }
 
 Vector3 locationPosition(const TriangleMesh& mesh, const CurvePointLocation& location)
@@ -733,7 +731,8 @@ public:
   }
 
   // Appends the path's vertices after `source` to `chain`; throws if the target is unreachable.
-  void appendPath(int source, int target, std::vector<int>& chain, const std::string& name)
+  // The path ends at point `point` of curve `curve` (named in the error).
+  void appendPath(int source, int target, std::vector<int>& chain, std::size_t curve, std::size_t point)
   {
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
@@ -774,7 +773,7 @@ public:
     if (!reached)
     {
       this->reset();
-      throw Error(name + " cannot be joined to the previous point along mesh edges");
+      throw Error(pointName(curve, point) + " cannot be joined to the previous point along mesh edges");
     }
     const std::size_t start = chain.size();
     for (int v = target; v != source; v = this->Previous[static_cast<std::size_t>(v)])
@@ -871,10 +870,9 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
     }
     for (std::size_t i = 0; i < count; ++i)
     {
-      const std::string name = pointName(c, i);
       if (!curve.points[i].allFinite())
       {
-        throw Error(name + " has a NaN or infinite coordinate");
+        throw Error(pointName(c, i) + " has a NaN or infinite coordinate");
       }
       const bool hasBefore = i > 0 || curve.closed;
       const bool hasAfter = i + 1 < count || curve.closed;
@@ -886,7 +884,7 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
         classify(mesh, first, barycentricInFace(mesh, first, curve.points[i]), tolerance);
       if (second != first && !inClosure(mesh, location, second))
       {
-        location = sharedLocation(mesh, first, second, curve.points[i], tolerance, name);
+        location = sharedLocation(mesh, first, second, curve.points[i], tolerance, c, i);
       }
       locations[c].push_back(location);
     }
@@ -896,8 +894,41 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
 
 int labelCharts(const TriangleMesh& mesh, const std::vector<char>& cutEdges, std::vector<int>& charts)
 {
-  return labelFaceRegions(
-    mesh, [&](int f, int k) { return !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))]; }, charts);
+  // Union-find in face order instead of labelFaceRegions' depth-first walk: the same labels (an
+  // edge is cut for both its triangles alike, and the smaller root wins, so a chart's root is its
+  // lowest face), with the faces read in order: 0.9 ms instead of 1.3 at 100k triangles, 9 ms
+  // instead of 24 at 1M (the benchmark's scissor output). Parents always point to lower faces,
+  // so one array holds the parents and then, in increasing order, the labels.
+  const int faces = mesh.faceCount();
+  charts.resize(static_cast<std::size_t>(faces));
+  int* parent = charts.data();
+  auto root = [parent](int f) {
+    while (parent[f] != f)
+    {
+      parent[f] = parent[parent[f]];
+      f = parent[f];
+    }
+    return f;
+  };
+  for (int f = 0; f < faces; ++f)
+  {
+    parent[f] = f;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = mesh.faceNeighbor(f, k);
+      if (g >= 0 && g < f && !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))])
+      {
+        const int a = root(f), b = root(g);
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  int count = 0;
+  for (int f = 0; f < faces; ++f)
+  {
+    charts[static_cast<std::size_t>(f)] = parent[f] == f ? count++ : charts[static_cast<std::size_t>(parent[f])];
+  }
+  return count;
 }
 
 CurveExportResult exportCurves(
@@ -947,10 +978,16 @@ CurveExportResult exportCurves(
   }
   else
   {
-    // Nearest vertex of each point; with several points on one vertex the nearest point wins.
+    // Nearest vertex of each point; with several points on one vertex the nearest point wins
+    // (ties: the first). The candidates sorted by vertex, stably, rather than kept in a std::map.
+    struct Candidate
+    {
+      int vertex;
+      double distance;
+      Vector3 point;
+    };
     std::vector<std::vector<int>> nearest(curves.size());
-    std::map<int, std::pair<double, Vector3>> winners; // vertex -> (distance, point)
-    int pointCount = 0;
+    std::vector<Candidate> candidates;
     for (std::size_t c = 0; c < curves.size(); ++c)
     {
       for (std::size_t i = 0; i < locations[c].size(); ++i)
@@ -958,24 +995,33 @@ CurveExportResult exportCurves(
         const Vector3& p = curves[c].points[i];
         const int v = nearestVertex(mesh, locations[c][i], p);
         nearest[c].push_back(v);
-        const double distance = (mesh.point(v) - p).norm();
-        auto found = winners.find(v);
-        if (found == winners.end() || distance < found->second.first)
-        {
-          winners[v] = { distance, p };
-        }
-        ++pointCount;
+        candidates.push_back(Candidate{ v, (mesh.point(v) - p).norm(), p });
       }
     }
-    result.droppedPoints = pointCount - static_cast<int>(winners.size());
+    std::stable_sort(candidates.begin(), candidates.end(),
+      [](const Candidate& a, const Candidate& b) { return a.vertex < b.vertex; });
+    std::vector<Candidate> winners; // by increasing vertex
+    for (const Candidate& candidate : candidates)
+    {
+      if (winners.empty() || winners.back().vertex != candidate.vertex)
+      {
+        winners.push_back(candidate);
+      }
+      else if (candidate.distance < winners.back().distance)
+      {
+        winners.back() = candidate;
+      }
+    }
+    result.droppedPoints = static_cast<int>(candidates.size() - winners.size());
     std::vector<Vector3> points;
     if (options.mode == CurveExportMode::InverseSnap)
     {
       points = mesh.points();
-      for (const auto& [v, winner] : winners)
+      for (const Candidate& winner : winners)
       {
+        const int v = winner.vertex;
         const Vector3 previous = points[static_cast<std::size_t>(v)];
-        points[static_cast<std::size_t>(v)] = winner.second;
+        points[static_cast<std::size_t>(v)] = winner.point;
         bool flips = false;
         for (int f : mesh.vertexFaces(v))
         {
@@ -990,7 +1036,7 @@ CurveExportResult exportCurves(
           points[static_cast<std::size_t>(v)] = previous;
           ++result.refusedFlips;
         }
-        else if (winner.second != previous)
+        else if (winner.point != previous)
         {
           ++result.movedVertices;
         }
@@ -1015,12 +1061,12 @@ CurveExportResult exportCurves(
         }
         else if (chain.back() != v)
         {
-          paths.appendPath(chain.back(), v, chain, pointName(c, i));
+          paths.appendPath(chain.back(), v, chain, c, i);
         }
       }
       if (curves[c].closed && chain.size() > 1 && chain.back() != chain.front())
       {
-        paths.appendPath(chain.back(), chain.front(), chain, pointName(c, 0));
+        paths.appendPath(chain.back(), chain.front(), chain, c, 0);
       }
       if (curves[c].closed && chain.size() > 1 && chain.back() == chain.front())
       {
