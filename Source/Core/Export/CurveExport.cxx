@@ -397,6 +397,12 @@ public:
       this->triangulate(f, work, triangles, originalFaces, cuts);
     }
 
+    // The per-triangle work is done: its memory goes back before the split mesh's is taken.
+    std::vector<FaceWork>().swap(this->Works);
+    std::vector<int>().swap(this->WorkOfFace);
+    std::vector<int>().swap(this->FirstOnEdge);
+    std::vector<EdgePoint>().swap(this->OnEdges);
+
     // Only the adjacency around the split triangles is built again.
     CurveExportResult result;
     result.mesh = mesh.refined(std::move(this->Points), std::move(triangles), originalFaces);
