@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <set>
 
 namespace kerf
@@ -104,6 +105,34 @@ void expectValidScissor(const TriangleMesh& input, const std::vector<SurfaceCurv
       EXPECT_TRUE(joined(result.mesh, vertices[i], vertices[i + 1]) || throughCrossing);
     }
   }
+  // The split mesh's adjacency (updated from the input's around the split triangles) is the one
+  // its triangles give when built from scratch.
+  const TriangleMesh scratch(result.mesh.points(), result.mesh.triangles());
+  ASSERT_EQ(scratch.edgeCount(), result.mesh.edgeCount());
+  for (int e = 0; e < scratch.edgeCount(); ++e)
+  {
+    EXPECT_EQ(scratch.edgeVertices(e), result.mesh.edgeVertices(e));
+    EXPECT_EQ(scratch.edgeFaces(e), result.mesh.edgeFaces(e));
+    EXPECT_EQ(scratch.edgeFaceCount(e), result.mesh.edgeFaceCount(e));
+  }
+  for (int f = 0; f < scratch.faceCount(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(scratch.faceEdge(f, k), result.mesh.faceEdge(f, k));
+      EXPECT_EQ(scratch.faceNeighbor(f, k), result.mesh.faceNeighbor(f, k));
+    }
+    EXPECT_EQ(scratch.faceComponent(f), result.mesh.faceComponent(f));
+  }
+  for (int v = 0; v < scratch.vertexCount(); ++v)
+  {
+    EXPECT_TRUE(std::equal(scratch.vertexEdges(v).begin(), scratch.vertexEdges(v).end(),
+      result.mesh.vertexEdges(v).begin(), result.mesh.vertexEdges(v).end()));
+    EXPECT_TRUE(std::equal(scratch.vertexFaces(v).begin(), scratch.vertexFaces(v).end(),
+      result.mesh.vertexFaces(v).begin(), result.mesh.vertexFaces(v).end()));
+    EXPECT_EQ(scratch.vertexComponent(v), result.mesh.vertexComponent(v));
+  }
+  EXPECT_EQ(scratch.boundaryLoops(), result.mesh.boundaryLoops());
   ASSERT_EQ(result.originalPointIds.size(), static_cast<std::size_t>(result.mesh.vertexCount()));
   for (int v = 0; v < input.vertexCount(); ++v)
   {

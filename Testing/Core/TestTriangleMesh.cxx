@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <limits>
+#include <random>
 #include <set>
+#include <string>
 
 using namespace kerf;
 
@@ -70,6 +72,123 @@ void expectConsistentAdjacency(const TriangleMesh& mesh)
       EXPECT_TRUE(t[0] == v || t[1] == v || t[2] == v);
     }
   }
+}
+
+// Every number and list of two meshes, compared.
+void expectSameMesh(const TriangleMesh& a, const TriangleMesh& b)
+{
+  ASSERT_EQ(a.points(), b.points());
+  ASSERT_EQ(a.triangles(), b.triangles());
+  ASSERT_EQ(a.edgeCount(), b.edgeCount());
+  for (int v = 0; v < a.vertexCount(); ++v)
+  {
+    const auto row = [](IndexRange r) { return std::vector<int>(r.begin(), r.end()); };
+    EXPECT_EQ(row(a.vertexFaces(v)), row(b.vertexFaces(v))) << "vertex " << v;
+    EXPECT_EQ(row(a.vertexNeighbors(v)), row(b.vertexNeighbors(v))) << "vertex " << v;
+    EXPECT_EQ(row(a.vertexEdges(v)), row(b.vertexEdges(v))) << "vertex " << v;
+    EXPECT_EQ(a.isBoundaryVertex(v), b.isBoundaryVertex(v)) << "vertex " << v;
+    EXPECT_EQ(a.vertexComponent(v), b.vertexComponent(v)) << "vertex " << v;
+  }
+  for (int e = 0; e < a.edgeCount(); ++e)
+  {
+    EXPECT_EQ(a.edgeVertices(e), b.edgeVertices(e)) << "edge " << e;
+    EXPECT_EQ(a.edgeFaces(e), b.edgeFaces(e)) << "edge " << e;
+    EXPECT_EQ(a.edgeFaceCount(e), b.edgeFaceCount(e)) << "edge " << e;
+  }
+  for (int f = 0; f < a.faceCount(); ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(a.faceEdge(f, k), b.faceEdge(f, k)) << "face " << f;
+      EXPECT_EQ(a.faceNeighbor(f, k), b.faceNeighbor(f, k)) << "face " << f;
+    }
+    EXPECT_EQ(a.faceComponent(f), b.faceComponent(f)) << "face " << f;
+  }
+  EXPECT_EQ(a.boundaryLoops(), b.boundaryLoops());
+  EXPECT_EQ(a.componentCount(), b.componentCount());
+}
+
+// A random refinement of `mesh`: some edges get a midpoint (shared by the triangles beside them),
+// and every triangle with a midpoint, or picked at random, is replaced by a fan around a new
+// centre through its corners and midpoints. `odd` mixes in what a refinement may also hold: a
+// triangle dropped, kept with its corners turned, or replaced by a piece reaching a vertex that
+// is not its own, a repeated corner, and a point no triangle uses.
+struct Refinement
+{
+  std::vector<Vector3> points;
+  std::vector<Triangle> triangles;
+  std::vector<int> originalFaces;
+};
+
+Refinement refine(const TriangleMesh& mesh, unsigned seed, bool odd)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  Refinement r;
+  r.points = mesh.points();
+  std::vector<int> midpoint(static_cast<std::size_t>(mesh.edgeCount()), -1);
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    if (unit(random) < 0.1)
+    {
+      const auto& ev = mesh.edgeVertices(e);
+      midpoint[static_cast<std::size_t>(e)] = static_cast<int>(r.points.size());
+      r.points.push_back(0.5 * (mesh.point(ev[0]) + mesh.point(ev[1])));
+    }
+  }
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    std::vector<int> ring;
+    for (int k = 0; k < 3; ++k)
+    {
+      ring.push_back(t[k]);
+      const int e = mesh.faceEdge(f, k);
+      if (e >= 0 && midpoint[static_cast<std::size_t>(e)] >= 0)
+      {
+        ring.push_back(midpoint[static_cast<std::size_t>(e)]);
+      }
+    }
+    const double roll = unit(random);
+    if (odd && roll < 0.03)
+    {
+      continue; // dropped
+    }
+    if (odd && roll < 0.06)
+    {
+      r.triangles.push_back(Triangle{ t[1], t[2], t[0] });
+      r.originalFaces.push_back(f);
+      continue;
+    }
+    if (ring.size() == 3 && roll > 0.2)
+    {
+      r.triangles.push_back(t);
+      r.originalFaces.push_back(f);
+      continue;
+    }
+    const int centre = static_cast<int>(r.points.size());
+    r.points.push_back((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0);
+    for (std::size_t i = 0; i < ring.size(); ++i)
+    {
+      r.triangles.push_back(Triangle{ ring[i], ring[(i + 1) % ring.size()], centre });
+      r.originalFaces.push_back(f);
+    }
+    if (odd && roll > 0.97)
+    {
+      r.triangles.push_back(Triangle{ centre, t[0], (t[0] + 1) % mesh.vertexCount() }); // another vertex
+      r.originalFaces.push_back(f);
+    }
+    else if (odd && roll > 0.94)
+    {
+      r.triangles.push_back(Triangle{ centre, t[0], t[0] }); // a repeated corner
+      r.originalFaces.push_back(f);
+    }
+  }
+  if (odd)
+  {
+    r.points.push_back(Vector3(9.0, 9.0, 9.0)); // used by no triangle
+  }
+  return r;
 }
 } // namespace
 
@@ -184,6 +303,111 @@ TEST(TriangleMesh, NumberingIsDeterministic)
   {
     EXPECT_EQ(a.edgeVertices(e), b.edgeVertices(e));
     EXPECT_EQ(a.edgeFaces(e), b.edgeFaces(e));
+  }
+}
+
+// refined() updates the adjacency around the split triangles only; the result must be the mesh
+// built from scratch, number for number, on closed and open surfaces, several components,
+// non-manifold edges, triangles repeating a vertex and unreferenced points.
+TEST(TriangleMesh, RefinedEqualsTheMeshBuiltFromScratch)
+{
+  std::vector<TriangleMesh> meshes;
+  meshes.push_back(makeIcosphere(1.0, 2));
+  meshes.push_back(makeGrid(3.0, 2.0, 6, 4));
+  meshes.push_back(makeTorus(2.0, 0.5, 12, 6));
+  // Two components, an unreferenced point, the non-manifold edge (0, 1) and a repeated vertex.
+  meshes.push_back(TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 },
+                                  { 9, 9, 9 }, { 0, -1, 0 }, { 0, 0, 1 } },
+    { { 0, 1, 2 }, { 3, 4, 5 }, { 1, 0, 7 }, { 0, 1, 8 }, { 2, 2, 1 } }));
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    for (unsigned seed = 1; seed <= 6; ++seed)
+    {
+      for (bool odd : { false, true })
+      {
+        SCOPED_TRACE("mesh " + std::to_string(m) + ", seed " + std::to_string(seed) + (odd ? ", odd" : ""));
+        const Refinement r = refine(meshes[m], seed, odd);
+        const TriangleMesh scratch(r.points, r.triangles);
+        expectSameMesh(meshes[m].refined(r.points, r.triangles, r.originalFaces), scratch);
+      }
+    }
+    // Nothing split, and everything split.
+    const TriangleMesh& mesh = meshes[m];
+    std::vector<int> identity(static_cast<std::size_t>(mesh.faceCount()));
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      identity[static_cast<std::size_t>(f)] = f;
+    }
+    expectSameMesh(mesh.refined(mesh.points(), mesh.triangles(), identity), mesh);
+    std::vector<Triangle> turned;
+    for (const Triangle& t : mesh.triangles())
+    {
+      turned.push_back(Triangle{ t[2], t[0], t[1] });
+    }
+    expectSameMesh(mesh.refined(mesh.points(), turned, identity), TriangleMesh(mesh.points(), turned));
+  }
+}
+
+// Refinements that join or split components, where the components cannot be copied.
+TEST(TriangleMesh, RefinedFindsComponentsThatChange)
+{
+  const TriangleMesh two({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 }, { 9, 9, 9 } },
+    { { 0, 1, 2 }, { 3, 4, 5 } });
+  std::vector<Vector3> points = two.points();
+  points.emplace_back(3, 0, 0); // 7
+  const std::vector<std::pair<std::vector<Triangle>, std::vector<int>>> cases = {
+    // A piece of triangle 0 reaching vertex 3 of the other component.
+    { { { 0, 1, 7 }, { 1, 2, 7 }, { 2, 0, 7 }, { 7, 3, 1 }, { 3, 4, 5 } }, { 0, 0, 0, 0, 1 } },
+    // A new vertex in the pieces of both triangles.
+    { { { 0, 1, 7 }, { 1, 2, 7 }, { 2, 0, 7 }, { 3, 4, 7 }, { 4, 5, 7 }, { 5, 3, 7 } }, { 0, 0, 0, 1, 1, 1 } },
+    // Triangle 1 dropped, triangle 0 split.
+    { { { 0, 1, 7 }, { 1, 2, 7 }, { 2, 0, 7 } }, { 0, 0, 0 } },
+    // Triangle 0 split into pieces that leave corner 2 out.
+    { { { 0, 1, 7 }, { 3, 4, 5 } }, { 0, 1 } },
+  };
+  for (std::size_t c = 0; c < cases.size(); ++c)
+  {
+    SCOPED_TRACE("case " + std::to_string(c));
+    expectSameMesh(two.refined(points, cases[c].first, cases[c].second), TriangleMesh(points, cases[c].first));
+  }
+}
+
+TEST(TriangleMesh, RefinedRefusesWhatDoesNotFit)
+{
+  const TriangleMesh grid = makeGrid(2.0, 2.0, 2, 2);
+  std::vector<Triangle> triangles = grid.triangles();
+  std::vector<int> originalFaces;
+  for (int f = 0; f < grid.faceCount(); ++f)
+  {
+    originalFaces.push_back(f);
+  }
+  EXPECT_THROW(grid.refined(grid.points(), triangles, std::vector<int>(2, 0)), Error);
+  EXPECT_THROW(grid.refined(std::vector<Vector3>(2), triangles, originalFaces), Error);
+  std::vector<int> decreasing = originalFaces;
+  std::swap(decreasing[1], decreasing[2]);
+  EXPECT_THROW(grid.refined(grid.points(), triangles, decreasing), Error);
+  std::vector<int> outside = originalFaces;
+  outside.back() = grid.faceCount();
+  EXPECT_THROW(grid.refined(grid.points(), triangles, outside), Error);
+  // A piece naming a point that does not exist: the constructor's sentence.
+  triangles[3] = Triangle{ 0, 1, 99 };
+  std::string expected;
+  try
+  {
+    TriangleMesh(grid.points(), triangles);
+  }
+  catch (const Error& error)
+  {
+    expected = error.what();
+  }
+  try
+  {
+    grid.refined(grid.points(), triangles, originalFaces);
+    FAIL() << "no error";
+  }
+  catch (const Error& error)
+  {
+    EXPECT_EQ(std::string(error.what()), expected);
   }
 }
 

@@ -2,14 +2,12 @@
 #include "Export/CurveExport.h"
 
 #include "Error.h"
-#include "Mesh/FaceRegions.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <queue>
 #include <string>
 #include <utility>
@@ -99,7 +97,7 @@ bool inClosure(const TriangleMesh& mesh, const CurvePointLocation& location, int
 
 // The location of a point between segments in faces f0 and f1 that disagree: what they share.
 CurvePointLocation sharedLocation(
-  const TriangleMesh& mesh, int f0, int f1, const Vector3& p, double tolerance, const std::string& name)
+  const TriangleMesh& mesh, int f0, int f1, const Vector3& p, double tolerance, std::size_t curve, std::size_t point)
 {
   for (int k = 0; k < 3; ++k)
   {
@@ -136,8 +134,8 @@ CurvePointLocation sharedLocation(
       return location;
     }
   }
-  throw Error(name + " joins segments in triangles " + std::to_string(f0) + " and " + std::to_string(f1) +
-    ", which do not touch");
+  throw Error(pointName(curve, point) + " joins segments in triangles " + std::to_string(f0) + " and " +
+    std::to_string(f1) + ", which do not touch");
 }
 
 Vector3 locationPosition(const TriangleMesh& mesh, const CurvePointLocation& location)
@@ -253,16 +251,29 @@ bool strictlyInside(const std::vector<LocalPoint>& pts, int a, int b, int p)
 class Scissor
 {
 public:
-  Scissor(const TriangleMesh& mesh, double tolerance)
+  // `newVertices`: how many vertices to make room for (the curve points, say).
+  Scissor(const TriangleMesh& mesh, double tolerance, std::size_t newVertices)
     : Mesh(mesh)
     , Tolerance(tolerance)
-    , EdgePoints(static_cast<std::size_t>(mesh.edgeCount()))
+    , FirstOnEdge(static_cast<std::size_t>(mesh.edgeCount()), -1)
     , WorkOfFace(static_cast<std::size_t>(mesh.faceCount()), -1)
   {
+    const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
+    this->Points.reserve(n + newVertices);
+    this->Points.assign(mesh.points().begin(), mesh.points().end());
+    this->Origins.reserve(n + newVertices);
+    this->OriginalIds.reserve(n + newVertices);
     for (int v = 0; v < mesh.vertexCount(); ++v)
     {
-      this->Points.push_back(mesh.point(v));
-      this->Origins.push_back(SurfacePoint{ -1, Vector3::Zero() });
+      // vertexSurfacePoint: the vertex in its first triangle.
+      SurfacePoint origin{ -1, Vector3::Zero() };
+      const IndexRange faces = mesh.vertexFaces(v);
+      if (!faces.empty())
+      {
+        const Triangle& t = mesh.triangle(faces[0]);
+        origin = SurfacePoint{ faces[0], Vector3(t[0] == v ? 1.0 : 0.0, t[1] == v ? 1.0 : 0.0, t[2] == v ? 1.0 : 0.0) };
+      }
+      this->Origins.push_back(origin);
       this->OriginalIds.push_back(v);
     }
   }
@@ -276,12 +287,13 @@ public:
         return location.index;
       case CurvePointLocation::Edge:
       {
-        auto& onEdge = this->EdgePoints[static_cast<std::size_t>(location.index)];
-        for (const auto& entry : onEdge)
+        int* last = &this->FirstOnEdge[static_cast<std::size_t>(location.index)];
+        for (; *last >= 0; last = &this->OnEdges[static_cast<std::size_t>(*last)].next)
         {
-          if (std::abs(entry.first - location.t) <= this->Tolerance)
+          const EdgePoint& entry = this->OnEdges[static_cast<std::size_t>(*last)];
+          if (std::abs(entry.t - location.t) <= this->Tolerance)
           {
-            return entry.second;
+            return entry.id;
           }
         }
         const auto& ends = this->Mesh.edgeVertices(location.index);
@@ -290,7 +302,12 @@ public:
         b[cornerOf(this->Mesh.triangle(face), ends[0])] = 1.0 - location.t;
         b[cornerOf(this->Mesh.triangle(face), ends[1])] = location.t;
         const int id = this->addVertex(locationPosition(this->Mesh, location), SurfacePoint{ face, b });
-        onEdge.emplace_back(location.t, id);
+        if (last == &this->FirstOnEdge[static_cast<std::size_t>(location.index)])
+        {
+          this->SplitEdges.push_back(location.index);
+        }
+        *last = static_cast<int>(this->OnEdges.size());
+        this->OnEdges.push_back(EdgePoint{ location.t, id, -1 });
         return id;
       }
       default:
@@ -312,7 +329,8 @@ public:
     }
   }
 
-  void addSegment(int face, int a, int b, const std::string& name)
+  // The segment of `curve` from its point `point` to the next, in `face`, between output vertices a and b.
+  void addSegment(int face, int a, int b, std::size_t curve, std::size_t point)
   {
     if (a == b)
     {
@@ -320,8 +338,8 @@ public:
     }
     if (isZeroArea(this->Mesh, face))
     {
-      throw Error(name + " is on triangle " + std::to_string(face) + ", which has zero area; remove degenerate "
-        "triangles before cutting");
+      throw Error(pointName(curve, point) + " is on triangle " + std::to_string(face) +
+        ", which has zero area; remove degenerate triangles before cutting");
     }
     FaceWork& work = this->work(face);
     work.constraints.emplace_back(this->localIndex(face, a), this->localIndex(face, b));
@@ -331,12 +349,9 @@ public:
   {
     const TriangleMesh& mesh = this->Mesh;
     // Triangles beside edges that received points are split too, so the mesh stays conforming.
-    for (int e = 0; e < mesh.edgeCount(); ++e)
+    std::sort(this->SplitEdges.begin(), this->SplitEdges.end());
+    for (int e : this->SplitEdges)
     {
-      if (this->EdgePoints[static_cast<std::size_t>(e)].empty())
-      {
-        continue;
-      }
       if (!mesh.isManifoldEdge(e))
       {
         throw Error("a curve crosses edge " + std::to_string(e) + ", which is shared by more than two triangles");
@@ -358,6 +373,7 @@ public:
     std::vector<Triangle> triangles;
     std::vector<int> originalFaces;
     triangles.reserve(static_cast<std::size_t>(mesh.faceCount()) + 4 * this->Works.size());
+    originalFaces.reserve(triangles.capacity());
     std::vector<std::pair<int, int>> cuts;
     for (int f = 0; f < mesh.faceCount(); ++f)
     {
@@ -372,26 +388,27 @@ public:
       for (int k = 0; k < 3; ++k)
       {
         const int edge = mesh.faceEdge(f, k);
-        for (const auto& entry : this->EdgePoints[static_cast<std::size_t>(edge)])
+        for (int i = edge >= 0 ? this->FirstOnEdge[static_cast<std::size_t>(edge)] : -1; i >= 0;
+             i = this->OnEdges[static_cast<std::size_t>(i)].next)
         {
-          this->localIndex(f, entry.second);
+          this->localIndex(f, this->OnEdges[static_cast<std::size_t>(i)].id);
         }
       }
       this->triangulate(f, work, triangles, originalFaces, cuts);
     }
 
+    // The per-triangle work is done: its memory goes back before the split mesh's is taken.
+    std::vector<FaceWork>().swap(this->Works);
+    std::vector<int>().swap(this->WorkOfFace);
+    std::vector<int>().swap(this->FirstOnEdge);
+    std::vector<EdgePoint>().swap(this->OnEdges);
+
+    // Only the adjacency around the split triangles is built again.
     CurveExportResult result;
-    result.mesh = TriangleMesh(this->Points, std::move(triangles));
+    result.mesh = mesh.refined(std::move(this->Points), std::move(triangles), originalFaces);
     result.originalFaces = std::move(originalFaces);
-    result.originalPointIds = this->OriginalIds;
-    result.pointOrigins = this->Origins;
-    for (int v = 0; v < mesh.vertexCount(); ++v)
-    {
-      if (!mesh.vertexFaces(v).empty())
-      {
-        result.pointOrigins[static_cast<std::size_t>(v)] = vertexSurfacePoint(mesh, v);
-      }
-    }
+    result.originalPointIds = std::move(this->OriginalIds);
+    result.pointOrigins = std::move(this->Origins);
     result.cutEdges.assign(static_cast<std::size_t>(result.mesh.edgeCount()), 0);
     for (const auto& cut : cuts)
     {
@@ -431,6 +448,7 @@ private:
       w = static_cast<int>(this->Works.size());
       this->Works.emplace_back();
       FaceWork& created = this->Works.back();
+      created.points.reserve(6); // the corners and, mostly, two points on sides
       for (int k = 0; k < 3; ++k)
       {
         LocalPoint corner{ this->Mesh.triangle(face)[k], k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0, -2, k, 0.0 };
@@ -689,7 +707,15 @@ private:
   std::vector<Vector3> Points;
   std::vector<SurfacePoint> Origins;
   std::vector<int> OriginalIds;
-  std::vector<std::vector<std::pair<double, int>>> EdgePoints; // per input edge: (t, output vertex)
+  struct EdgePoint
+  {
+    double t = 0.0; // along the edge, as CurvePointLocation::t
+    int id = -1;    // output vertex
+    int next = -1;  // the edge's next point in OnEdges, in order of creation
+  };
+  std::vector<int> FirstOnEdge;   // per input edge: its first point in OnEdges, -1 for none
+  std::vector<EdgePoint> OnEdges;
+  std::vector<int> SplitEdges;    // the input edges with points
   std::vector<int> WorkOfFace;
   std::vector<FaceWork> Works;
 };
@@ -711,7 +737,8 @@ public:
   }
 
   // Appends the path's vertices after `source` to `chain`; throws if the target is unreachable.
-  void appendPath(int source, int target, std::vector<int>& chain, const std::string& name)
+  // The path ends at point `point` of curve `curve` (named in the error).
+  void appendPath(int source, int target, std::vector<int>& chain, std::size_t curve, std::size_t point)
   {
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
@@ -752,7 +779,7 @@ public:
     if (!reached)
     {
       this->reset();
-      throw Error(name + " cannot be joined to the previous point along mesh edges");
+      throw Error(pointName(curve, point) + " cannot be joined to the previous point along mesh edges");
     }
     const std::size_t start = chain.size();
     for (int v = target; v != source; v = this->Previous[static_cast<std::size_t>(v)])
@@ -849,10 +876,9 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
     }
     for (std::size_t i = 0; i < count; ++i)
     {
-      const std::string name = pointName(c, i);
       if (!curve.points[i].allFinite())
       {
-        throw Error(name + " has a NaN or infinite coordinate");
+        throw Error(pointName(c, i) + " has a NaN or infinite coordinate");
       }
       const bool hasBefore = i > 0 || curve.closed;
       const bool hasAfter = i + 1 < count || curve.closed;
@@ -864,7 +890,7 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
         classify(mesh, first, barycentricInFace(mesh, first, curve.points[i]), tolerance);
       if (second != first && !inClosure(mesh, location, second))
       {
-        location = sharedLocation(mesh, first, second, curve.points[i], tolerance, name);
+        location = sharedLocation(mesh, first, second, curve.points[i], tolerance, c, i);
       }
       locations[c].push_back(location);
     }
@@ -874,8 +900,41 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
 
 int labelCharts(const TriangleMesh& mesh, const std::vector<char>& cutEdges, std::vector<int>& charts)
 {
-  return labelFaceRegions(
-    mesh, [&](int f, int k) { return !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))]; }, charts);
+  // Union-find in face order instead of labelFaceRegions' depth-first walk: the same labels (an
+  // edge is cut for both its triangles alike, and the smaller root wins, so a chart's root is its
+  // lowest face), with the faces read in order: 0.9 ms instead of 1.3 at 100k triangles, 9 ms
+  // instead of 24 at 1M (the benchmark's scissor output). Parents always point to lower faces,
+  // so one array holds the parents and then, in increasing order, the labels.
+  const int faces = mesh.faceCount();
+  charts.resize(static_cast<std::size_t>(faces));
+  int* parent = charts.data();
+  auto root = [parent](int f) {
+    while (parent[f] != f)
+    {
+      parent[f] = parent[parent[f]];
+      f = parent[f];
+    }
+    return f;
+  };
+  for (int f = 0; f < faces; ++f)
+  {
+    parent[f] = f;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = mesh.faceNeighbor(f, k);
+      if (g >= 0 && g < f && !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))])
+      {
+        const int a = root(f), b = root(g);
+        parent[std::max(a, b)] = std::min(a, b);
+      }
+    }
+  }
+  int count = 0;
+  for (int f = 0; f < faces; ++f)
+  {
+    charts[static_cast<std::size_t>(f)] = parent[f] == f ? count++ : charts[static_cast<std::size_t>(parent[f])];
+  }
+  return count;
 }
 
 CurveExportResult exportCurves(
@@ -891,7 +950,12 @@ CurveExportResult exportCurves(
 
   if (options.mode == CurveExportMode::Scissor)
   {
-    Scissor scissor(mesh, options.locationTolerance);
+    std::size_t curvePoints = 0;
+    for (const SurfaceCurve& curve : curves)
+    {
+      curvePoints += curve.points.size();
+    }
+    Scissor scissor(mesh, options.locationTolerance, curvePoints);
     std::vector<std::vector<int>> ids(curves.size());
     for (std::size_t c = 0; c < curves.size(); ++c)
     {
@@ -904,7 +968,7 @@ CurveExportResult exportCurves(
     {
       for (std::size_t i = 0; i < curves[c].faces.size(); ++i)
       {
-        scissor.addSegment(curves[c].faces[i], ids[c][i], ids[c][(i + 1) % ids[c].size()], pointName(c, i));
+        scissor.addSegment(curves[c].faces[i], ids[c][i], ids[c][(i + 1) % ids[c].size()], c, i);
       }
       for (int id : ids[c])
       {
@@ -920,10 +984,16 @@ CurveExportResult exportCurves(
   }
   else
   {
-    // Nearest vertex of each point; with several points on one vertex the nearest point wins.
+    // Nearest vertex of each point; with several points on one vertex the nearest point wins
+    // (ties: the first). The candidates sorted by vertex, stably, rather than kept in a std::map.
+    struct Candidate
+    {
+      int vertex;
+      double distance;
+      Vector3 point;
+    };
     std::vector<std::vector<int>> nearest(curves.size());
-    std::map<int, std::pair<double, Vector3>> winners; // vertex -> (distance, point)
-    int pointCount = 0;
+    std::vector<Candidate> candidates;
     for (std::size_t c = 0; c < curves.size(); ++c)
     {
       for (std::size_t i = 0; i < locations[c].size(); ++i)
@@ -931,24 +1001,33 @@ CurveExportResult exportCurves(
         const Vector3& p = curves[c].points[i];
         const int v = nearestVertex(mesh, locations[c][i], p);
         nearest[c].push_back(v);
-        const double distance = (mesh.point(v) - p).norm();
-        auto found = winners.find(v);
-        if (found == winners.end() || distance < found->second.first)
-        {
-          winners[v] = { distance, p };
-        }
-        ++pointCount;
+        candidates.push_back(Candidate{ v, (mesh.point(v) - p).norm(), p });
       }
     }
-    result.droppedPoints = pointCount - static_cast<int>(winners.size());
+    std::stable_sort(candidates.begin(), candidates.end(),
+      [](const Candidate& a, const Candidate& b) { return a.vertex < b.vertex; });
+    std::vector<Candidate> winners; // by increasing vertex
+    for (const Candidate& candidate : candidates)
+    {
+      if (winners.empty() || winners.back().vertex != candidate.vertex)
+      {
+        winners.push_back(candidate);
+      }
+      else if (candidate.distance < winners.back().distance)
+      {
+        winners.back() = candidate;
+      }
+    }
+    result.droppedPoints = static_cast<int>(candidates.size() - winners.size());
     std::vector<Vector3> points;
     if (options.mode == CurveExportMode::InverseSnap)
     {
       points = mesh.points();
-      for (const auto& [v, winner] : winners)
+      for (const Candidate& winner : winners)
       {
+        const int v = winner.vertex;
         const Vector3 previous = points[static_cast<std::size_t>(v)];
-        points[static_cast<std::size_t>(v)] = winner.second;
+        points[static_cast<std::size_t>(v)] = winner.point;
         bool flips = false;
         for (int f : mesh.vertexFaces(v))
         {
@@ -963,7 +1042,7 @@ CurveExportResult exportCurves(
           points[static_cast<std::size_t>(v)] = previous;
           ++result.refusedFlips;
         }
-        else if (winner.second != previous)
+        else if (winner.point != previous)
         {
           ++result.movedVertices;
         }
@@ -988,12 +1067,12 @@ CurveExportResult exportCurves(
         }
         else if (chain.back() != v)
         {
-          paths.appendPath(chain.back(), v, chain, pointName(c, i));
+          paths.appendPath(chain.back(), v, chain, c, i);
         }
       }
       if (curves[c].closed && chain.size() > 1 && chain.back() != chain.front())
       {
-        paths.appendPath(chain.back(), chain.front(), chain, pointName(c, 0));
+        paths.appendPath(chain.back(), chain.front(), chain, c, 0);
       }
       if (curves[c].closed && chain.size() > 1 && chain.back() == chain.front())
       {

@@ -13,6 +13,9 @@ namespace kerf
 
 namespace
 {
+// edgeShift's mark for a vertex whose triangles changed in a refinement.
+constexpr int ChangedVertex = std::numeric_limits<int>::min();
+
 // Union-find with path halving; deterministic (the smaller root wins).
 int findRoot(std::vector<int>& parent, int i)
 {
@@ -22,6 +25,18 @@ int findRoot(std::vector<int>& parent, int i)
     i = parent[i];
   }
   return i;
+}
+
+void checkTriangle(const Triangle& triangle, std::size_t f, int pointCount)
+{
+  for (int corner : triangle)
+  {
+    if (corner < 0 || corner >= pointCount)
+    {
+      throw Error("triangle " + std::to_string(f) + " uses point " + std::to_string(corner) + ", but the mesh has " +
+        std::to_string(pointCount) + " points");
+    }
+  }
 }
 
 void unite(std::vector<int>& parent, int a, int b)
@@ -43,11 +58,7 @@ TriangleMesh::TriangleMesh(std::vector<Vector3> points, std::vector<Triangle> tr
   : Points(std::move(points))
   , Triangles(std::move(triangles))
 {
-  if (this->Points.size() >= static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
-    this->Triangles.size() >= static_cast<std::size_t>(std::numeric_limits<int>::max() / 3))
-  {
-    throw Error("the mesh has too many points or triangles for 32-bit indices");
-  }
+  this->checkSize();
   checkIndices(this->Triangles, this->vertexCount());
   this->buildVertexFaces();
   this->buildEdges();
@@ -56,18 +67,20 @@ TriangleMesh::TriangleMesh(std::vector<Vector3> points, std::vector<Triangle> tr
   this->buildComponents();
 }
 
+void TriangleMesh::checkSize() const
+{
+  if (this->Points.size() >= static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
+    this->Triangles.size() >= static_cast<std::size_t>(std::numeric_limits<int>::max() / 3))
+  {
+    throw Error("the mesh has too many points or triangles for 32-bit indices");
+  }
+}
+
 void TriangleMesh::checkIndices(const std::vector<Triangle>& triangles, int pointCount)
 {
   for (std::size_t f = 0; f < triangles.size(); ++f)
   {
-    for (int corner : triangles[f])
-    {
-      if (corner < 0 || corner >= pointCount)
-      {
-        throw Error("triangle " + std::to_string(f) + " uses point " + std::to_string(corner) +
-          ", but the mesh has " + std::to_string(pointCount) + " points");
-      }
-    }
+    checkTriangle(triangles[f], f, pointCount);
   }
 }
 
@@ -146,63 +159,230 @@ void TriangleMesh::buildEdges()
   this->EdgeFaceCounts.clear();
   this->EdgeVertices.reserve(this->Triangles.size() * 3 / 2 + 16);
 
-  // Each edge is discovered from its smaller vertex; stamp[w] == v marks that the edge (v, w)
-  // already exists with index slot[w].
   std::vector<int> stamp(n, -1);
   std::vector<int> slot(n, -1);
   for (int v = 0; v < n; ++v)
   {
-    for (int f : this->vertexFaces(v))
-    {
-      const Triangle& t = this->Triangles[f];
-      for (int k = 0; k < 3; ++k)
-      {
-        const int a = t[k];
-        const int b = t[(k + 1) % 3];
-        if (a == b || std::min(a, b) != v)
-        {
-          continue;
-        }
-        const int w = std::max(a, b);
-        int e;
-        if (stamp[w] == v)
-        {
-          e = slot[w];
-        }
-        else
-        {
-          e = this->edgeCount();
-          stamp[w] = v;
-          slot[w] = e;
-          this->EdgeVertices.push_back({ v, w });
-          this->EdgeFaces.push_back({ -1, -1 });
-          this->EdgeFaceCounts.push_back(0);
-        }
-        this->FaceEdges[f][k] = e;
-        int& count = this->EdgeFaceCounts[e];
-        if (count > 0 && this->EdgeFaces[e][std::min(count, 2) - 1] == f)
-        {
-          continue; // a triangle repeating a vertex uses its one real edge twice
-        }
-        if (count < 2)
-        {
-          this->EdgeFaces[e][count] = f;
-        }
-        ++count;
-      }
-    }
+    this->discoverEdges(v, stamp, slot);
   }
-  // The triangle across each edge, where the edge is manifold and interior.
-  this->FaceNeighbors.assign(this->Triangles.size(), { -1, -1, -1 });
-  for (std::size_t f = 0; f < this->Triangles.size(); ++f)
+  this->FaceNeighbors.resize(this->Triangles.size());
+  for (int f = 0; f < this->faceCount(); ++f)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const int e = this->FaceEdges[f][k];
-      if (e >= 0 && this->EdgeFaceCounts[e] == 2)
+      this->FaceNeighbors[f][k] = this->neighborAcross(f, k);
+    }
+  }
+}
+
+// Numbers the edges whose smaller vertex is v, in the order v's triangles meet them, after all
+// edges of smaller vertices; stamp[w] == v marks that the edge (v, w) already exists with index
+// slot[w].
+void TriangleMesh::discoverEdges(int v, std::vector<int>& stamp, std::vector<int>& slot)
+{
+  for (int f : this->vertexFaces(v))
+  {
+    const Triangle& t = this->Triangles[f];
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k];
+      const int b = t[(k + 1) % 3];
+      if (a == b || std::min(a, b) != v)
       {
-        const std::array<int, 2>& faces = this->EdgeFaces[e];
-        this->FaceNeighbors[f][k] = faces[0] == static_cast<int>(f) ? faces[1] : faces[0];
+        continue;
+      }
+      const int w = std::max(a, b);
+      int e;
+      if (stamp[w] == v)
+      {
+        e = slot[w];
+      }
+      else
+      {
+        e = this->edgeCount();
+        stamp[w] = v;
+        slot[w] = e;
+        this->EdgeVertices.push_back({ v, w });
+        this->EdgeFaces.push_back({ -1, -1 });
+        this->EdgeFaceCounts.push_back(0);
+      }
+      this->FaceEdges[f][k] = e;
+      int& count = this->EdgeFaceCounts[e];
+      if (count > 0 && this->EdgeFaces[e][std::min(count, 2) - 1] == f)
+      {
+        continue; // a triangle repeating a vertex uses its one real edge twice
+      }
+      if (count < 2)
+      {
+        this->EdgeFaces[e][count] = f;
+      }
+      ++count;
+    }
+  }
+}
+
+// The triangle across side k of f, where that edge is manifold and interior.
+int TriangleMesh::neighborAcross(int f, int k) const
+{
+  const int e = this->FaceEdges[f][k];
+  if (e < 0 || this->EdgeFaceCounts[e] != 2)
+  {
+    return -1;
+  }
+  const std::array<int, 2>& faces = this->EdgeFaces[e];
+  return faces[0] == f ? faces[1] : faces[0];
+}
+
+TriangleMesh TriangleMesh::refined(
+  std::vector<Vector3> points, std::vector<Triangle> triangles, const std::vector<int>& originalFaces) const
+{
+  if (points.size() < this->Points.size())
+  {
+    throw Error("a refined mesh has " + std::to_string(points.size()) + " points, fewer than the " +
+      std::to_string(this->Points.size()) + " it refines");
+  }
+  if (originalFaces.size() != triangles.size())
+  {
+    throw Error("a refined mesh names the original triangle of " + std::to_string(originalFaces.size()) + " of its " +
+      std::to_string(triangles.size()) + " triangles");
+  }
+  TriangleMesh mesh;
+  mesh.Points = std::move(points);
+  mesh.Triangles = std::move(triangles);
+  mesh.checkSize();
+
+  // keptAs[f]: the one triangle of the refined mesh that is this mesh's triangle f unchanged (-1
+  // where f was split). A vertex of this mesh is changed when it is a corner of a split triangle
+  // or of one of its pieces (edgeShift[v] = ChangedVertex); every other vertex has the same
+  // triangles as here, renumbered in the same order. A kept triangle uses this mesh's points
+  // only, so only the pieces need their indices checked.
+  std::vector<int> keptAs(this->Triangles.size(), -1);
+  std::vector<int> edgeShift(this->Points.size(), 0);
+  const int baseVertices = this->vertexCount();
+  auto markCorners = [&](const Triangle& t) {
+    for (int v : t)
+    {
+      if (v < baseVertices)
+      {
+        edgeShift[v] = ChangedVertex;
+      }
+    }
+  };
+  const int faces = mesh.faceCount();
+  int next = 0; // the first base triangle not yet met
+  for (int g = 0; g < faces;)
+  {
+    const int f = originalFaces[g];
+    if (f < 0 || f >= this->faceCount() || (g > 0 && f < originalFaces[g - 1]))
+    {
+      throw Error("triangle " + std::to_string(g) + " of a refined mesh names original triangle " + std::to_string(f) +
+        ", out of range or out of order");
+    }
+    for (; next < f; ++next)
+    {
+      markCorners(this->Triangles[next]); // a triangle left without pieces
+    }
+    next = f + 1;
+    const Triangle& original = this->Triangles[f];
+    const Triangle& t = mesh.Triangles[g];
+    if ((g + 1 == faces || originalFaces[g + 1] != f) && t[0] == original[0] && t[1] == original[1] &&
+      t[2] == original[2])
+    {
+      keptAs[f] = g++;
+      continue;
+    }
+    markCorners(original);
+    for (; g < faces && originalFaces[g] == f; ++g)
+    {
+      checkTriangle(mesh.Triangles[g], g, mesh.vertexCount());
+      markCorners(mesh.Triangles[g]);
+    }
+  }
+  for (; next < this->faceCount(); ++next)
+  {
+    markCorners(this->Triangles[next]);
+  }
+  mesh.buildVertexFaces();
+  mesh.buildEdgesFrom(*this, originalFaces, keptAs, edgeShift);
+  mesh.buildVertexEdges();
+  mesh.buildBoundaryLoops();
+  if (!mesh.copyComponents(*this, originalFaces, keptAs))
+  {
+    mesh.buildComponents();
+  }
+  return mesh;
+}
+
+// buildEdges for a refinement of `base`. Edges are numbered by their smaller vertex, so the edges
+// of an unchanged vertex are a block of the base's edges: copied whole (their triangles
+// renumbered, the block's shift stored in edgeShift), while those of changed and new vertices
+// are discovered again. A kept triangle's side from an unchanged vertex is the base's edge,
+// shifted, with the base's neighbour across it.
+void TriangleMesh::buildEdgesFrom(const TriangleMesh& base, const std::vector<int>& originalFaces,
+  const std::vector<int>& keptAs, std::vector<int>& edgeShift)
+{
+  const int n = this->vertexCount();
+  const int baseVertices = base.vertexCount();
+  this->FaceEdges.assign(this->Triangles.size(), { -1, -1, -1 });
+  this->EdgeVertices.clear();
+  this->EdgeFaces.clear();
+  this->EdgeFaceCounts.clear();
+  const std::size_t expected = std::max(base.EdgeVertices.size(), this->Triangles.size() * 3 / 2) + 16;
+  this->EdgeVertices.reserve(expected);
+  this->EdgeFaces.reserve(expected);
+  this->EdgeFaceCounts.reserve(expected);
+
+  std::vector<int> stamp(n, -1);
+  std::vector<int> slot(n, -1);
+  const int baseEdges = base.edgeCount();
+  int next = 0; // the base's first edge whose smaller vertex is v or more
+  for (int v = 0; v < n; ++v)
+  {
+    const int first = next;
+    while (next < baseEdges && base.EdgeVertices[next][0] == v)
+    {
+      ++next;
+    }
+    if (v >= baseVertices || edgeShift[v] == ChangedVertex)
+    {
+      this->discoverEdges(v, stamp, slot);
+      continue;
+    }
+    edgeShift[v] = this->edgeCount() - first;
+    this->EdgeVertices.insert(
+      this->EdgeVertices.end(), base.EdgeVertices.begin() + first, base.EdgeVertices.begin() + next);
+    this->EdgeFaceCounts.insert(
+      this->EdgeFaceCounts.end(), base.EdgeFaceCounts.begin() + first, base.EdgeFaceCounts.begin() + next);
+    for (int e = first; e < next; ++e)
+    {
+      // Both triangles contain the unchanged vertex v, so both were kept. Written element by
+      // element: a pair built on the stack and pushed whole stalls on store forwarding (two
+      // 4-byte stores read back as one 8-byte load); refined() took 5.9 ms instead of 5.4 at 100k.
+      const std::array<int, 2>& faces = base.EdgeFaces[e];
+      std::array<int, 2>& renumbered = this->EdgeFaces.emplace_back();
+      renumbered[0] = faces[0] >= 0 ? keptAs[faces[0]] : -1;
+      renumbered[1] = faces[1] >= 0 ? keptAs[faces[1]] : -1;
+    }
+  }
+  this->FaceNeighbors.resize(this->Triangles.size());
+  for (int g = 0; g < this->faceCount(); ++g)
+  {
+    const int f = originalFaces[g];
+    const Triangle& t = this->Triangles[g];
+    const bool kept = keptAs[f] == g;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int a = t[k], b = t[(k + 1) % 3];
+      const int shift = kept && a != b ? edgeShift[std::min(a, b)] : ChangedVertex;
+      if (shift != ChangedVertex)
+      {
+        const int across = base.FaceNeighbors[f][k];
+        this->FaceEdges[g][k] = base.FaceEdges[f][k] + shift;
+        this->FaceNeighbors[g][k] = across >= 0 ? keptAs[across] : -1;
+      }
+      else
+      {
+        this->FaceNeighbors[g][k] = this->neighborAcross(g, k);
       }
     }
   }
@@ -236,15 +416,21 @@ void TriangleMesh::buildBoundaryLoops()
 {
   this->BoundaryVertex.assign(this->Points.size(), 0);
   this->BoundaryLoops.clear();
-  std::vector<char> visited(this->EdgeVertices.size(), 0);
+  bool anyBoundary = false;
   for (int e = 0; e < this->edgeCount(); ++e)
   {
     if (this->EdgeFaceCounts[e] == 1)
     {
       this->BoundaryVertex[this->EdgeVertices[e][0]] = 1;
       this->BoundaryVertex[this->EdgeVertices[e][1]] = 1;
+      anyBoundary = true;
     }
   }
+  if (!anyBoundary)
+  {
+    return;
+  }
+  std::vector<char> visited(this->EdgeVertices.size(), 0);
   for (int e = 0; e < this->edgeCount(); ++e)
   {
     if (this->EdgeFaceCounts[e] != 1 || visited[e])
@@ -318,6 +504,90 @@ void TriangleMesh::buildComponents()
       this->VertexComponents[v] = label[findRoot(parent, v)];
     }
   }
+}
+
+// The components of a refinement of `base` are the base's (numbered alike, since the triangles
+// keep their order) when each split triangle's pieces join all its corners and use no other
+// vertex of the base, and each new vertex lies in the pieces of one component. Returns false,
+// leaving the components to buildComponents, when that does not hold.
+bool TriangleMesh::copyComponents(
+  const TriangleMesh& base, const std::vector<int>& originalFaces, const std::vector<int>& keptAs)
+{
+  const int baseVertices = base.vertexCount();
+  this->VertexComponents.resize(this->Points.size());
+  std::copy(base.VertexComponents.begin(), base.VertexComponents.end(), this->VertexComponents.begin());
+  std::fill(this->VertexComponents.begin() + baseVertices, this->VertexComponents.end(), -1);
+  this->FaceComponents.resize(this->Triangles.size());
+  std::vector<int> local;  // the vertices of one split triangle's pieces, its corners first
+  std::vector<int> parent; // union-find over `local`
+  auto localIndex = [&](int v) {
+    const auto found = std::find(local.begin(), local.end(), v);
+    if (found != local.end())
+    {
+      return static_cast<int>(found - local.begin());
+    }
+    local.push_back(v);
+    parent.push_back(static_cast<int>(parent.size()));
+    return static_cast<int>(local.size()) - 1;
+  };
+  const int faces = this->faceCount();
+  int expected = 0; // the base triangle whose pieces come next: every one has some
+  for (int g = 0; g < faces;)
+  {
+    const int f = originalFaces[g];
+    const int component = base.FaceComponents[f];
+    if (f != expected++)
+    {
+      return false;
+    }
+    if (keptAs[f] == g)
+    {
+      this->FaceComponents[g++] = component;
+      continue;
+    }
+    local.clear();
+    parent.clear();
+    for (int v : base.Triangles[f])
+    {
+      localIndex(v);
+    }
+    const std::size_t corners = local.size();
+    for (; g < faces && originalFaces[g] == f; ++g)
+    {
+      this->FaceComponents[g] = component;
+      const Triangle& t = this->Triangles[g];
+      const int a = localIndex(t[0]), b = localIndex(t[1]), c = localIndex(t[2]);
+      unite(parent, a, b);
+      unite(parent, a, c);
+    }
+    for (std::size_t i = 0; i < local.size(); ++i)
+    {
+      if (findRoot(parent, static_cast<int>(i)) != 0)
+      {
+        return false; // the pieces do not join all corners
+      }
+      if (i < corners)
+      {
+        continue;
+      }
+      if (local[i] < baseVertices)
+      {
+        return false; // a piece uses a base vertex that is not a corner of f
+      }
+      int& label = this->VertexComponents[local[i]];
+      if (label >= 0 && label != component)
+      {
+        return false;
+      }
+      label = component;
+    }
+  }
+  if (expected != base.faceCount())
+  {
+    return false;
+  }
+  this->ComponentCount = base.ComponentCount;
+  return true;
 }
 
 } // namespace kerf

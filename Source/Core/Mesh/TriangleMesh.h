@@ -54,6 +54,16 @@ public:
   /// the adjacency again. Throws kerf::Error for another number of points.
   TriangleMesh withPoints(std::vector<Vector3> points) const;
 
+  /// The mesh with some of this mesh's triangles split into smaller ones. `points` keeps this
+  /// mesh's points at their indices and may add new ones after them; triangles[i] lies in this
+  /// mesh's triangle originalFaces[i], which never decreases with i, and a triangle left whole
+  /// appears once, unchanged. The result equals TriangleMesh(points, triangles) in every number
+  /// and list, but only the adjacency around split triangles is built again: the rest is this
+  /// mesh's, renumbered. Throws kerf::Error as the constructor does, and when originalFaces has
+  /// another length than triangles, names a triangle out of range or decreases.
+  TriangleMesh refined(
+    std::vector<Vector3> points, std::vector<Triangle> triangles, const std::vector<int>& originalFaces) const;
+
   /// Throws kerf::Error naming the first triangle that uses an index outside [0, pointCount).
   static void checkIndices(const std::vector<Triangle>& triangles, int pointCount);
 
@@ -106,8 +116,14 @@ private:
   {
     return IndexRange(list.data() + offsets[i], list.data() + offsets[i + 1]);
   }
+  void checkSize() const;
   void buildVertexFaces();
   void buildEdges();
+  void discoverEdges(int v, std::vector<int>& stamp, std::vector<int>& slot);
+  int neighborAcross(int f, int k) const;
+  void buildEdgesFrom(const TriangleMesh& base, const std::vector<int>& originalFaces, const std::vector<int>& keptAs,
+    std::vector<int>& edgeShift);
+  bool copyComponents(const TriangleMesh& base, const std::vector<int>& originalFaces, const std::vector<int>& keptAs);
   void buildVertexEdges();
   void buildBoundaryLoops();
   void buildComponents();
