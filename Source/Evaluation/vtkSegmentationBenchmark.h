@@ -18,12 +18,13 @@
  *   (cotangent, uniform, concavity, smooth-concavity; default cotangent), samples (4), offset
  *   (0.005 of the diagonal), spacing (0.03 of the diagonal), weight (soft-constraint weight, 1).
  * - "region-growing" and "region-growing+snakes": Easy Mesh Cutting (Ji et al. 2006), each human
- *   in turn giving the input: one stroke per segment through its innermost faces
+ *   in turn giving the input: one stroke per segment along its innermost faces
  *   (kerf::innermostStrokes), region growing under the isophotic metric, then `corrections`
  *   rounds adding a stroke inside the wrongly labelled faces of each segment, as a user corrects
  *   the result; the second refines the boundaries as snakes at the end. Parameters:
  *   normal-weight (w, 5), curvature-weight (w*, 5), augmentation (exponential, linear, square),
- *   curvature-term (per-length, per-edge), faces (per stroke, 5), corrections (3).
+ *   curvature-term (per-length, per-edge), depth (0.2: the stroke keeps to faces at least this
+ *   fraction as far inside as the innermost), corrections (3).
  *
  * With an OutputDirectory the runner writes results.csv (one row per model), summary.csv (means
  * per category and overall) and, with WritePictures, pictures/N.png (the method's segmentation

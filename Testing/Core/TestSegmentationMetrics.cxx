@@ -275,31 +275,48 @@ TEST(SimulatedStrokes, OneStrokePerBoundaryChain)
 
 TEST(SimulatedStrokes, InnermostStrokesRunAlongTheMiddleOfEachSegment)
 {
-  // Three bands of height 1 on an open cylinder of height 3. Distances inside are counted from
-  // the borders with other labels only: the middle band's stroke runs around its middle (0.5
-  // inside), the end bands' strokes near the cylinder's open ends (about 1 inside), each face at
-  // least half as far inside as the first.
+  // Three bands of height 1 on an open cylinder of radius 1 and height 3. Distances inside are
+  // counted from the borders with other labels only: the middle band's innermost faces lie around
+  // its middle (0.5 inside), the end bands' near the cylinder's open ends (about 1 inside). With
+  // depth 0.2 a stroke keeps to the faces at least a fifth as far inside as the innermost one, and
+  // it is the longest path through them: half way around the cylinder at least (pi, less the
+  // centroids' chords).
   const TriangleMesh cylinder = makeCylinder(1.0, 3.0, 48, 31);
   std::vector<int> labels = threeBands(cylinder);
-  const std::vector<SegmentStroke> strokes = innermostStrokes(cylinder, labels, 5);
+  const std::vector<SegmentStroke> strokes = innermostStrokes(cylinder, labels, 0.2);
   ASSERT_EQ(strokes.size(), 3u);
   const std::vector<int> expectedLabels{ 0, 5, 9 };
   for (std::size_t s = 0; s < strokes.size(); ++s)
   {
     EXPECT_EQ(strokes[s].label, expectedLabels[s]);
-    ASSERT_EQ(strokes[s].points.size(), 5u);
-    for (const Vector3& p : strokes[s].points)
+    ASSERT_GE(strokes[s].points.size(), 20u);
+    double length = 0.0;
+    for (std::size_t i = 0; i < strokes[s].points.size(); ++i)
     {
+      const Vector3& p = strokes[s].points[i];
+      EXPECT_NEAR(std::hypot(p.x(), p.y()), 1.0, 0.01);
       if (s == 1)
       {
-        EXPECT_LT(std::abs(p.z() - 1.5), 0.3);
+        EXPECT_LT(std::abs(p.z() - 1.5), 0.4 + 0.05); // 0.1 inside at least
       }
       else
       {
-        EXPECT_GT(std::abs(p.z() - 1.5), 0.95); // 0.45 or more from the band's border
-        EXPECT_NEAR(std::hypot(p.x(), p.y()), 1.0, 0.01);
+        EXPECT_GT(std::abs(p.z() - 1.5), 0.7 - 0.05); // 0.2 inside at least (1 at the open end)
+      }
+      if (i > 0)
+      {
+        const double step = (p - strokes[s].points[i - 1]).norm();
+        EXPECT_LT(step, 0.15); // neighbouring faces' centroids: the stroke stays on the surface
+        length += step;
       }
     }
+    EXPECT_GT(length, 3.0);
+  }
+  // Depth 1 keeps the innermost faces only: the middle band's stroke runs around its middle row.
+  const std::vector<SegmentStroke> deepest = innermostStrokes(cylinder, labels, 1.0);
+  for (const Vector3& p : deepest[1].points)
+  {
+    EXPECT_LT(std::abs(p.z() - 1.5), 0.1);
   }
   // A whole component (no border with another label) starts at its first face; unlabelled faces
   // get no stroke.
@@ -308,15 +325,17 @@ TEST(SimulatedStrokes, InnermostStrokesRunAlongTheMiddleOfEachSegment)
     return Vector3((cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])) / 3.0);
   };
   std::vector<int> whole(cylinder.faceCount(), 3);
-  const std::vector<SegmentStroke> single = innermostStrokes(cylinder, whole, 1);
+  const std::vector<SegmentStroke> single = innermostStrokes(cylinder, whole, 0.5);
   ASSERT_EQ(single.size(), 1u);
   EXPECT_EQ(single[0].label, 3);
   ASSERT_EQ(single[0].points.size(), 1u);
   EXPECT_EQ(single[0].points[0], centroid(0));
   whole[0] = -1;
-  const std::vector<SegmentStroke> labelledOnly = innermostStrokes(cylinder, whole, 1);
+  const std::vector<SegmentStroke> labelledOnly = innermostStrokes(cylinder, whole, 0.5);
   ASSERT_EQ(labelledOnly.size(), 1u);
   EXPECT_EQ(labelledOnly[0].label, 3);
-  EXPECT_THROW(innermostStrokes(cylinder, { 1, 2 }, 5), Error);
-  EXPECT_THROW(innermostStrokes(cylinder, labels, 0), Error);
+  EXPECT_THROW(innermostStrokes(cylinder, { 1, 2 }, 0.2), Error);
+  EXPECT_THROW(innermostStrokes(cylinder, labels, 0.0), Error);
+  EXPECT_THROW(innermostStrokes(cylinder, labels, 1.5), Error);
+  EXPECT_THROW(innermostStrokes(cylinder, labels, std::nan("")), Error);
 }

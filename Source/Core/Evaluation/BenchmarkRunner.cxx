@@ -367,7 +367,7 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
 }
 
 // Easy Mesh Cutting (Ji et al. 2006) with a simulated user: one stroke per segment of the input
-// human through its innermost faces, then `corrections` rounds in which a stroke is added inside
+// human along its innermost faces, then `corrections` rounds in which a stroke is added inside
 // the wrongly labelled faces of each segment (through their innermost ones), as a user corrects
 // what the growing got wrong; the boundaries are refined as snakes at the end when asked.
 MethodOutput segmentWithRegionGrowing(
@@ -379,7 +379,7 @@ MethodOutput segmentWithRegionGrowing(
   metric.curvatureWeight = parameters.positive("curvature-weight", metric.curvatureWeight);
   metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
   metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
-  const int faces = static_cast<int>(parameters.positive("faces", 5));
+  const double depth = parameters.positive("depth", 0.2);
   const std::string correctionText = parameters.text("corrections", "3");
   const int corrections = correctionText.find_first_not_of("0123456789") == std::string::npos &&
       !correctionText.empty() && correctionText.size() < 4
@@ -393,7 +393,7 @@ MethodOutput segmentWithRegionGrowing(
       strokes.push_back({ stroke.label, stroke.points });
     }
   };
-  addStrokes(innermostStrokes(mesh, *input, faces));
+  addStrokes(innermostStrokes(mesh, *input, depth));
   MethodOutput output;
   if (strokes.size() < 2)
   {
@@ -419,7 +419,7 @@ MethodOutput segmentWithRegionGrowing(
     {
       break;
     }
-    addStrokes(innermostStrokes(mesh, wrong, faces));
+    addStrokes(innermostStrokes(mesh, wrong, depth));
     output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
   }
   if (snakes)
@@ -502,14 +502,14 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "region-growing",
-      "Easy Mesh Cutting's region growing from one simulated stroke per segment through its innermost faces, then strokes inside the wrongly labelled faces",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },
+      "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "depth", "corrections" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, false);
       } },
     { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "faces", "corrections" },
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "depth", "corrections" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, true);

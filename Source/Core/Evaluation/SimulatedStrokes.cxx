@@ -172,15 +172,15 @@ std::vector<BoundaryStroke> boundaryStrokes(const TriangleMesh& mesh, const std:
   return strokes;
 }
 
-std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, int faces)
+std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, double depth)
 {
   if (static_cast<int>(labels.size()) != mesh.faceCount())
   {
     throw Error("the segmentation must have one label per face");
   }
-  if (faces < 1)
+  if (!(depth > 0.0 && depth <= 1.0))
   {
-    throw Error("a stroke needs at least one face");
+    throw Error("the stroke's depth must be a fraction in (0, 1]");
   }
   auto centroid = [&mesh](int f) {
     const Triangle& t = mesh.triangle(f);
@@ -243,34 +243,72 @@ std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std:
       found->second = f;
     }
   }
+  // The stroke: the longest path (two sweeps of Dijkstra, centroid to centroid) through the
+  // faces of the segment at least `depth` times as far inside as its innermost face, in the part of
+  // them that the innermost face reaches.
+  std::vector<double> reach(labels.size(), infinity);
+  std::vector<int> parent(labels.size(), -1);
+  std::vector<int> touched;
+  auto sweep = [&](int source, int label, double threshold) {
+    for (int f : touched)
+    {
+      reach[f] = infinity;
+      parent[f] = -1;
+    }
+    touched.assign(1, source);
+    reach[source] = 0.0;
+    queue.emplace(0.0, source);
+    int farthest = source;
+    while (!queue.empty())
+    {
+      const auto [d, f] = queue.top();
+      queue.pop();
+      if (d > reach[f])
+      {
+        continue;
+      }
+      if (d > reach[farthest] || (d == reach[farthest] && f < farthest))
+      {
+        farthest = f;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const int g = mesh.faceNeighbor(f, k);
+        if (g >= 0 && labels[g] == label && inside[g] >= threshold)
+        {
+          const double candidate = d + (centroid(g) - centroid(f)).norm();
+          if (candidate < reach[g])
+          {
+            if (reach[g] == infinity)
+            {
+              touched.push_back(g);
+            }
+            reach[g] = candidate;
+            parent[g] = f;
+            queue.emplace(candidate, g);
+          }
+        }
+      }
+    }
+    return farthest;
+  };
   std::vector<SegmentStroke> strokes;
   for (const auto& [label, first] : innermost)
   {
     SegmentStroke stroke;
     stroke.label = label;
-    std::vector<int> path{ first };
-    while (static_cast<int>(path.size()) < faces)
+    const double threshold = depth * inside[first];
+    if (threshold == infinity)
     {
-      const int last = path.back();
-      int next = -1;
-      for (int k = 0; k < 3; ++k)
-      {
-        const int g = mesh.faceNeighbor(last, k);
-        if (g >= 0 && labels[g] == label && std::find(path.begin(), path.end(), g) == path.end() &&
-          (next < 0 || inside[g] > inside[next]))
-        {
-          next = g;
-        }
-      }
-      if (next < 0 || !(inside[next] >= 0.5 * inside[first]))
-      {
-        break;
-      }
-      path.push_back(next);
+      stroke.points.push_back(centroid(first)); // a segment without a border: its first face
     }
-    for (int f : path)
+    else
     {
-      stroke.points.push_back(centroid(f));
+      const int end = sweep(sweep(first, label, threshold), label, threshold);
+      for (int f = end; f >= 0; f = parent[f])
+      {
+        stroke.points.push_back(centroid(f));
+      }
     }
     strokes.push_back(std::move(stroke));
   }

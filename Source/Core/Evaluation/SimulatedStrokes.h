@@ -34,13 +34,14 @@ struct SegmentStroke
   std::vector<Vector3> points;
 };
 
-/// One stroke per segment of a per-face segmentation, made of its innermost faces: the face
-/// farthest from the segment's boundary (distance along the segment's faces, centroid to
-/// centroid, from its faces that border another label), then up to `faces` - 1 more, each the
-/// not yet visited neighbour of the last that lies farthest inside, while it stays at least half
-/// as far inside as the first; the stroke's points are their centroids. A segment without a
-/// boundary (a whole component) starts at its lowest-numbered face. Strokes come in label order;
-/// unlabelled faces (-1) get none.
-std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, int faces);
+/// One stroke per segment of a per-face segmentation, made of its innermost faces, as a user
+/// strokes along a part: distances inside the segment are measured from its faces that border
+/// another label (along the segment's faces, centroid to centroid); the stroke is the longest path
+/// (two sweeps of Dijkstra, centroid to centroid) through the faces at least `depth` (a fraction
+/// in (0, 1]) times as far inside as the innermost face, among those the innermost face reaches
+/// through them; its points are their centroids. A segment without a boundary (a whole component)
+/// is stroked at its lowest-numbered face. Strokes come in label order; unlabelled faces (-1) get
+/// none. Throws kerf::Error for a labelling of the wrong size or a depth outside (0, 1].
+std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, double depth);
 
 } // namespace kerf
