@@ -352,6 +352,46 @@ TEST(SnakeRefinement, ThreeLabelsKeepTheirMeetingPoints)
   EXPECT_LE(farthestRing(sphere, curves, ringsFrom(sphere, jagged)), 2);
 }
 
+TEST(SnakeRefinement, AVertexHoldingNoFaceOfItsOwnIsNoRegion)
+{
+  // A cap of label 1 on a sphere, and label 1 on the faces around one vertex far from it: that
+  // vertex takes label 1, its neighbours (on faces of label 0 too) label 0, so the fan holds no
+  // face of its own. The snake has the cap's loop only, and the fan's faces keep label 0.
+  const TriangleMesh sphere = makeIcosphere(1.0, 4);
+  int lone = 0;
+  for (int v = 0; v < sphere.vertexCount(); ++v)
+  {
+    lone = sphere.point(v).z() < sphere.point(lone).z() ? v : lone;
+  }
+  std::vector<int> labels(static_cast<std::size_t>(sphere.faceCount()), 0);
+  for (int f = 0; f < sphere.faceCount(); ++f)
+  {
+    const Triangle& t = sphere.triangle(f);
+    labels[f] = (sphere.point(t[0]) + sphere.point(t[1]) + sphere.point(t[2])).z() > 1.5 ? 1 : 0;
+  }
+  for (int f : sphere.vertexFaces(lone))
+  {
+    labels[f] = 1;
+  }
+  const auto surface = std::make_shared<const Surface>(sphere);
+  BoundarySnake snake(surface, labels);
+  ASSERT_EQ(snake.curves().size(), 1u);
+  EXPECT_TRUE(snake.curves()[0].closed);
+  snake.refine({});
+  const std::vector<SnakeCurve> curves = snake.curves();
+  ASSERT_EQ(curves.size(), 1u);
+  expectEmbedded(sphere, curves);
+  for (const SnakePoint& p : curves[0].points)
+  {
+    EXPECT_GT(p.position.z(), 0.3);
+  }
+  const std::vector<int> faces = snake.faceLabels();
+  for (int f : sphere.vertexFaces(lone))
+  {
+    EXPECT_EQ(faces[f], 0);
+  }
+}
+
 TEST(SnakeRefinement, OverrideStrokeReplacesTheNearbyBoundary)
 {
   const DumbbellWithStrokes shape(5);

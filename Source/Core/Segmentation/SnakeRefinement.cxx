@@ -97,6 +97,27 @@ BoundarySnake::BoundarySnake(std::shared_ptr<const Surface> surface, const std::
       this->Labels[v] = label;
     }
   }
+  // A vertex none of whose neighbours shares its label, all of them sharing another, holds no face
+  // of its own (its faces' other corners outvote it): it takes its neighbours' label, so that no
+  // snake loops around a single vertex.
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const IndexRange neighbors = mesh.vertexNeighbors(v);
+    if (neighbors.empty() || this->Labels[v] < 0)
+    {
+      continue;
+    }
+    const int other = this->Labels[neighbors[0]];
+    bool isolated = other != this->Labels[v];
+    for (int w : neighbors)
+    {
+      isolated = isolated && this->Labels[w] == other;
+    }
+    if (isolated)
+    {
+      this->Labels[v] = other;
+    }
+  }
   // Each snaxel at the end of its edge that lies on the labelling's boundary: where the edge's
   // faces agree, the end whose label is not theirs.
   this->Parameters.assign(static_cast<std::size_t>(mesh.edgeCount()), 0.0);

@@ -75,8 +75,9 @@ struct SnakeCurve
 /// faces where three labels meet stay where they are.
 ///
 /// The initial snake follows the labelling's boundary along mesh edges: a vertex takes the label
-/// its faces share, or the smallest label among them where they differ, and each snaxel sits at
-/// the end of its edge that lies on the boundary.
+/// its faces share, or the smallest label among them where they differ (then a vertex whose
+/// neighbours all carry one other label takes theirs: it would hold no face of its own), and each
+/// snaxel sits at the end of its edge that lies on the boundary.
 class BoundarySnake
 {
 public:
