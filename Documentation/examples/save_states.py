@@ -15,6 +15,7 @@ sys.path.insert(0, HERE)
 import best_isoline  # noqa: E402
 import cut_from_stroke  # noqa: E402
 import descriptors  # noqa: E402
+import easy_mesh_cut  # noqa: E402
 import segmentation_metrics  # noqa: E402
 import unwrap  # noqa: E402
 
@@ -51,6 +52,12 @@ def build_segmentation_metrics(view):
     simple.ColorBy(simple.Show(reference, view), ("CELLS", "Reference"))
 
 
+def build_easy_mesh_cut(view):
+    cut = easy_mesh_cut.head_cut()
+    cut.UpdatePipeline()
+    easy_mesh_cut.show(cut, view)
+
+
 def build_unwrap(view):
     atlas = unwrap.unwrap_pipeline()
     atlas.UpdatePipeline()
@@ -59,7 +66,7 @@ def build_unwrap(view):
 
 BUILDERS = {"cut_from_stroke": build_cut_from_stroke, "best_isoline": build_best_isoline,
             "descriptors": build_descriptors, "segmentation_metrics": build_segmentation_metrics,
-            "unwrap": build_unwrap}
+            "unwrap": build_unwrap, "easy_mesh_cut": build_easy_mesh_cut}
 
 
 def save_state(name, path, picture=None):

@@ -15,6 +15,7 @@ simple.LoadPlugin(os.environ["KERF_PLUGIN"])
 import best_isoline  # noqa: E402
 import cut_from_stroke  # noqa: E402
 import descriptors  # noqa: E402
+import easy_mesh_cut  # noqa: E402
 import segmentation_metrics  # noqa: E402
 import unwrap  # noqa: E402
 
@@ -72,7 +73,22 @@ class ExamplesTest(unittest.TestCase):
         self.assertEqual(result["triangles"], CAMEL_FACES + 114)
         self.assertGreater(result["points"], 9770 + 114)
 
-    def load_state(self, name):
+    def test_easy_mesh_cut(self):
+        result = easy_mesh_cut.easy_mesh_cut()
+        # A stroke along the face against strokes down the chest and the shell's back: the head
+        # with its ears (6,169 of the armadillo's 52,000 faces) meets the body along one closed
+        # boundary. Grown, the boundary zigzags along edges (247 long, in four chains where it
+        # touches itself at vertices); the snake shortens it to 143 (the neck's girth where the
+        # head meets the shell), moving 153 faces to the body.
+        self.assertEqual(result["segment_sizes"], [45831, 6169])
+        self.assertEqual(result["boundaries"], 1)
+        self.assertAlmostEqual(result["boundary_length"], 142.9, delta=0.5)
+        grown = result["grown"]
+        self.assertEqual(grown["segment_sizes"], [45678, 6322])
+        self.assertAlmostEqual(grown["boundary_length"], 247.4, delta=0.5)
+        self.assertLess(result["boundary_length"], 0.6 * grown["boundary_length"])
+
+    def load_state(self, name, mesh="camel.off"):
         """Loads states/<name>.pvsm from the test's own folder, its files found under Data;
         returns its proxies by XML name."""
         before = set(simple.GetSources().values())
@@ -82,7 +98,7 @@ class ExamplesTest(unittest.TestCase):
         for proxy in loaded.values():
             proxy.UpdatePipeline()
         reader = loaded["KerfOFFReader"]
-        self.assertEqual(reader.FileName, os.path.join(cut_from_stroke.DATA, "camel.off"))
+        self.assertEqual(reader.FileName, os.path.join(cut_from_stroke.DATA, mesh))
         return loaded
 
     def test_states(self):
@@ -102,6 +118,10 @@ class ExamplesTest(unittest.TestCase):
         with self.subTest(state="segmentation_metrics"):
             table = servermanager.Fetch(self.load_state("segmentation_metrics")["KerfSegmentationMetrics"])
             self.assertAlmostEqual(table.GetColumnByName("RandIndexError").GetValue(0), 0.000307, delta=2e-6)
+        with self.subTest(state="easy_mesh_cut"):
+            cut = servermanager.Fetch(self.load_state("easy_mesh_cut", "armadillo.off")["KerfEasyMeshCut"])
+            segments = vtk_to_numpy(cut.GetCellData().GetArray("Segment"))
+            self.assertEqual(int((segments == 1).sum()), 6169)
         with self.subTest(state="unwrap"):
             loaded = self.load_state("unwrap")
             surface = servermanager.Fetch(loaded["KerfChartParameterization"])
