@@ -2,6 +2,7 @@
 #include "vtkEasyMeshCut.h"
 
 #include "Error.h"
+#include "KerfEasyMeshCutting.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 #include "Segmentation/EasyMeshCut.h"
@@ -26,33 +27,6 @@ struct vtkEasyMeshCut::Internals
   kerf::StrokePointList foreground;
   kerf::StrokePointList background;
 };
-
-namespace
-{
-// The polylines of `input` with the labels of their cells (a line's cell id follows the verts).
-std::vector<kerf::LabelledStroke> readLabelledStrokes(vtkPolyData* input, const char* labelArray)
-{
-  const std::vector<std::vector<kerf::Vector3>> lines = kerf::ReadPolylines(input, "the strokes");
-  if (lines.empty())
-  {
-    throw kerf::Error("the strokes hold no line");
-  }
-  const std::vector<double> labels = kerf::ReadNamedCellArray(input, labelArray, "the strokes");
-  const vtkIdType first = input->GetNumberOfVerts();
-  std::vector<kerf::LabelledStroke> strokes;
-  for (std::size_t i = 0; i < lines.size(); ++i)
-  {
-    const double label = labels[static_cast<std::size_t>(first) + i];
-    if (!(label >= 0.0 && label <= 1e9 && label == std::floor(label)))
-    {
-      throw kerf::Error("stroke " + std::to_string(i) + " has the label " + std::to_string(label) +
-        "; labels are non-negative integers (background 0, foreground 1)");
-    }
-    strokes.push_back({ static_cast<int>(label), lines[i] });
-  }
-  return strokes;
-}
-} // namespace
 
 vtkEasyMeshCut::vtkEasyMeshCut()
   : State(new Internals)
@@ -125,7 +99,7 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     std::vector<kerf::LabelledStroke> strokes;
     if (vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0))
     {
-      strokes = readLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
+      strokes = kerf::ReadLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
     }
     else if (this->State->foreground.Count() > 0 && this->State->background.Count() > 0)
     {
@@ -139,18 +113,13 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     }
 
     kerf::EasyMeshCutOptions options;
-    kerf::IsophoticMetricOptions& metric = options.growing.metric;
-    metric.normalWeight = kerf::Finite(this->NormalWeight, "NormalWeight");
-    metric.curvatureWeight = kerf::Finite(this->CurvatureWeight, "CurvatureWeight");
-    metric.augmentation = static_cast<kerf::CurvatureAugmentation>(this->CurvatureAugmentation);
-    metric.curvaturePerEdge = this->CurvaturePerEdge;
+    options.growing.metric =
+      kerf::MetricOptions(this->NormalWeight, this->CurvatureWeight, this->CurvatureAugmentation, this->CurvaturePerEdge);
     options.growing.maximumDistance = kerf::RelativeDistance(
       this->MaximumProjectionDistance, surface.Mesh().boundingBoxDiagonal(), "MaximumProjectionDistance");
     options.refine = this->Refine;
-    options.snake.iterations = this->SnakeIterations;
-    options.snake.convergence = kerf::Finite(this->SnakeConvergence, "SnakeConvergence");
-    options.snake.curvatureOffset = kerf::Finite(this->SnakeCurvatureOffset, "SnakeCurvatureOffset");
-    options.snake.slideSamples = this->SnakeSlideSamples;
+    options.snake = kerf::SnakeOptionsFrom(
+      this->SnakeIterations, this->SnakeConvergence, this->SnakeCurvatureOffset, this->SnakeSlideSamples);
     if (vtkPolyData* overrides = vtkPolyData::GetData(inputVector[2], 0))
     {
       options.overrides = kerf::ReadPolylines(overrides, "the override strokes");
@@ -166,18 +135,7 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     output->GetPointData()->AddArray(kerf::MakeArray("IsophoticDistance", surface.ToInputPoints(result.distances)));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SnakeSweeps", static_cast<double>(result.snake.sweeps)));
 
-    std::vector<kerf::PolylineToWrite> polylines;
-    std::vector<int> leftLabels, rightLabels;
-    for (const kerf::EasyMeshCutBoundary& boundary : result.boundaries)
-    {
-      polylines.push_back({ &boundary.points, boundary.closed, boundary.length });
-      leftLabels.push_back(boundary.leftLabel);
-      rightLabels.push_back(boundary.rightLabel);
-    }
-    vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
-    kerf::WritePolylines(polylines, lines);
-    lines->GetCellData()->AddArray(kerf::MakeIntArray("LeftLabel", leftLabels));
-    lines->GetCellData()->AddArray(kerf::MakeIntArray("RightLabel", rightLabels));
+    kerf::WriteLabelBoundaries(result.boundaries, vtkPolyData::GetData(outputVector, 1));
   });
 }
 

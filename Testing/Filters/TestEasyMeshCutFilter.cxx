@@ -1,13 +1,16 @@
-// Easy Mesh Cut (vtkEasyMeshCut): a dumbbell's smaller lobe against its known part (Rand index), the boundary in the crease, determinism, errors.
+// Easy Mesh Cut (vtkEasyMeshCut, and vtkRegionGrowing -> vtkSnakeRefinement): a dumbbell's smaller lobe against its known part (Rand index), the boundary in the crease, determinism, errors.
 #include "Evaluation/SegmentationMetrics.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkEasyMeshCut.h"
+#include "vtkRegionGrowing.h"
+#include "vtkSnakeRefinement.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -84,6 +87,16 @@ std::vector<int> segmentsOf(vtkPolyData* output)
     labels[static_cast<std::size_t>(c)] = static_cast<int>(segment->GetComponent(c, 0));
   }
   return labels;
+}
+
+std::vector<double> valuesOf(vtkDataArray* array)
+{
+  std::vector<double> values;
+  for (vtkIdType i = 0; array && i < array->GetNumberOfTuples(); ++i)
+  {
+    values.push_back(array->GetComponent(i, 0));
+  }
+  return values;
 }
 
 std::vector<double> coordinatesOf(vtkPolyData* lines)
@@ -231,6 +244,124 @@ int TestEasyMeshCutFilter(int, char*[])
     int succeeded = 1;
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(edited, &succeeded).find("not near a boundary") != std::string::npos);
     ok &= KERF_CHECK(succeeded == 0);
+  }
+
+  // The same in two filters: Region Growing gives Easy Mesh Cut's grown result and Region Growing
+  // -> Snake Refinement its refined one, value for value.
+  {
+    vtkNew<vtkRegionGrowing> growing;
+    growing->SetInputData(0, dumbbell);
+    growing->SetInputData(1, twoStrokes);
+    vtkNew<vtkSnakeRefinement> snake;
+    snake->SetInputConnection(growing->GetOutputPort());
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(snake).empty());
+    for (bool refine : { false, true })
+    {
+      vtkNew<vtkEasyMeshCut> cut;
+      cut->SetInputData(0, dumbbell);
+      cut->SetInputData(1, twoStrokes);
+      cut->SetRefine(refine);
+      ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cut).empty());
+      vtkAlgorithm* step = refine ? static_cast<vtkAlgorithm*>(snake) : growing;
+      vtkPolyData* surface = vtkPolyData::SafeDownCast(step->GetOutputDataObject(0));
+      vtkPolyData* boundary = vtkPolyData::SafeDownCast(step->GetOutputDataObject(1));
+      ok &= KERF_CHECK(segmentsOf(surface) == segmentsOf(cut->GetOutput()));
+      ok &= KERF_CHECK(coordinatesOf(boundary) == coordinatesOf(cut->GetBoundary()));
+      ok &= KERF_CHECK(valuesOf(boundary->GetCellData()->GetArray("RightLabel")) ==
+        valuesOf(cut->GetBoundary()->GetCellData()->GetArray("RightLabel")));
+    }
+    ok &= KERF_CHECK(valuesOf(growing->GetOutput()->GetPointData()->GetArray("IsophoticDistance")) ==
+      valuesOf(vtkPolyData::SafeDownCast(growing->GetOutputDataObject(0))->GetPointData()->GetArray("IsophoticDistance")));
+    // Per vertex: a face whose three corners share a label has that label.
+    vtkDataArray* vertexLabels = growing->GetOutput()->GetPointData()->GetArray("Segment");
+    const std::vector<int> faces = segmentsOf(growing->GetOutput());
+    int agreeing = 0;
+    for (int f = 0; vertexLabels && f < mesh.faceCount(); ++f)
+    {
+      const kerf::Triangle& t = mesh.triangle(f);
+      const double a = vertexLabels->GetComponent(t[0], 0);
+      if (a == vertexLabels->GetComponent(t[1], 0) && a == vertexLabels->GetComponent(t[2], 0))
+      {
+        ok &= KERF_CHECK(faces[f] == static_cast<int>(a));
+        ++agreeing;
+      }
+    }
+    ok &= KERF_CHECK(agreeing > mesh.faceCount() * 9 / 10);
+    ok &= KERF_CHECK(growing->GetOutput()->GetFieldData()->GetArray("UnreachableVertices")->GetComponent(0, 0) == 0.0);
+    ok &= KERF_CHECK(snake->GetOutput()->GetFieldData()->GetArray("SnakeSweeps")->GetComponent(0, 0) > 0.0);
+
+    // Any labelling: the known part as the cell array "Known", its jagged boundary refined into the
+    // crease; with no sweeps the labels stay as they are.
+    vtkSmartPointer<vtkPolyData> labelled = kerf::test::ToPolyData(mesh);
+    std::vector<double> knownValues(known.begin(), known.end());
+    vtkNew<vtkDoubleArray> knownArray;
+    knownArray->SetName("Known");
+    for (double v : knownValues)
+    {
+      knownArray->InsertNextValue(v);
+    }
+    labelled->GetCellData()->AddArray(knownArray);
+    vtkNew<vtkSnakeRefinement> refiner;
+    refiner->SetInputData(labelled);
+    refiner->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Known");
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(refiner).empty());
+    vtkPolyData* boundary = refiner->GetBoundary();
+    ok &= KERF_CHECK(boundary->GetNumberOfCells() == 1);
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < boundary->GetNumberOfPoints(); ++i)
+    {
+      worst = std::max(worst, std::abs(boundary->GetPoint(i)[2] - crease));
+    }
+    std::cout << "known part refined: farthest " << worst << " from the crease" << std::endl;
+    ok &= KERF_CHECK(worst < 0.075);
+    ok &= KERF_CHECK(refiner->GetOutput()->GetCellData()->GetArray("Known") != nullptr);
+    ok &= KERF_CHECK(refiner->GetOutput()->GetCellData()->GetArray("Segment") == nullptr);
+    refiner->SetSnakeIterations(0);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(refiner).empty());
+    // No sweeps: the snake as it starts, along mesh edges through every vertex of the jagged
+    // boundary (a vertex on it takes the smaller label), so only faces whose three corners lie on
+    // the boundary change their label.
+    const std::vector<double> unswept = valuesOf(refiner->GetOutput()->GetCellData()->GetArray("Known"));
+    int changed = 0;
+    for (int f = 0; f < mesh.faceCount() && unswept.size() == knownValues.size(); ++f)
+    {
+      if (unswept[f] != knownValues[f])
+      {
+        ++changed;
+        const kerf::Triangle& t = mesh.triangle(f);
+        for (int k = 0; k < 3; ++k)
+        {
+          bool onBoundary = false;
+          for (int g : mesh.vertexFaces(t[k]))
+          {
+            onBoundary = onBoundary || known[g] != known[f];
+          }
+          ok &= KERF_CHECK(onBoundary);
+        }
+      }
+    }
+    std::cout << "no sweeps: " << changed << " faces changed" << std::endl;
+    ok &= KERF_CHECK(unswept.size() == knownValues.size() && changed < mesh.faceCount() / 100);
+    ok &= KERF_CHECK(valuesOf(labelled->GetCellData()->GetArray("Known")) == knownValues); // input untouched
+
+    // Errors: Region Growing without strokes; Snake Refinement without its array or with a
+    // fractional label.
+    vtkNew<vtkRegionGrowing> alone;
+    alone->SetInputData(0, dumbbell);
+    int succeeded = 1;
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(alone, &succeeded).find("there are no strokes") != std::string::npos);
+    ok &= KERF_CHECK(succeeded == 0 && alone->GetOutput()->GetNumberOfPoints() == 0);
+    vtkNew<vtkSnakeRefinement> unlabelled;
+    unlabelled->SetInputData(dumbbell);
+    succeeded = 1;
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(unlabelled, &succeeded).find("Segment") != std::string::npos);
+    ok &= KERF_CHECK(succeeded == 0 && unlabelled->GetOutput()->GetNumberOfPoints() == 0);
+    knownArray->SetValue(0, 0.5);
+    succeeded = 1;
+    refiner->Modified();
+    const std::string fractional = kerf::test::UpdateAndCaptureError(refiner, &succeeded);
+    std::cout << "fractional label: " << fractional << std::endl;
+    ok &= KERF_CHECK(succeeded == 0 && !fractional.empty() && refiner->GetBoundary()->GetNumberOfPoints() == 0);
   }
 
   ok &= KERF_CHECK(dumbbell->GetMTime() == inputTime);

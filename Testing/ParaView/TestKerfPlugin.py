@@ -355,6 +355,15 @@ class KerfPluginTest(unittest.TestCase):
         self.assertTrue(0 < segment.sum() < 0.1 * len(segment))
         boundary = servermanager.Fetch(cut, idx=1)
         self.assertEqual(boundary.GetNumberOfLines(), 1)
+        # The same in two steps: Region Growing, then Snake Refinement on its Segment array.
+        growing = simple.RegionGrowing(Input=camel, Strokes=producer)
+        grown = servermanager.Fetch(growing)
+        self.assertEqual(len(vtk_to_numpy(grown.GetPointData().GetArray("Segment"))), 9770)
+        snake = simple.SnakeRefinement(Input=growing)
+        self.assertEqual(list(snake.SegmentLabels)[-1], "Segment")
+        refined = vtk_to_numpy(servermanager.Fetch(snake).GetCellData().GetArray("Segment"))
+        self.assertEqual(refined.tolist(), segment.tolist())
+        self.assertEqual(servermanager.Fetch(snake, idx=1).GetNumberOfLines(), 1)
 
     def test_one_name_everywhere(self):
         """Every Kerf proxy's label, without spaces and punctuation, is its class's name without

@@ -22,6 +22,33 @@ void measure(EasyMeshCutBoundary& boundary)
 }
 } // namespace
 
+EasyMeshCutResult refineBoundaries(
+  const std::shared_ptr<const Surface>& surface, const std::vector<int>& faceLabels, const EasyMeshCutOptions& options)
+{
+  EasyMeshCutResult result;
+  BoundarySnake snake(surface, faceLabels);
+  if (options.refine)
+  {
+    result.snake = snake.refine(options.snake);
+  }
+  for (const std::vector<Vector3>& stroke : options.overrides)
+  {
+    snake.overrideWithStroke(stroke, options.overrideRadius, options.growing.maximumDistance);
+  }
+  result.faceLabels = snake.faceLabels();
+  for (const SnakeCurve& curve : snake.curves())
+  {
+    EasyMeshCutBoundary boundary{ curve.leftLabel, curve.rightLabel, curve.closed, {}, 0.0 };
+    for (const SnakePoint& point : curve.points)
+    {
+      boundary.points.push_back(point.position);
+    }
+    measure(boundary);
+    result.boundaries.push_back(std::move(boundary));
+  }
+  return result;
+}
+
 EasyMeshCutResult easyMeshCut(
   const std::shared_ptr<const Surface>& surface, const std::vector<LabelledStroke>& strokes, const EasyMeshCutOptions& options)
 {
@@ -44,26 +71,10 @@ EasyMeshCutResult easyMeshCut(
     }
     return result;
   }
-  BoundarySnake snake(surface, result.growing.faceLabels);
-  if (options.refine)
-  {
-    result.snake = snake.refine(options.snake);
-  }
-  for (const std::vector<Vector3>& stroke : options.overrides)
-  {
-    snake.overrideWithStroke(stroke, options.overrideRadius, options.growing.maximumDistance);
-  }
-  result.faceLabels = snake.faceLabels();
-  for (const SnakeCurve& curve : snake.curves())
-  {
-    EasyMeshCutBoundary boundary{ curve.leftLabel, curve.rightLabel, curve.closed, {}, 0.0 };
-    for (const SnakePoint& point : curve.points)
-    {
-      boundary.points.push_back(point.position);
-    }
-    measure(boundary);
-    result.boundaries.push_back(std::move(boundary));
-  }
+  EasyMeshCutResult refined = refineBoundaries(surface, result.growing.faceLabels, options);
+  result.faceLabels = std::move(refined.faceLabels);
+  result.boundaries = std::move(refined.boundaries);
+  result.snake = refined.snake;
   return result;
 }
 

@@ -48,6 +48,15 @@ struct EasyMeshCutResult
   SnakeStatistics snake; ///< all zero without refinement
 };
 
+/// The boundaries of a per-face labelling (any segmentation's; -1 is a label too) as snakes
+/// (kerf::BoundarySnake): refined when options.refine (section 5.1), then edited by
+/// options.overrides (section 5.2, stroke points no farther than options.growing.maximumDistance
+/// from the surface; 0: no limit). The result's faceLabels and boundaries are the snakes', its
+/// snake statistics the refinement's; distances and growing stay empty. Throws kerf::Error as
+/// BoundarySnake and overrideWithStroke do.
+EasyMeshCutResult refineBoundaries(
+  const std::shared_ptr<const Surface>& surface, const std::vector<int>& faceLabels, const EasyMeshCutOptions& options);
+
 /// Region growing from the strokes (kerf::growRegions), then, with options.refine, the boundaries
 /// as snakes (kerf::BoundarySnake::refine), then the override strokes. Throws kerf::Error as
 /// growRegions, BoundarySnake and overrideWithStroke do (no stroke, strokes of fewer than two

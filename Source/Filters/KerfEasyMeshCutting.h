@@ -1,0 +1,29 @@
+// What Easy Mesh Cutting's filters (vtkEasyMeshCut, vtkRegionGrowing, vtkSnakeRefinement) share:
+// labelled strokes read from polylines, boundaries written as polylines.
+#pragma once
+
+#include "Segmentation/EasyMeshCut.h"
+
+#include <vector>
+
+class vtkPolyData;
+
+namespace kerf
+{
+
+/// The polylines of `input` with their labels, the cell array `labelArray` (non-negative
+/// integers). Throws kerf::Error for no line, a missing or malformed array, or a label that is
+/// negative or not an integer.
+std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* labelArray);
+
+/// The metric options from a filter's properties (w, w*, augmentation 0-2, per edge), NaN refused.
+IsophoticMetricOptions MetricOptions(double normalWeight, double curvatureWeight, int augmentation, bool perEdge);
+
+/// The snake options from a filter's properties, NaN refused.
+SnakeOptions SnakeOptionsFrom(int iterations, double convergence, double curvatureOffset, int slideSamples);
+
+/// Writes boundaries as polylines (kerf::WritePolylines: Length, Closed) with the cell arrays
+/// LeftLabel and RightLabel.
+void WriteLabelBoundaries(const std::vector<EasyMeshCutBoundary>& boundaries, vtkPolyData* lines);
+
+} // namespace kerf

@@ -1,0 +1,102 @@
+// vtkRegionGrowing: labelled strokes of input 1 grown over the surface under the isophotic metric (kerf::easyMeshCut without refinement).
+#include "vtkRegionGrowing.h"
+
+#include "Error.h"
+#include "KerfEasyMeshCutting.h"
+#include "KerfFilterUtilities.h"
+#include "KerfSurfaceInput.h"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkRegionGrowing);
+
+struct vtkRegionGrowing::Internals
+{
+  kerf::SurfaceInput surface;
+};
+
+vtkRegionGrowing::vtkRegionGrowing()
+  : State(new Internals)
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
+  this->SetStrokeLabelArrayName("Label");
+  this->SetSegmentArrayName("Segment");
+}
+
+vtkRegionGrowing::~vtkRegionGrowing()
+{
+  this->SetStrokeLabelArrayName(nullptr);
+  this->SetSegmentArrayName(nullptr);
+}
+
+vtkPolyData* vtkRegionGrowing::GetBoundary()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkRegionGrowing::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port == 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // so that a missing stroke input is an error of ours
+  }
+  return 1;
+}
+
+int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return kerf::RunGuarded(this, "Cannot grow regions from the strokes", [&]() {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    kerf::CheckOutputNames({ this->SegmentArrayName });
+    kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
+    const kerf::SurfaceInput& surface = this->State->surface;
+    vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
+    if (!strokeInput)
+    {
+      throw kerf::Error("there are no strokes: connect labelled polylines to input 1");
+    }
+    const std::vector<kerf::LabelledStroke> strokes = kerf::ReadLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
+
+    kerf::EasyMeshCutOptions options;
+    options.growing.metric =
+      kerf::MetricOptions(this->NormalWeight, this->CurvatureWeight, this->CurvatureAugmentation, this->CurvaturePerEdge);
+    options.growing.maximumDistance = kerf::RelativeDistance(
+      this->MaximumProjectionDistance, surface.Mesh().boundingBoxDiagonal(), "MaximumProjectionDistance");
+    options.refine = false;
+    this->UpdateProgress(0.1);
+    const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes, options);
+    this->UpdateProgress(0.9);
+
+    surface.MakeOutput(input, output);
+    output->GetCellData()->AddArray(kerf::MakeIntArray(this->SegmentArrayName, result.faceLabels));
+    output->GetCellData()->SetActiveScalars(this->SegmentArrayName);
+    output->GetPointData()->AddArray(
+      kerf::MakeIntArray(this->SegmentArrayName, surface.ToInputPoints(result.growing.vertexLabels)));
+    output->GetPointData()->AddArray(kerf::MakeArray("IsophoticDistance", surface.ToInputPoints(result.distances)));
+    output->GetFieldData()->AddArray(
+      kerf::MakeFieldValue("UnreachableVertices", static_cast<double>(result.growing.unreachableVertices)));
+    kerf::WriteLabelBoundaries(result.boundaries, vtkPolyData::GetData(outputVector, 1));
+  });
+}
+
+void vtkRegionGrowing::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NormalWeight: " << this->NormalWeight << "\n";
+  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
+  os << indent << "CurvatureAugmentation: " << this->CurvatureAugmentation << "\n";
+  os << indent << "CurvaturePerEdge: " << this->CurvaturePerEdge << "\n";
+  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
+  os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
+  os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
+}
