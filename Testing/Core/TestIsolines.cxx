@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <limits>
 #include <memory>
 #include <set>
@@ -584,17 +585,16 @@ struct StrokedSectors
   std::vector<CutWithStroke> cuts;
 };
 
-StrokedSectors strokedSectors(int sectors)
+// The mesh labelled by `label` of each face's centre, one stroke along each boundary chain (as the
+// benchmark's simulated user draws them), and each stroke's cut.
+StrokedSectors strokedSegments(TriangleMesh mesh, const std::function<int(const Vector3&)>& label)
 {
   StrokedSectors s;
-  s.mesh = makeIcosphere(1.0, 4);
-  const double pi = 3.14159265358979323846;
+  s.mesh = std::move(mesh);
   for (int f = 0; f < s.mesh.faceCount(); ++f)
   {
     const Triangle& t = s.mesh.triangle(f);
-    const Vector3 centre = (s.mesh.point(t[0]) + s.mesh.point(t[1]) + s.mesh.point(t[2])) / 3.0;
-    const double angle = std::atan2(centre.y(), centre.x()) + pi;
-    s.truth.push_back(std::min(sectors - 1, static_cast<int>(angle / (2.0 * pi / sectors))));
+    s.truth.push_back(label((s.mesh.point(t[0]) + s.mesh.point(t[1]) + s.mesh.point(t[2])) / 3.0));
   }
   auto surface = std::make_shared<const Surface>(s.mesh);
   HarmonicCutSession session(surface);
@@ -616,6 +616,16 @@ StrokedSectors strokedSectors(int sectors)
     s.cuts.push_back(std::move(withStroke));
   }
   return s;
+}
+
+const double Pi = 3.14159265358979323846;
+
+// A sphere in `sectors` orange slices around z.
+StrokedSectors strokedSectors(int sectors)
+{
+  return strokedSegments(makeIcosphere(1.0, 4), [sectors](const Vector3& c) {
+    return std::min(sectors - 1, static_cast<int>((std::atan2(c.y(), c.x()) + Pi) / (2.0 * Pi / sectors)));
+  });
 }
 
 int segmentCount(const std::vector<int>& labels)
@@ -642,6 +652,44 @@ TEST(StrokeCuts, TJunctionsGiveTheIntendedSegments)
     const SegmentationScores scores = compareSegmentations(s.mesh, labels, s.truth);
     EXPECT_LT(scores.randIndexError, 0.01) << sectors << " sectors";
   }
+}
+
+TEST(StrokeCuts, AThreePartStarGivesItsThreeParts)
+{
+  // Three fingers on a sphere (at 0, 120 and 240 degrees around z), each with its third of the
+  // body: three boundaries from pole to pole between the fingers, meeting three at a time at the
+  // poles (T-junctions), each drawn as one open stroke.
+  const StrokedSectors s = strokedSegments(makeProtrusions(3, 1.0, 0.35, 4), [](const Vector3& c) {
+    const double angle = std::atan2(c.y(), c.x()) + 2.0 * Pi + Pi / 3.0;
+    return static_cast<int>(angle / (2.0 * Pi / 3.0)) % 3;
+  });
+  ASSERT_EQ(s.cuts.size(), 3u);
+  const std::vector<int> labels = labelStrokeCuts(s.mesh, s.cuts, 0.03 * s.mesh.boundingBoxDiagonal());
+  EXPECT_EQ(segmentCount(labels), 3);
+  const SegmentationScores scores = compareSegmentations(s.mesh, labels, s.truth);
+  std::cout << "three-part star: 1 - Rand index " << scores.randIndexError << std::endl;
+  EXPECT_LT(scores.randIndexError, 0.01);
+}
+
+TEST(StrokeCuts, AHandleIsCutAtBothEnds)
+{
+  // A handle: a quarter of a torus's ring, attached to the rest at two meridian loops. One stroke
+  // along each loop; neither cut alone separates anything (the ring stays connected), the two
+  // together give the handle and the rest.
+  const StrokedSectors s = strokedSegments(makeTorus(1.0, 0.3, 96, 32), [](const Vector3& c) {
+    const double angle = std::atan2(c.y(), c.x());
+    return angle > 0.0 && angle < Pi / 2.0 ? 1 : 0;
+  });
+  ASSERT_EQ(s.cuts.size(), 2u);
+  for (const CutWithStroke& cut : s.cuts)
+  {
+    EXPECT_EQ(segmentCount(labelCuts(s.mesh, { cut.cut })), 1);
+  }
+  const std::vector<int> labels = labelStrokeCuts(s.mesh, s.cuts, 0.03 * s.mesh.boundingBoxDiagonal());
+  EXPECT_EQ(segmentCount(labels), 2);
+  const SegmentationScores scores = compareSegmentations(s.mesh, labels, s.truth);
+  std::cout << "handle: 1 - Rand index " << scores.randIndexError << std::endl;
+  EXPECT_LT(scores.randIndexError, 0.01);
 }
 
 TEST(StrokeCuts, TheTwoSidesOfAStrokeStayApart)
