@@ -32,7 +32,7 @@ const Command Commands[] = {
     "becomes +1/-1 constraints on both sides, the field is solved, and the isoline nearest the\n"
     "stroke splits the mesh into segments (cell array Segment).\n"
     "Cut options: --weighting uniform|cotangent|concavity|smooth-concavity (cotangent),\n"
-    "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.005),\n"
+    "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.005, at most 5% of a stroke's length),\n"
     "--soft-weight W (1)." },
   { "unwrap",
     "kerf unwrap MESH --curves CURVES [-o OUT.obj] [--png OUT.png] [--seams N] [--mode M] [--margin F]\n"

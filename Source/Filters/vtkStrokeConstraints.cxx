@@ -82,6 +82,7 @@ int vtkStrokeConstraints::RequestData(
     kerf::StrokeOptions options;
     options.samplesPerSegment = this->SamplesPerSegment;
     options.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
+    options.offsetLengthFraction = kerf::Finite(this->OffsetLengthFraction, "OffsetLengthFraction");
     options.isoValue = this->IsoValue;
     options.maximumDistance =
       kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
@@ -114,6 +115,7 @@ void vtkStrokeConstraints::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
   os << indent << "Offset: " << this->Offset << "\n";
+  os << indent << "OffsetLengthFraction: " << this->OffsetLengthFraction << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";

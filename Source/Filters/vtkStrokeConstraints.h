@@ -51,6 +51,13 @@ public:
   ///@}
 
   ///@{
+  /// A stroke's offset is at most this fraction of its length (0: no cap), so that the
+  /// constraints of a short stroke (a loop round a small part) stay beside it. Default 0.05.
+  vtkSetClampMacro(OffsetLengthFraction, double, 0.0, 1.0);
+  vtkGetMacro(OffsetLengthFraction, double);
+  ///@}
+
+  ///@{
   /// The iso-value I of the cut: constraints are I + 1 and I - 1. Default 0. Must be finite and
   /// small enough that I +- 1 differ from I.
   vtkSetMacro(IsoValue, double);
@@ -84,6 +91,7 @@ protected:
 
   int SamplesPerSegment = 4;
   double Offset = 0.005;
+  double OffsetLengthFraction = 0.05;
   double IsoValue = 0.0;
   double MaximumProjectionDistance = 0.05;
 

@@ -86,6 +86,7 @@ int vtkStrokeCut::RequestData(
     kerf::StrokeOptions strokeOptions;
     strokeOptions.samplesPerSegment = this->SamplesPerSegment;
     strokeOptions.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
+    strokeOptions.offsetLengthFraction = kerf::Finite(this->OffsetLengthFraction, "OffsetLengthFraction");
     strokeOptions.isoValue = this->IsoValue;
     strokeOptions.maximumDistance =
       kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
@@ -123,6 +124,7 @@ void vtkStrokeCut::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
   os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
   os << indent << "Offset: " << this->Offset << "\n";
+  os << indent << "OffsetLengthFraction: " << this->OffsetLengthFraction << "\n";
   os << indent << "IsoValue: " << this->IsoValue << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";

@@ -69,6 +69,13 @@ public:
   ///@}
 
   ///@{
+  /// A stroke's offset is at most this fraction of its length (0: no cap), so that the
+  /// constraints of a short stroke (a loop round a small part) stay beside it. Default 0.05.
+  vtkSetClampMacro(OffsetLengthFraction, double, 0.0, 1.0);
+  vtkGetMacro(OffsetLengthFraction, double);
+  ///@}
+
+  ///@{
   /// The iso-value of the cut; the constraints are IsoValue +- 1. Default 0.
   vtkSetMacro(IsoValue, double);
   vtkGetMacro(IsoValue, double);
@@ -104,6 +111,7 @@ protected:
   double SoftConstraintWeight = 1.0;
   int SamplesPerSegment = 4;
   double Offset = 0.005;
+  double OffsetLengthFraction = 0.05;
   double IsoValue = 0.0;
   double MaximumProjectionDistance = 0.05;
 

@@ -1178,6 +1178,34 @@ TEST(StrokeConstraints, StraightStrokeOnPlane)
   }
 }
 
+TEST(StrokeConstraints, ShortStrokeOffsetIsAFractionOfItsLength)
+{
+  // A stroke 0.2 long with the offset 0.03: its constraints sit 0.05 x 0.2 = 0.01 beside it (by
+  // default), or at the full offset with the cap off; a stroke 1 long keeps the offset.
+  const TriangleMesh grid = makeGrid(2.0, 2.0, 20, 20);
+  const ClosestPointLocator locator(grid);
+  const std::vector<Vector3> normals = computeVertexNormals(grid);
+  StrokeOptions options;
+  options.offset = 0.03;
+  ASSERT_EQ(options.offsetLengthFraction, 0.05);
+  for (const double length : { 0.2, 1.0 })
+  {
+    const std::vector<Vector3> stroke = { { 0.5, 0.9, 0.0 }, { 0.5 + length, 0.9, 0.0 } };
+    for (const double fraction : { 0.05, 0.0 })
+    {
+      options.offsetLengthFraction = fraction;
+      const StrokeConstraintSet set = strokeConstraints(grid, locator, normals, { stroke }, options);
+      const double expected = fraction > 0.0 ? std::min(0.03, fraction * length) : 0.03;
+      ASSERT_EQ(set.positions.size(), 2 * set.strokeSamples.size());
+      for (std::size_t i = 0; i < set.positions.size(); ++i)
+      {
+        EXPECT_NEAR((set.positions[i] - set.strokeSamples[i / 2]).norm(), expected, 1e-9)
+          << "length " << length << ", fraction " << fraction;
+      }
+    }
+  }
+}
+
 TEST(StrokeConstraints, StrokeAboveThePlaneIsProjected)
 {
   const TriangleMesh grid = makeGrid(2.0, 2.0, 20, 20);

@@ -269,6 +269,7 @@ MethodOutput segmentWithHarmonicCuts(
   StrokeOptions strokeOptions;
   strokeOptions.samplesPerSegment = static_cast<int>(parameters.positive("samples", 4));
   strokeOptions.offset = parameters.positive("offset", 0.005) * diagonal;
+  strokeOptions.offsetLengthFraction = std::stod(parameters.text("offset-length", "0.05"));
   strokeOptions.maximumDistance = 0.05 * diagonal;
   const double spacing = parameters.positive("spacing", 0.03) * diagonal;
   const double support = parameters.positive("support", 3.0) * strokeOptions.offset;
@@ -484,7 +485,7 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       SegmentationMethod::Protocol::HumanBaseline, nullptr },
     { "harmonic-cuts",
       "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
-      { "weighting", "samples", "offset", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
+      { "weighting", "samples", "offset", "offset-length", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
       segmentWithHarmonicCuts },
     { "convex-flooding",
       "convex patches flooded on the dual graph, small ones merged (Kouhestani 2013, section 3.1), down to k",

@@ -55,6 +55,13 @@ StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPoi
     {
       throw Error("stroke " + std::to_string(s) + " needs at least two distinct points");
     }
+    double length = 0.0;
+    for (std::size_t j = 0; j + 1 < stroke.size(); ++j)
+    {
+      length += (stroke[j + 1] - stroke[j]).norm();
+    }
+    const double offset =
+      options.offsetLengthFraction > 0.0 ? std::min(options.offset, options.offsetLengthFraction * length) : options.offset;
     for (std::size_t j = 0; j + 1 < stroke.size(); ++j)
     {
       const Vector3 direction = stroke[j + 1] - stroke[j];
@@ -83,7 +90,7 @@ StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPoi
         out.strokeSamples.push_back(sample.position);
         for (const double sign : { 1.0, -1.0 })
         {
-          const ClosestPointLocator::Hit hit = locator.closest(sample.position + sign * options.offset * d);
+          const ClosestPointLocator::Hit hit = locator.closest(sample.position + sign * offset * d);
           SoftConstraint c;
           c.face = hit.face;
           c.barycentric = hit.barycentric;

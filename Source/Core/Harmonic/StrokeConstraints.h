@@ -18,6 +18,9 @@ struct StrokeOptions
   /// Offset eps_C from the stroke to each constraint point, in length units (the paper: 1% of
   /// the bounding-box diagonal).
   double offset = 0.0;
+  /// When positive, a stroke's offset is at most this fraction of its length, so that the
+  /// constraints of a short stroke (a loop round a small part) stay beside it.
+  double offsetLengthFraction = 0.05;
   /// The iso-value I the cut should follow: constraints get I + 1 on one side and I - 1 on the
   /// other (0 for a new cut; the current value to refine a cut).
   double isoValue = 0.0;
