@@ -536,8 +536,10 @@ FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector
   const double F = 0.5 * (J(0, 0) - J(1, 1));
   const double G = 0.5 * (J(1, 0) + J(0, 1));
   const double H = 0.5 * (J(1, 0) - J(0, 1));
-  const double Q = std::hypot(E, H);
-  const double R = std::hypot(F, G);
+  // sqrt rather than std::hypot, whose guard against overflow (Jacobian entries beyond 1e150) cost
+  // about 2% of parameterizeCharts.
+  const double Q = std::sqrt(E * E + H * H);
+  const double R = std::sqrt(F * F + G * G);
   const double s1 = Q + R;
   const double s2 = std::abs(Q - R);
   FaceDistortion distortion;
