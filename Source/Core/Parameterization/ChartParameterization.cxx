@@ -209,6 +209,7 @@ Eigen::VectorXcd solveHermitian(const Eigen::SparseMatrix<Complex>& lower, const
     Eigen::CholmodDecomposition<Eigen::SparseMatrix<Complex>, Eigen::Lower> cholesky;
     // AMD alone: METIS' ordering costs more than its fill saves on these charts (the figures are
     // in Documentation/filters/ChartParameterization.md).
+    cholesky.cholmod().print = 0; // a failure is reported by the exception below, never printed
     cholesky.cholmod().nmethods = 1;
     cholesky.cholmod().method[0].ordering = CHOLMOD_AMD;
     {
