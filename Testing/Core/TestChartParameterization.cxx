@@ -129,7 +129,7 @@ TEST(ChartParameterization, IsDeterministicAndSolversAgree)
   const std::vector<int> labels = octantLabels(sphere);
   const ChartParameterizationResult first = parameterizeCharts(sphere, labels);
   const ChartParameterizationResult second = parameterizeCharts(sphere, labels);
-  for (ChartSolver solver : { ChartSolver::RealCHOLMOD, ChartSolver::RealLDLT })
+  for (ChartSolver solver : { ChartSolver::ComplexLDLT, ChartSolver::RealCHOLMOD, ChartSolver::RealLDLT })
   {
     ChartParameterizationOptions other;
     other.solver = solver;

@@ -17,12 +17,6 @@ bool repeatsVertex(const Triangle& t)
   return t[0] == t[1] || t[1] == t[2] || t[2] == t[0];
 }
 
-Triangle sortedCorners(Triangle t)
-{
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
 int localRoot(std::vector<int>& parent, int i)
 {
   while (parent[i] != i)
@@ -186,15 +180,17 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
       ++report.zeroAreaFaces;
       note(report.zeroAreaFaceIds, f);
     }
-    // A duplicate shares all corners, so it is among the triangles around corner 0.
-    const Triangle key = sortedCorners(t);
+    // A duplicate shares all corners, so it is among the triangles around corner 0; with t's
+    // corners distinct, one that also holds t[1] and t[2] has the same sorted corners.
     for (int g : mesh.vertexFaces(t[0]))
     {
       if (g >= f)
       {
         break;
       }
-      if (sortedCorners(mesh.triangle(g)) == key)
+      const Triangle& other = mesh.triangle(g);
+      if (std::find(other.begin(), other.end(), t[1]) != other.end() &&
+        std::find(other.begin(), other.end(), t[2]) != other.end())
       {
         ++report.duplicateFaces;
         note(report.duplicateFaceIds, f);

@@ -25,6 +25,57 @@ bool shareEdgeAt(const Triangle& a, const Triangle& b, int v)
   }
   return false;
 }
+
+// True if the triangles around v all have one label and, for LabelFans::Separate, are joined
+// into one fan by their neighbours across the edges at v (manifold edges only: where this fails
+// the general path decides, which also joins triangles across non-manifold edges).
+bool isOneFanOfOneLabel(const TriangleMesh& mesh, const std::vector<int>& faceLabels, int v, LabelFans fans,
+  std::vector<std::size_t>& parent)
+{
+  const IndexRange faces = mesh.vertexFaces(v);
+  const int label = faceLabels[static_cast<std::size_t>(faces[0])];
+  for (int f : faces)
+  {
+    if (faceLabels[static_cast<std::size_t>(f)] != label)
+    {
+      return false;
+    }
+  }
+  if (fans != LabelFans::Separate)
+  {
+    return true;
+  }
+  parent.resize(faces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](std::size_t i) {
+    while (parent[i] != i)
+    {
+      i = parent[i];
+    }
+    return i;
+  };
+  std::size_t roots = faces.size();
+  for (std::size_t i = 0; i < faces.size(); ++i)
+  {
+    const Triangle& t = mesh.triangle(faces[i]);
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = mesh.faceNeighbor(faces[i], k);
+      if (g < 0 || (t[static_cast<std::size_t>(k)] != v && t[static_cast<std::size_t>((k + 1) % 3)] != v))
+      {
+        continue; // no neighbour, or the side opposite v
+      }
+      const std::size_t a = root(i);
+      const std::size_t b = root(static_cast<std::size_t>(std::lower_bound(faces.begin(), faces.end(), g) - faces.begin()));
+      if (a != b)
+      {
+        parent[std::max(a, b)] = std::min(a, b);
+        --roots;
+      }
+    }
+  }
+  return roots == 1;
+}
 } // namespace
 
 SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>& faceLabels, LabelFans fans)
@@ -40,11 +91,28 @@ SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>&
   // Around each vertex: its faces as (label, group, face), the group the first face of its fan
   // (or of its label), so that sorting numbers the copies by label, then fan.
   std::vector<std::tuple<int, int, int>> around;
-  std::vector<int> group;
+  std::vector<std::size_t> group;
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
     const IndexRange faces = mesh.vertexFaces(v);
     const std::size_t count = faces.size();
+    if (count > 0 && isOneFanOfOneLabel(mesh, faceLabels, v, fans, group))
+    {
+      // One copy for all the triangles (most vertices): the pairs and the sort below give the same.
+      points.push_back(mesh.point(v));
+      split.originalPoint.push_back(v);
+      for (int f : faces)
+      {
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          if (mesh.triangle(f)[k] == v)
+          {
+            triangles[static_cast<std::size_t>(f)][k] = static_cast<int>(points.size()) - 1;
+          }
+        }
+      }
+      continue;
+    }
     group.resize(count);
     std::iota(group.begin(), group.end(), 0);
     // Union of faces of one label, through a shared edge at v when fans are separated.

@@ -2,6 +2,7 @@
 #include "Parameterization/ChartParameterization.h"
 
 #include "Error.h"
+#include "Harmonic/SerialOpenMP.h"
 #include "Harmonic/SparseCholesky.h"
 #include "Mesh/MeshValidation.h"
 #include "Parameterization/CutToDisk.h"
@@ -18,6 +19,10 @@
 #include <numeric>
 #include <set>
 #include <utility>
+
+#ifdef KERF_HAVE_CHOLMOD
+#include <Eigen/CholmodSupport>
+#endif
 
 namespace kerf
 {
@@ -191,13 +196,49 @@ std::string chartTopologyProblem(const TriangleMesh& chart)
 
 namespace
 {
+using Complex = std::complex<double>;
+
+// Solves H z = rhs for the Hermitian positive definite H given by its lower triangle: with
+// ComplexCHOLMOD, CHOLMOD's L L^H (supernodal or simplicial, CHOLMOD's choice by the flops per
+// nonzero of the factor) after an AMD ordering; else Eigen's SimplicialLDLT.
+Eigen::VectorXcd solveHermitian(const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs, ChartSolver solver)
+{
+#ifdef KERF_HAVE_CHOLMOD
+  if (solver == ChartSolver::ComplexCHOLMOD)
+  {
+    Eigen::CholmodDecomposition<Eigen::SparseMatrix<Complex>, Eigen::Lower> cholesky;
+    // AMD alone: METIS' ordering costs more than its fill saves on these charts (the figures are
+    // in Documentation/filters/ChartParameterization.md).
+    cholesky.cholmod().print = 0; // a failure is reported by the exception below, never printed
+    cholesky.cholmod().nmethods = 1;
+    cholesky.cholmod().method[0].ordering = CHOLMOD_AMD;
+    {
+      const SerialOpenMP serial;
+      cholesky.compute(lower);
+    }
+    if (cholesky.info() != Eigen::Success)
+    {
+      throw Error("the conformal map's system is not positive definite");
+    }
+    return cholesky.solve(rhs);
+  }
+#else
+  (void)solver;
+#endif
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> ldlt(lower);
+  if (ldlt.info() != Eigen::Success)
+  {
+    throw Error("the conformal map's system is not positive definite");
+  }
+  return ldlt.solve(rhs);
+}
+
 // The conformal energy as the Hermitian form z^H H z / 2 in z = u + i v: H = L - i C, L the
 // cotangent Laplacian and C the antisymmetric boundary term of the real form, so H has the
 // Laplacian's pattern and half the real form's unknowns.
 std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::vector<double>& cotangents,
-  const std::vector<int>& loop, int pinA, int pinB, double pinDistance)
+  const std::vector<int>& loop, int pinA, int pinB, double pinDistance, ChartSolver solver)
 {
-  using Complex = std::complex<double>;
   const int n = chart.vertexCount();
   std::vector<int> freeIndex(static_cast<std::size_t>(n), -1);
   int freeCount = 0;
@@ -210,44 +251,101 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
   }
   std::vector<Complex> pinned(static_cast<std::size_t>(n), Complex(0.0, 0.0));
   pinned[static_cast<std::size_t>(pinB)] = Complex(pinDistance, 0.0);
-  std::vector<Eigen::Triplet<Complex>> triplets;
-  triplets.reserve(static_cast<std::size_t>(chart.faceCount()) * 6 + loop.size());
   Eigen::VectorXcd rhs = Eigen::VectorXcd::Zero(freeCount);
-  // Entry (a, b) of H, and (b, a) = conj(value) when a != b.
-  auto add = [&](int a, int b, Complex value) {
+  // The lower triangle is written column by column from the chart's edges instead of from
+  // triplets: the diagonal sums its corners' weights and each edge its two triangles' weights in
+  // the triplets' order, so the matrix is the same to the bit.
+  std::vector<double> diagonal(static_cast<std::size_t>(n), 0.0);
+  std::vector<double> edgeWeight(static_cast<std::size_t>(chart.edgeCount()), 0.0);
+  // The pinned vertices move to the right-hand side: rhs_a -= H_ab z_b for free a, pinned b.
+  auto addPinned = [&](int a, int b, Complex value) {
     const int fa = freeIndex[static_cast<std::size_t>(a)];
     const int fb = freeIndex[static_cast<std::size_t>(b)];
-    if (fa >= 0 && fb >= 0)
-    {
-      triplets.emplace_back(std::max(fa, fb), std::min(fa, fb), fa >= fb ? value : std::conj(value));
-    }
-    else if (fa >= 0)
+    if (fa >= 0 && fb < 0)
     {
       rhs[fa] -= value * pinned[static_cast<std::size_t>(b)];
     }
-    else if (fb >= 0 && a != b)
+    else if (fb >= 0 && fa < 0)
     {
       rhs[fb] -= std::conj(value) * pinned[static_cast<std::size_t>(a)];
     }
   };
-  forEachCotangentWeight(chart, cotangents, [&](int i, int j, double weight) {
-    add(i, i, weight);
-    add(j, j, weight);
-    add(i, j, -weight);
-  });
-  // C_ij = -1/2 for a boundary edge i -> j, so H_ij = -i C_ij = i / 2.
+  for (int f = 0; f < chart.faceCount(); ++f)
+  {
+    const Triangle& t = chart.triangle(f);
+    for (int k = 0; k < 3; ++k)
+    {
+      // Edge (k + 1) % 3 joins corners k + 1 and k + 2, opposite corner k.
+      const int i = t[static_cast<std::size_t>((k + 1) % 3)];
+      const int j = t[static_cast<std::size_t>((k + 2) % 3)];
+      const double weight = 0.5 * cotangents[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)];
+      diagonal[static_cast<std::size_t>(i)] += weight;
+      diagonal[static_cast<std::size_t>(j)] += weight;
+      edgeWeight[static_cast<std::size_t>(chart.faceEdge(f, (k + 1) % 3))] += weight;
+      addPinned(i, j, -weight);
+    }
+  }
+  // C_ij = -1/2 for a boundary edge i -> j, so H_ij = -i C_ij = i / 2: per edge, the imaginary
+  // part of H at (larger vertex, smaller vertex).
+  std::vector<double> edgeImaginary(static_cast<std::size_t>(chart.edgeCount()), 0.0);
   for (std::size_t e = 0; e < loop.size(); ++e)
   {
-    add(loop[e], loop[(e + 1) % loop.size()], Complex(0.0, 0.5));
+    const int i = loop[e];
+    const int j = loop[(e + 1) % loop.size()];
+    const IndexRange neighbors = chart.vertexNeighbors(i);
+    const std::size_t at = static_cast<std::size_t>(std::find(neighbors.begin(), neighbors.end(), j) - neighbors.begin());
+    edgeImaginary[static_cast<std::size_t>(chart.vertexEdges(i)[at])] = i > j ? 0.5 : -0.5;
+    addPinned(i, j, Complex(0.0, 0.5));
+  }
+  // Free vertices keep the chart's order, so column fv holds the neighbours w > v.
+  std::size_t nonZeros = 0;
+  for (int v = 0; v < n; ++v)
+  {
+    if (freeIndex[static_cast<std::size_t>(v)] >= 0)
+    {
+      ++nonZeros;
+      for (int w : chart.vertexNeighbors(v))
+      {
+        nonZeros += w > v && freeIndex[static_cast<std::size_t>(w)] >= 0 ? 1 : 0;
+      }
+    }
   }
   Eigen::SparseMatrix<Complex> lower(freeCount, freeCount);
-  lower.setFromTriplets(triplets.begin(), triplets.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> ldlt(lower);
-  if (ldlt.info() != Eigen::Success)
+  lower.resizeNonZeros(static_cast<Eigen::Index>(nonZeros));
+  int* columnStart = lower.outerIndexPtr();
+  int* rows = lower.innerIndexPtr();
+  Complex* values = lower.valuePtr();
+  std::vector<std::pair<int, int>> below; // (row, edge) of one column
+  int entry = 0;
+  for (int v = 0; v < n; ++v)
   {
-    throw Error("the conformal map's system is not positive definite");
+    const int fv = freeIndex[static_cast<std::size_t>(v)];
+    if (fv < 0)
+    {
+      continue;
+    }
+    columnStart[fv] = entry;
+    rows[entry] = fv;
+    values[entry++] = Complex(diagonal[static_cast<std::size_t>(v)], 0.0);
+    below.clear();
+    const IndexRange neighbors = chart.vertexNeighbors(v);
+    for (std::size_t i = 0; i < neighbors.size(); ++i)
+    {
+      const int fw = freeIndex[static_cast<std::size_t>(neighbors[i])];
+      if (neighbors[i] > v && fw >= 0)
+      {
+        below.emplace_back(fw, chart.vertexEdges(v)[i]);
+      }
+    }
+    std::sort(below.begin(), below.end());
+    for (const auto& [row, edge] : below)
+    {
+      rows[entry] = row;
+      values[entry++] = Complex(-edgeWeight[static_cast<std::size_t>(edge)], edgeImaginary[static_cast<std::size_t>(edge)]);
+    }
   }
-  const Eigen::VectorXcd solution = ldlt.solve(rhs);
+  columnStart[freeCount] = entry;
+  const Eigen::VectorXcd solution = solveHermitian(lower, rhs, solver);
   std::vector<Vector2> uv(static_cast<std::size_t>(n));
   for (int v = 0; v < n; ++v)
   {
@@ -299,9 +397,9 @@ std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, const std::ve
   const int pinA = farthestBoundaryVertex(chart, loop, farthestBoundaryVertex(chart, loop, loop.front()));
   const int pinB = farthestBoundaryVertex(chart, loop, pinA);
   const double pinDistance = (chart.point(pinA) - chart.point(pinB)).norm();
-  if (solver == ChartSolver::ComplexLDLT)
+  if (solver == ChartSolver::ComplexLDLT || solver == ChartSolver::ComplexCHOLMOD)
   {
-    std::vector<Vector2> uv = complexConformalMap(chart, cotangents, loop, pinA, pinB, pinDistance);
+    std::vector<Vector2> uv = complexConformalMap(chart, cotangents, loop, pinA, pinB, pinDistance, solver);
     for (std::size_t v = 0; v < uv.size(); ++v)
     {
       if (!uv[v].allFinite())
@@ -439,8 +537,10 @@ FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector
   const double F = 0.5 * (J(0, 0) - J(1, 1));
   const double G = 0.5 * (J(1, 0) + J(0, 1));
   const double H = 0.5 * (J(1, 0) - J(0, 1));
-  const double Q = std::hypot(E, H);
-  const double R = std::hypot(F, G);
+  // sqrt rather than std::hypot, whose guard against overflow (Jacobian entries beyond 1e150) cost
+  // about 2% of parameterizeCharts.
+  const double Q = std::sqrt(E * E + H * H);
+  const double R = std::sqrt(F * F + G * G);
   const double s1 = Q + R;
   const double s2 = std::abs(Q - R);
   FaceDistortion distortion;
@@ -824,15 +924,18 @@ ChartParameterizationResult parameterizeCharts(
   // built that it copies; and the summaries of those cuts.
   std::vector<std::vector<int>> toChart(labels.size());
   std::vector<ChartSummary> summaries(labels.size());
+  // The split mesh's pieces share no vertex: each vertex is in its piece's chart, in increasing order.
+  for (int v = 0; v < split.vertexCount(); ++v)
+  {
+    const int component = split.vertexComponent(v);
+    if (component >= 0)
+    {
+      chartVertices[static_cast<std::size_t>(componentChart[static_cast<std::size_t>(component)])].push_back(v);
+    }
+  }
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
-    std::vector<int>& vertices = chartVertices[c];
-    for (int f : chartFaces[c])
-    {
-      vertices.insert(vertices.end(), split.triangle(f).begin(), split.triangle(f).end());
-    }
-    std::sort(vertices.begin(), vertices.end());
-    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    const std::vector<int>& vertices = chartVertices[c];
     std::vector<Vector3> points(vertices.size());
     for (std::size_t i = 0; i < vertices.size(); ++i)
     {

@@ -29,7 +29,10 @@ enum class ChartMethod
 enum class ChartSolver
 {
   /// The energy as a Hermitian form in z = u + i v: n complex unknowns with the Laplacian's
-  /// pattern, Eigen's SimplicialLDLT.
+  /// pattern, CHOLMOD's L L^H (supernodal or simplicial, as CHOLMOD chooses; AMD ordering). The
+  /// default. Without CHOLMOD, ComplexLDLT.
+  ComplexCHOLMOD,
+  /// The Hermitian form with Eigen's SimplicialLDLT.
   ComplexLDLT,
   /// The real form in (u, v): 2n unknowns, kerf::SparseCholesky (CHOLMOD, supernodal).
   RealCHOLMOD,
@@ -46,7 +49,7 @@ struct ChartParameterizationOptions
   /// LSCM, the default: LinABF costs more per chart (measured in
   /// Documentation/filters/ChartParameterization.md).
   ChartMethod method = ChartMethod::LSCM;
-  ChartSolver solver = ChartSolver::ComplexLDLT;
+  ChartSolver solver = ChartSolver::ComplexCHOLMOD;
   /// Side, in texels, of the grid on which countChartOverlaps samples the layout. Default 1024.
   int overlapResolution = 1024;
   /// Charts that are connected, manifold and consistently oriented but not disks (closed, with
@@ -129,7 +132,7 @@ std::string chartTopologyProblem(const TriangleMesh& chart);
 /// E = E_Dirichlet - A(u, v) (Mullen et al. 2008, section 3), with the two boundary vertices farthest apart (two
 /// sweeps) pinned at (0, 0) and (d, 0), d their 3D distance. Returns one point per vertex. Throws
 /// kerf::Error for a chart that is not a disk or a system the solver cannot factor.
-std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexLDLT);
+std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexCHOLMOD);
 
 /// Linear angle based flattening of a disk: the planar angles of LinABF (linearAngleBasedAngles,
 /// Zayer, Lévy and Seidel 2007), then the positions that fit them best, by the least-squares
@@ -140,7 +143,7 @@ std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSo
 /// the 3D cotangents, solved the same way, with the same two pinned vertices: LSCM is the case
 /// alpha = the 3D angles. Returns one point per vertex. Throws kerf::Error for a chart that is not
 /// a disk or a system that cannot be factored.
-std::vector<Vector2> linearAngleBasedFlattening(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexLDLT);
+std::vector<Vector2> linearAngleBasedFlattening(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexCHOLMOD);
 
 /// Distortion of the affine map from triangle (p0, p1, p2) to (t0, t1, t2): the singular values
 /// s1 >= s2 of its Jacobian.
