@@ -33,7 +33,9 @@ const Command Commands[] = {
     "stroke splits the mesh into segments (cell array Segment).\n"
     "Cut options: --weighting uniform|cotangent|concavity|smooth-concavity (cotangent),\n"
     "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.005),\n"
-    "--soft-weight W (1)." },
+    "--soft-weight W (1), --formulation auto|least-squares|point-values (auto: least squares\n"
+    "below 200,000 triangles, point values from there). --timings prints the time of each step\n"
+    "(reading, each stage, writing)." },
   { "unwrap",
     "kerf unwrap MESH --curves CURVES [-o OUT.obj] [--png OUT.png] [--seams N] [--mode M] [--margin F]\n"
     "            [--method lscm|linabf] [--checker N] [--refuse-non-disks]",
