@@ -10,7 +10,7 @@ namespace kerf
 namespace
 {
 // Options that take no value.
-const char* const Flags[] = { "help", "quiet", "no-pictures", "refuse-non-disks" };
+const char* const Flags[] = { "help", "quiet", "timings", "no-pictures", "refuse-non-disks" };
 
 std::string range(double minimum, double maximum)
 {

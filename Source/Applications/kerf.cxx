@@ -32,8 +32,10 @@ const Command Commands[] = {
     "becomes +1/-1 constraints on both sides, the field is solved, and the isoline nearest the\n"
     "stroke splits the mesh into segments (cell array Segment).\n"
     "Cut options: --weighting uniform|cotangent|concavity|smooth-concavity (cotangent),\n"
-    "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.005, at most 5% of a stroke's length),\n"
-    "--soft-weight W (1)." },
+    "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.005, at most\n"
+    "5% of a stroke's length), --soft-weight W (1), --formulation auto|least-squares|point-values\n"
+    "(auto: least squares below 200,000 triangles, point values from there). --timings prints the\n"
+    "time of each step (reading, each stage, writing)." },
   { "unwrap",
     "kerf unwrap MESH --curves CURVES [-o OUT.obj] [--png OUT.png] [--seams N] [--mode M] [--margin F]\n"
     "            [--method lscm|linabf] [--checker N] [--refuse-non-disks]",

@@ -48,8 +48,12 @@ Writer makeWriter(const std::string& extension, const char* fileName)
 {
   if (extension == ".vtp")
   {
+    // Raw appended blocks with LZ4: zlib took 5.5 s to save 12% of a 1M-triangle cut's 144 MB
+    // of doubles, base64 a third more bytes; LZ4 writes it in 0.3 s (VTK's XML readers read LZ4 blocks).
     auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    writer->SetDataModeToBinary();
+    writer->SetDataModeToAppended();
+    writer->EncodeAppendedDataOff();
+    writer->SetCompressorTypeToLZ4();
     return wrap(writer, fileName);
   }
   if (extension == ".vtk")

@@ -2,7 +2,7 @@
  * @class vtkMeshFileWriter
  * @brief Writes a surface mesh in the format its file extension names.
  *
- * .vtp (vtkXMLPolyDataWriter, inline binary so that the file reads back everywhere), .vtk
+ * .vtp (vtkXMLPolyDataWriter, raw appended blocks compressed with LZ4: fast to write and read), .vtk
  * (vtkPolyDataWriter, binary), .ply (vtkPLYWriter, binary), .obj (vtkOBJWriter), .stl
  * (vtkSTLWriter, binary) and .off (vtkOFFWriter). Only .vtp and .vtk keep every data array; the
  * other formats hold the geometry. Unknown extensions and write failures are reported with

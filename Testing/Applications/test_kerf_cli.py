@@ -70,10 +70,16 @@ class CommandLine(unittest.TestCase):
         cut = os.path.join(self.folder, "camel-cut.vtk")
         result = run("cut", os.path.join(SOURCE, "Data", "camel.off"), "--stroke",
                      os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"), "-o", cut,
-                     "--weighting", "concavity")
+                     "--weighting", "concavity", "--timings")
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("1 curve (1 closed)", result.stdout)
         self.assertIn("2 segments", result.stdout)
+        self.assertIn("time: read mesh", result.stdout)
+        self.assertIn("write surface", result.stdout)
+        result = run("cut", os.path.join(SOURCE, "Data", "camel.off"), "--stroke",
+                     os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"), "--formulation", "fastest")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--formulation must be", result.stderr)
         result = run("cut", os.path.join(SOURCE, "Data", "camel.off"), "--stroke",
                      os.path.join(SOURCE, "Data", "camel-neck-stroke.vtk"), "--weighting", "mystery")
         self.assertEqual(result.returncode, 1)

@@ -3,7 +3,7 @@
 //
 // The files are the cube dumbbell (BenchmarkMeshes.h) written once per run into the temporary
 // folder, as `kerf convert` writes them (vtkMeshFileWriter: binary PLY, STL, legacy VTK, VTP with
-// zlib; OBJ as text) plus ASCII PLY and STL. Each iteration reads the file with a new reader.
+// raw appended LZ4 blocks, zlib before 2026-11-26; OBJ as text) plus ASCII PLY and STL. Each iteration reads the file with a new reader.
 #include "BenchmarkMeshes.h"
 #include "BenchmarkPolyData.h"
 #include "KerfBenchmarks.h"

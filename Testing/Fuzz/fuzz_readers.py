@@ -33,15 +33,72 @@ SANITIZER_MARKS = ("AddressSanitizer", "LeakSanitizer", "UndefinedBehaviorSaniti
                    "runtime error:", "Sanitizer:DEADLYSIGNAL")
 
 
+def lz4_block(source, size):
+    """The `size` bytes an LZ4 block (the format of vtkLZ4DataCompressor) holds."""
+    out = bytearray()
+    i = 0
+    while i < len(source):
+        token = source[i]
+        i += 1
+        length = token >> 4
+        if length == 15:
+            while True:
+                i += 1
+                length += source[i - 1]
+                if source[i - 1] != 255:
+                    break
+        out += source[i:i + length]
+        i += length
+        if i >= len(source):
+            break
+        offset = source[i] | (source[i + 1] << 8)
+        i += 2
+        match = (token & 15) + 4
+        if match == 19:
+            while True:
+                i += 1
+                match += source[i - 1]
+                if source[i - 1] != 255:
+                    break
+        if offset == 0 or offset > len(out):
+            raise ValueError("LZ4 block refers before its start")
+        begin = len(out) - offset
+        for k in range(match):
+            out.append(out[begin + k])
+    if len(out) != size:
+        raise ValueError("LZ4 block of %d bytes, expected %d" % (len(out), size))
+    return bytes(out)
+
+
+def decompress(compressor, data, size):
+    if compressor == "vtkZLibDataCompressor":
+        return zlib.decompress(data)
+    if compressor == "vtkLZ4DataCompressor":
+        return lz4_block(data, size)
+    raise ValueError("unexpected compressor %r" % compressor)
+
+
 def vtp_float_arrays(path):
-    """(name, values) of every floating-point DataArray in a VTP file written by VTK in binary or
-    ascii mode, zlib-compressed or not. Raises ValueError if the file does not parse."""
-    root = ElementTree.parse(path).getroot()
+    """(name, values) of every floating-point DataArray in a VTP file written by VTK in binary,
+    appended (raw) or ascii mode, zlib- or LZ4-compressed or not. Raises ValueError if the file
+    does not parse."""
+    with open(path, "rb") as f:
+        content = f.read()
+    appended = b""
+    marker = content.find(b"<AppendedData")
+    if marker >= 0:
+        # Raw appended bytes are not XML: parse the header alone, read the blocks by offset.
+        underscore = content.index(b"_", marker)
+        if b'encoding="raw"' not in content[marker:underscore]:
+            raise ValueError("unexpected appended-data encoding")
+        appended = content[underscore + 1:]
+        content = content[:marker] + b"</VTKFile>"
+    root = ElementTree.fromstring(content)
     if root.tag != "VTKFile":
         raise ValueError("not a VTKFile")
     word = "<Q" if root.get("header_type") == "UInt64" else "<I"
     word_size = struct.calcsize(word)
-    compressed = root.get("compressor") is not None
+    compressor = root.get("compressor")
     arrays = []
     for array in root.iter("DataArray"):
         type_name = array.get("type")
@@ -51,7 +108,23 @@ def vtp_float_arrays(path):
         text = "".join((array.text or "").split())
         if array.get("format") == "ascii":
             values = [float(t) for t in (array.text or "").split()]
-        elif array.get("format") == "binary" and not compressed:
+        elif array.get("format") == "appended":
+            at = int(array.get("offset"))
+            if compressor is None:
+                size = struct.unpack(word, appended[at:at + word_size])[0]
+                data = appended[at + word_size:at + word_size + size]
+            else:
+                blocks, block_size, last_size = struct.unpack("<3" + word[1], appended[at:at + 3 * word_size])
+                sizes = struct.unpack("<%d%s" % (blocks, word[1]),
+                                      appended[at + 3 * word_size:at + (3 + blocks) * word_size])
+                position = at + (3 + blocks) * word_size
+                data = bytearray()
+                for b, size in enumerate(sizes):
+                    expected = last_size if b == blocks - 1 and last_size else block_size
+                    data += decompress(compressor, appended[position:position + size], expected)
+                    position += size
+            values = [v[0] for v in struct.iter_unpack(code, bytes(data))]
+        elif array.get("format") == "binary" and compressor is None:
             raw = base64.b64decode(text)
             size = struct.unpack(word, raw[:word_size])[0]
             data = raw[word_size:word_size + size]
@@ -66,8 +139,9 @@ def vtp_float_arrays(path):
             data = base64.b64decode(text[header_chars:])
             raw = bytearray()
             position = 0
-            for size in header[3:]:
-                raw += zlib.decompress(data[position:position + size])
+            for b, size in enumerate(header[3:]):
+                expected = header[2] if b == header[0] - 1 and header[2] else header[1]
+                raw += decompress(compressor, data[position:position + size], expected)
                 position += size
             values = [v[0] for v in struct.iter_unpack(code, bytes(raw))]
         else:
@@ -85,7 +159,7 @@ def check_outputs(paths, stdout):
             return "wrong", "exit 0 without " + os.path.basename(path)
         try:
             arrays = vtp_float_arrays(path)
-        except (ValueError, ElementTree.ParseError, zlib.error, struct.error) as e:
+        except (ValueError, IndexError, ElementTree.ParseError, zlib.error, struct.error) as e:
             return "wrong", "%s does not parse: %s" % (os.path.basename(path), e)
         for name, values in arrays:
             if any(math.isnan(v) for v in values):

@@ -9,8 +9,9 @@
 
 #include <vtkNew.h>
 
-#include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 class vtkPolyData;
 
@@ -24,11 +25,12 @@ struct CutPipeline
   vtkNew<vtkStrokeConstraints> constraints;
   vtkNew<vtkHarmonicField> field;
   vtkNew<vtkIsolineCut> cut;
-  std::map<std::string, double> milliseconds; ///< per stage
+  std::vector<std::pair<std::string, double>> milliseconds; ///< per stage, in the order run
 
-  /// mesh -> descriptors -> stroke constraints -> harmonic field -> cut nearest the stroke, with
-  /// the cut options (--weighting, --iso-value, --samples, --offset, --soft-weight).
-  void Run(vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& args);
+  /// mesh -> (descriptors ->) stroke constraints -> harmonic field -> cut nearest the stroke, with
+  /// the cut options (--weighting, --formulation, --iso-value, --samples, --offset, --soft-weight).
+  /// The descriptors only add output arrays.
+  void Run(vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& args, bool withDescriptors);
   /// Left: the field with isolines, the stroke and its constraints; right: the segments and the cut.
   void Render(vtkPolyData* stroke, const std::string& caption, const std::string& file);
 };

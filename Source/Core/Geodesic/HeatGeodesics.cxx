@@ -53,7 +53,7 @@ public:
     std::vector<int> given;
     if (ordering == CholeskyOrdering::Geometric)
     {
-      given = geometricNestedDissection(points, lowerPattern, getenv("KERF_LEAF") ? atoi(getenv("KERF_LEAF")) : 64);
+      given = geometricNestedDissection(points, lowerPattern);
     }
     cholmod_factor* symbolic = given.empty() ? cholmod_analyze(&view, &this->Common)
                                              : cholmod_analyze_p(&view, given.data(), nullptr, 0, &this->Common);
@@ -67,7 +67,6 @@ public:
       throw Error("the sparse Cholesky analysis of the heat-method matrices failed");
     }
     this->Factors.push_back(symbolic);
-    if (getenv("KERF_STATS")) fprintf(stderr, "n %d lnz %g fl %g nsuper %d\n", (int)symbolic->n, this->Common.lnz, this->Common.fl, (int)symbolic->nsuper);
     for (int i = 1; i < count; ++i)
     {
       this->Factors.push_back(cholmod_copy_factor(symbolic, &this->Common));

@@ -35,7 +35,12 @@ private:
     int count = 0; // leaves: number of faces; 0 for inner nodes
     int right = -1; // inner nodes: the right child
   };
-  int build(int first, int count, std::vector<Vector3>& centroids);
+  struct Centroid
+  {
+    Vector3 position;
+    int face = -1;
+  };
+  int build(int first, int count, std::vector<Centroid>& centroids);
   void search(int node, const Vector3& query, Hit& best) const;
 
   const TriangleMesh& Mesh;

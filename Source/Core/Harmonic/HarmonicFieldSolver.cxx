@@ -13,6 +13,12 @@
 namespace kerf
 {
 
+SoftConstraintFormulation automaticFormulation(long long triangleCount)
+{
+  return triangleCount >= PointValueTriangles ? SoftConstraintFormulation::PointValues
+                                              : SoftConstraintFormulation::LeastSquares;
+}
+
 namespace
 {
 bool sameSoftLocations(const std::vector<SoftConstraint>& a, const std::vector<SoftConstraint>& b)

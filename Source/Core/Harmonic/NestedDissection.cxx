@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 
 namespace kerf
 {
@@ -55,14 +56,22 @@ std::vector<int> geometricNestedDissection(
   }
 
   // ids[begin, end) is a part to order into perm[begin, end): its halves first, its separator
-  // last. side[v] tells, while a part is split, which half v is in (stamped per split).
+  // last. A part's split depends only on which rows it holds (the median splits by coordinate,
+  // ties by row index, and leaves and separators are sorted), never on their order in ids, so the
+  // three trial axes are selected on contiguous (coordinate, row) keys and the three separators
+  // found in one pass over the adjacency: at 1M triangles this took 0.8 s with one selection and
+  // one adjacency pass per axis on the rows themselves.
   std::vector<int> ids(static_cast<std::size_t>(n));
   for (int v = 0; v < n; ++v)
   {
     ids[v] = v;
   }
   std::vector<int> perm(static_cast<std::size_t>(n));
-  std::vector<int> side(static_cast<std::size_t>(n), -1);
+  std::vector<int> partOf(static_cast<std::size_t>(n), -1); // the stamp of the part being split
+  std::vector<unsigned char> lower(static_cast<std::size_t>(n), 0);   // bit a: in axis a's first half
+  std::vector<unsigned char> touches(static_cast<std::size_t>(n), 0); // bit a: a neighbour across axis a's median
+  std::vector<std::pair<double, int>> keys(static_cast<std::size_t>(n));
+  std::vector<int> grouped(static_cast<std::size_t>(n));
   std::vector<std::array<int, 2>> parts{ { 0, n } };
   int stamp = 0;
   while (!parts.empty())
@@ -76,88 +85,89 @@ std::vector<int> geometricNestedDissection(
       std::copy(ids.begin() + begin, ids.begin() + end, perm.begin() + begin);
       continue;
     }
-    const int middle = begin + size / 2;
-    auto splitAt = [&](int axis) {
-      std::nth_element(ids.begin() + begin, ids.begin() + middle, ids.begin() + end, [&](int a, int b) {
-        const double pa = points[a][axis], pb = points[b][axis];
-        return pa < pb || (pa == pb && a < b);
-      });
-    };
-    // Halves stamped 2s (first) and 2s + 1 (second); the separator is the half's rows with a
-    // neighbour in the other half, taken from the half where it is smaller.
-    int first = 0, second = 0;
-    auto touchesOther = [&](int v, int other) {
-      for (int k = start[v]; k < start[v + 1]; ++k)
-      {
-        if (side[adjacency[k]] == other)
-        {
-          return true;
-        }
-      }
-      return false;
-    };
-    int firstSeparator = 0, secondSeparator = 0;
-    auto separators = [&]() {
-      first = 2 * stamp;
-      second = 2 * stamp + 1;
-      ++stamp;
-      for (int i = begin; i < end; ++i)
-      {
-        side[ids[i]] = i < middle ? first : second;
-      }
-      firstSeparator = secondSeparator = 0;
-      for (int i = begin; i < end; ++i)
-      {
-        const int v = ids[i];
-        if (i < middle ? touchesOther(v, second) : touchesOther(v, first))
-        {
-          ++(i < middle ? firstSeparator : secondSeparator);
-        }
-      }
-      return std::min(firstSeparator, secondSeparator);
-    };
-    // The axis whose median plane gives the smallest separator.
-    int bestAxis = 0, bestSize = -1;
+    const int half = size / 2;
+    ++stamp;
+    for (int i = begin; i < end; ++i)
+    {
+      partOf[ids[i]] = stamp;
+      lower[ids[i]] = 0;
+    }
+    // Each axis's first half: the `half` smallest rows by (coordinate, row).
     for (int axis = 0; axis < 3; ++axis)
     {
-      splitAt(axis);
-      const int separatorSize = separators();
-      if (bestSize < 0 || separatorSize < bestSize)
+      for (int i = begin; i < end; ++i)
       {
-        bestAxis = axis;
-        bestSize = separatorSize;
+        keys[i - begin] = { points[ids[i]][axis], ids[i] };
+      }
+      std::nth_element(keys.begin(), keys.begin() + half, keys.begin() + size);
+      for (int i = 0; i < half; ++i)
+      {
+        lower[keys[i].second] |= static_cast<unsigned char>(1 << axis);
       }
     }
-    if (bestAxis != 2)
-    {
-      splitAt(bestAxis);
-      separators();
-    }
-    const bool cutFirst = firstSeparator <= secondSeparator;
-    // Stable partition of the part into [first half][second half][separator].
-    std::array<std::vector<int>, 3> groups;
+    // Per axis, the rows of each half with a neighbour in the other half; the separator is taken
+    // from the half where it is smaller.
+    std::array<int, 3> firstSeparator{ { 0, 0, 0 } }, secondSeparator{ { 0, 0, 0 } };
     for (int i = begin; i < end; ++i)
     {
       const int v = ids[i];
-      const bool inFirst = i < middle;
-      const bool separator = inFirst == cutFirst && touchesOther(v, inFirst ? second : first);
-      groups[separator ? 2 : (inFirst ? 0 : 1)].push_back(v);
+      unsigned char across = 0;
+      for (int k = start[v]; k < start[v + 1]; ++k)
+      {
+        const int u = adjacency[k];
+        if (partOf[u] == stamp)
+        {
+          across |= static_cast<unsigned char>(lower[u] ^ lower[v]);
+        }
+      }
+      touches[v] = across;
+      for (int axis = 0; axis < 3; ++axis)
+      {
+        if (across & (1 << axis))
+        {
+          ++((lower[v] & (1 << axis)) ? firstSeparator[axis] : secondSeparator[axis]);
+        }
+      }
     }
-    int at = begin;
-    for (const std::vector<int>& group : groups)
+    // The axis whose median plane gives the smallest separator.
+    int bestAxis = 0;
+    for (int axis = 1; axis < 3; ++axis)
     {
-      std::copy(group.begin(), group.end(), ids.begin() + at);
-      at += static_cast<int>(group.size());
+      if (std::min(firstSeparator[axis], secondSeparator[axis]) <
+        std::min(firstSeparator[bestAxis], secondSeparator[bestAxis]))
+      {
+        bestAxis = axis;
+      }
     }
-    const int firstEnd = begin + static_cast<int>(groups[0].size());
-    const int secondEnd = firstEnd + static_cast<int>(groups[1].size());
+    const bool cutFirst = firstSeparator[bestAxis] <= secondSeparator[bestAxis];
+    const unsigned char bit = static_cast<unsigned char>(1 << bestAxis);
+    // [first half][second half][separator].
+    int firstEnd = begin;
+    for (int i = begin; i < end; ++i)
+    {
+      const int v = ids[i];
+      const bool inFirst = (lower[v] & bit) != 0;
+      firstEnd += inFirst && !(inFirst == cutFirst && (touches[v] & bit)) ? 1 : 0;
+    }
+    int secondEnd = firstEnd;
+    for (int i = begin; i < end; ++i)
+    {
+      const int v = ids[i];
+      const bool inFirst = (lower[v] & bit) != 0;
+      secondEnd += !inFirst && !(inFirst == cutFirst && (touches[v] & bit)) ? 1 : 0;
+    }
+    int at[3] = { begin, firstEnd, secondEnd };
+    for (int i = begin; i < end; ++i)
+    {
+      const int v = ids[i];
+      const bool inFirst = (lower[v] & bit) != 0;
+      const bool separator = inFirst == cutFirst && (touches[v] & bit);
+      grouped[at[separator ? 2 : (inFirst ? 0 : 1)]++] = v;
+    }
+    std::copy(grouped.begin() + begin, grouped.begin() + end, ids.begin() + begin);
     // The separator keeps increasing index order, eliminated last.
     std::sort(ids.begin() + secondEnd, ids.begin() + end);
     std::copy(ids.begin() + secondEnd, ids.begin() + end, perm.begin() + secondEnd);
-    for (int i = begin; i < end; ++i)
-    {
-      side[ids[i]] = -1;
-    }
     if (secondEnd > firstEnd)
     {
       parts.push_back({ firstEnd, secondEnd });
