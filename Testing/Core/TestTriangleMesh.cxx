@@ -8,7 +8,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
 #include <set>
 #include <string>
@@ -434,6 +437,125 @@ TEST(MeshValidation, BowtieVertex)
   EXPECT_EQ(report.nonManifoldVertices, 1);
   EXPECT_EQ(report.nonManifoldEdges, 0);
   EXPECT_EQ(report.components, 1);
+}
+
+// inspectMesh finds pinched vertices by walking each vertex's fan and duplicates through the
+// edge they share, with a fuller search where those shortcuts cannot tell: both counts equal a
+// search over all pairs of triangles on tangled triangle soups (pinches, closed fans meeting at
+// a vertex, duplicates two and three deep, edges of three and more triangles, mixed orientation).
+TEST(MeshValidation, PinchesAndDuplicatesEqualAnExhaustiveSearch)
+{
+  std::mt19937 random(20261126);
+  int pinchedSeen = 0;
+  int duplicatesSeen = 0;
+  for (int trial = 0; trial < 300; ++trial)
+  {
+    const int n = 5 + trial % 9;
+    std::vector<Vector3> points;
+    for (int v = 0; v < n; ++v)
+    {
+      points.emplace_back(std::cos(v * 2.4), std::sin(v * 1.7), 0.1 * v);
+    }
+    // A fan or two around vertex 0 (closed or open), then random triangles and copies.
+    std::vector<Triangle> triangles;
+    const int ring = std::min(n - 1, 4 + trial % 4);
+    for (int i = 0; i < ring; ++i)
+    {
+      if (i + 1 < ring || trial % 2 == 0)
+      {
+        triangles.push_back({ { 0, 1 + i, 1 + (i + 1) % ring } });
+      }
+    }
+    std::uniform_int_distribution<int> vertex(0, n - 1);
+    const int extra = 2 + trial % 7;
+    for (int i = 0; i < extra; ++i)
+    {
+      Triangle t{ { vertex(random), vertex(random), vertex(random) } };
+      if (t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+      {
+        triangles.push_back(t);
+      }
+    }
+    const int copies = trial % 3;
+    for (int i = 0; i < copies && !triangles.empty(); ++i)
+    {
+      Triangle t = triangles[std::uniform_int_distribution<int>(0, static_cast<int>(triangles.size()) - 1)(random)];
+      if (random() % 2)
+      {
+        std::swap(t[1], t[2]);
+      }
+      triangles.push_back(t);
+    }
+    const TriangleMesh mesh(points, triangles);
+    const MeshReport report = inspectMesh(mesh);
+
+    // Pinched vertices: the triangles at v joined across sides at v held by exactly two triangles.
+    auto sideHolders = [&](int a, int b) {
+      int count = 0;
+      for (const Triangle& t : triangles)
+      {
+        count += std::count(t.begin(), t.end(), a) && std::count(t.begin(), t.end(), b) ? 1 : 0;
+      }
+      return count;
+    };
+    int pinched = 0;
+    for (int v = 0; v < n; ++v)
+    {
+      std::vector<int> around;
+      for (int f = 0; f < static_cast<int>(triangles.size()); ++f)
+      {
+        if (std::count(triangles[f].begin(), triangles[f].end(), v))
+        {
+          around.push_back(f);
+        }
+      }
+      std::vector<int> fan(around.size());
+      std::iota(fan.begin(), fan.end(), 0);
+      for (bool changed = true; changed;)
+      {
+        changed = false;
+        for (std::size_t i = 0; i < around.size(); ++i)
+        {
+          for (std::size_t j = 0; j < around.size(); ++j)
+          {
+            for (int w : triangles[around[i]])
+            {
+              if (w != v && std::count(triangles[around[j]].begin(), triangles[around[j]].end(), w) && i != j &&
+                sideHolders(v, w) == 2 && fan[j] > fan[i])
+              {
+                fan[j] = fan[i];
+                changed = true;
+              }
+            }
+          }
+        }
+      }
+      pinched += std::set<int>(fan.begin(), fan.end()).size() > 1 ? 1 : 0;
+    }
+    int duplicates = 0;
+    for (std::size_t f = 0; f < triangles.size(); ++f)
+    {
+      Triangle sorted = triangles[f];
+      std::sort(sorted.begin(), sorted.end());
+      for (std::size_t g = 0; g < f; ++g)
+      {
+        Triangle other = triangles[g];
+        std::sort(other.begin(), other.end());
+        if (other == sorted)
+        {
+          ++duplicates;
+          break;
+        }
+      }
+    }
+    ASSERT_EQ(report.nonManifoldVertices, pinched) << "trial " << trial;
+    ASSERT_EQ(report.duplicateFaces, duplicates) << "trial " << trial;
+    pinchedSeen += pinched > 0 ? 1 : 0;
+    duplicatesSeen += duplicates > 1 ? 1 : 0;
+  }
+  // The soups do hold what the shortcuts must hand over to the fuller search.
+  EXPECT_GT(pinchedSeen, 100);
+  EXPECT_GT(duplicatesSeen, 10);
 }
 
 TEST(MeshValidation, FlippedTriangle)

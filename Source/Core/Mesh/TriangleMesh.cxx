@@ -157,7 +157,12 @@ void TriangleMesh::buildEdges()
   this->EdgeVertices.clear();
   this->EdgeFaces.clear();
   this->EdgeFaceCounts.clear();
-  this->EdgeVertices.reserve(this->Triangles.size() * 3 / 2 + 16);
+  // A closed manifold surface has 3/2 edges per triangle; reserving that for the three edge
+  // arrays spares most of their regrowth (copies and fresh pages) on large meshes.
+  const std::size_t expectedEdges = this->Triangles.size() * 3 / 2 + 16;
+  this->EdgeVertices.reserve(expectedEdges);
+  this->EdgeFaces.reserve(expectedEdges);
+  this->EdgeFaceCounts.reserve(expectedEdges);
 
   std::vector<int> stamp(n, -1);
   std::vector<int> slot(n, -1);
