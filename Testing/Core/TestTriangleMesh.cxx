@@ -351,6 +351,76 @@ TEST(TriangleMesh, RefinedEqualsTheMeshBuiltFromScratch)
   }
 }
 
+// componentMeshes() copies each component's adjacency instead of searching it again: each part
+// must be the mesh built from scratch from the component's points and triangles, number for
+// number (several components, unreferenced points, non-manifold edges, repeated vertices).
+TEST(TriangleMesh, ComponentMeshesEqualTheMeshesBuiltFromScratch)
+{
+  std::vector<TriangleMesh> meshes;
+  meshes.push_back(makeIcosphere(1.0, 2));
+  meshes.push_back(TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 },
+                                  { 9, 9, 9 }, { 0, -1, 0 }, { 0, 0, 1 } },
+    { { 0, 1, 2 }, { 3, 4, 5 }, { 1, 0, 7 }, { 0, 1, 8 }, { 2, 2, 1 } }));
+  {
+    // A grid, a torus and a sphere interleaved: points and triangles of the three alternate.
+    const TriangleMesh parts[] = { makeGrid(3.0, 2.0, 6, 4), makeTorus(2.0, 0.5, 12, 6), makeIcosphere(1.0, 1) };
+    std::vector<Vector3> points;
+    std::vector<Triangle> triangles;
+    std::vector<int> offsets;
+    for (const TriangleMesh& part : parts)
+    {
+      offsets.push_back(static_cast<int>(points.size()));
+      points.insert(points.end(), part.points().begin(), part.points().end());
+    }
+    points.emplace_back(7, 7, 7); // unreferenced
+    for (int f = 0; f < 60; ++f)
+    {
+      for (int p = 0; p < 3; ++p)
+      {
+        if (f < parts[p].faceCount())
+        {
+          const Triangle& t = parts[p].triangle(f);
+          triangles.push_back({ t[0] + offsets[p], t[1] + offsets[p], t[2] + offsets[p] });
+        }
+      }
+    }
+    meshes.emplace_back(points, triangles);
+  }
+  for (std::size_t m = 0; m < meshes.size(); ++m)
+  {
+    SCOPED_TRACE("mesh " + std::to_string(m));
+    const TriangleMesh& mesh = meshes[m];
+    const std::vector<TriangleMesh> parts = mesh.componentMeshes();
+    ASSERT_EQ(static_cast<int>(parts.size()), mesh.componentCount());
+    for (int c = 0; c < mesh.componentCount(); ++c)
+    {
+      std::vector<int> local(static_cast<std::size_t>(mesh.vertexCount()), -1);
+      std::vector<Vector3> points;
+      for (int v = 0; v < mesh.vertexCount(); ++v)
+      {
+        if (mesh.vertexComponent(v) == c)
+        {
+          local[static_cast<std::size_t>(v)] = static_cast<int>(points.size());
+          points.push_back(mesh.point(v));
+        }
+      }
+      std::vector<Triangle> triangles;
+      for (int f = 0; f < mesh.faceCount(); ++f)
+      {
+        if (mesh.faceComponent(f) == c)
+        {
+          const Triangle& t = mesh.triangle(f);
+          triangles.push_back({ local[static_cast<std::size_t>(t[0])], local[static_cast<std::size_t>(t[1])],
+            local[static_cast<std::size_t>(t[2])] });
+        }
+      }
+      SCOPED_TRACE("component " + std::to_string(c));
+      expectSameMesh(parts[static_cast<std::size_t>(c)], TriangleMesh(points, triangles));
+    }
+  }
+  EXPECT_EQ(meshes[2].componentCount(), 3);
+}
+
 // Refinements that join or split components, where the components cannot be copied.
 TEST(TriangleMesh, RefinedFindsComponentsThatChange)
 {

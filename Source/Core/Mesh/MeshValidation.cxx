@@ -62,66 +62,6 @@ int fanCount(const TriangleMesh& mesh, int v, std::vector<int>& parent)
   return fans;
 }
 
-// True when the triangles around vertex v form one fan, found by walking from v's first triangle
-// across the edges at v both ways (a fan is a path or a cycle of triangles); false when the walk
-// cannot tell (a triangle repeating a vertex, a walk that ends before reaching them all), and
-// then fanCount decides.
-bool walksOneFan(const TriangleMesh& mesh, int v)
-{
-  const IndexRange faces = mesh.vertexFaces(v);
-  // The sides of triangle f at v: edge ids, -1 when f repeats a vertex.
-  auto sidesAt = [&](int f, std::array<int, 2>& sides) {
-    const Triangle& t = mesh.triangle(f);
-    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
-    {
-      return false;
-    }
-    int found = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      if (t[k] == v || t[(k + 1) % 3] == v)
-      {
-        sides[found++] = k;
-      }
-    }
-    return found == 2;
-  };
-  const int first = faces[0];
-  std::array<int, 2> firstSides{};
-  if (!sidesAt(first, firstSides))
-  {
-    return false;
-  }
-  std::size_t reached = 1;
-  for (int way = 0; way < 2; ++way)
-  {
-    int f = first;
-    int side = firstSides[static_cast<std::size_t>(way)];
-    while (reached <= faces.size())
-    {
-      const int g = mesh.faceNeighbor(f, side);
-      if (g < 0)
-      {
-        break;
-      }
-      if (g == first)
-      {
-        return reached == faces.size(); // a closed fan, walked once round
-      }
-      ++reached;
-      std::array<int, 2> sides{};
-      if (!sidesAt(g, sides))
-      {
-        return false;
-      }
-      const int arrival = mesh.faceEdge(f, side);
-      side = mesh.faceEdge(g, sides[0]) == arrival ? sides[1] : sides[0];
-      f = g;
-    }
-  }
-  return reached == faces.size();
-}
-
 // True if triangle f traverses edge k's vertices in the order (a, b).
 bool traverses(const Triangle& t, int a, int b)
 {
@@ -315,7 +255,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh)
       continue;
     }
     ++referenced;
-    if (!walksOneFan(mesh, v) && fanCount(mesh, v, parent) > 1)
+    if (!mesh.isSingleFan(v) && fanCount(mesh, v, parent) > 1)
     {
       ++report.nonManifoldVertices;
       note(report.nonManifoldVertexIds, v);

@@ -26,11 +26,10 @@ bool shareEdgeAt(const Triangle& a, const Triangle& b, int v)
   return false;
 }
 
-// True if the triangles around v all have one label and, for LabelFans::Separate, are joined
-// into one fan by their neighbours across the edges at v (manifold edges only: where this fails
-// the general path decides, which also joins triangles across non-manifold edges).
-bool isOneFanOfOneLabel(const TriangleMesh& mesh, const std::vector<int>& faceLabels, int v, LabelFans fans,
-  std::vector<std::size_t>& parent)
+// True if the triangles around v all have one label and, for LabelFans::Separate, form one fan
+// (TriangleMesh::isSingleFan: across manifold edges only; where this fails the general path
+// decides, which also joins triangles across non-manifold edges).
+bool isOneFanOfOneLabel(const TriangleMesh& mesh, const std::vector<int>& faceLabels, int v, LabelFans fans)
 {
   const IndexRange faces = mesh.vertexFaces(v);
   const int label = faceLabels[static_cast<std::size_t>(faces[0])];
@@ -45,36 +44,7 @@ bool isOneFanOfOneLabel(const TriangleMesh& mesh, const std::vector<int>& faceLa
   {
     return true;
   }
-  parent.resize(faces.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto root = [&](std::size_t i) {
-    while (parent[i] != i)
-    {
-      i = parent[i];
-    }
-    return i;
-  };
-  std::size_t roots = faces.size();
-  for (std::size_t i = 0; i < faces.size(); ++i)
-  {
-    const Triangle& t = mesh.triangle(faces[i]);
-    for (int k = 0; k < 3; ++k)
-    {
-      const int g = mesh.faceNeighbor(faces[i], k);
-      if (g < 0 || (t[static_cast<std::size_t>(k)] != v && t[static_cast<std::size_t>((k + 1) % 3)] != v))
-      {
-        continue; // no neighbour, or the side opposite v
-      }
-      const std::size_t a = root(i);
-      const std::size_t b = root(static_cast<std::size_t>(std::lower_bound(faces.begin(), faces.end(), g) - faces.begin()));
-      if (a != b)
-      {
-        parent[std::max(a, b)] = std::min(a, b);
-        --roots;
-      }
-    }
-  }
-  return roots == 1;
+  return mesh.isSingleFan(v);
 }
 } // namespace
 
@@ -96,7 +66,7 @@ SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>&
   {
     const IndexRange faces = mesh.vertexFaces(v);
     const std::size_t count = faces.size();
-    if (count > 0 && isOneFanOfOneLabel(mesh, faceLabels, v, fans, group))
+    if (count > 0 && isOneFanOfOneLabel(mesh, faceLabels, v, fans))
     {
       // One copy for all the triangles (most vertices): the pairs and the sort below give the same.
       points.push_back(mesh.point(v));

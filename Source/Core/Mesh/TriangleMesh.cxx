@@ -67,6 +67,93 @@ TriangleMesh::TriangleMesh(std::vector<Vector3> points, std::vector<Triangle> tr
   this->buildComponents();
 }
 
+std::vector<TriangleMesh> TriangleMesh::componentMeshes() const
+{
+  const int count = this->ComponentCount;
+  std::vector<TriangleMesh> parts(static_cast<std::size_t>(count));
+  // Local indices: components keep the increasing order of vertices, triangles and edges, so
+  // each component's edges are found in the order a fresh build would number them.
+  std::vector<int> localVertex(this->Points.size(), -1);
+  std::vector<int> localFace(this->Triangles.size());
+  std::vector<int> localEdge(this->EdgeVertices.size());
+  std::vector<int> vertexCounts(static_cast<std::size_t>(count), 0);
+  std::vector<int> faceCounts(static_cast<std::size_t>(count), 0);
+  std::vector<int> edgeCounts(static_cast<std::size_t>(count), 0);
+  for (int v = 0; v < this->vertexCount(); ++v)
+  {
+    const int c = this->VertexComponents[v];
+    if (c >= 0)
+    {
+      localVertex[v] = vertexCounts[c]++;
+    }
+  }
+  for (int f = 0; f < this->faceCount(); ++f)
+  {
+    localFace[f] = faceCounts[this->FaceComponents[f]]++;
+  }
+  for (int e = 0; e < this->edgeCount(); ++e)
+  {
+    localEdge[e] = edgeCounts[this->VertexComponents[this->EdgeVertices[e][0]]]++;
+  }
+  for (int c = 0; c < count; ++c)
+  {
+    TriangleMesh& part = parts[c];
+    part.Points.reserve(vertexCounts[c]);
+    part.VertexFaceOffsets.reserve(vertexCounts[c] + 1);
+    part.VertexFaceOffsets.push_back(0);
+    part.Triangles.reserve(faceCounts[c]);
+    part.FaceEdges.reserve(faceCounts[c]);
+    part.FaceNeighbors.reserve(faceCounts[c]);
+    part.EdgeVertices.reserve(edgeCounts[c]);
+    part.EdgeFaces.reserve(edgeCounts[c]);
+    part.EdgeFaceCounts.reserve(edgeCounts[c]);
+    part.ComponentCount = 1;
+    part.FaceComponents.assign(faceCounts[c], 0);
+    part.VertexComponents.assign(vertexCounts[c], 0);
+  }
+  const auto mapped = [](const std::vector<int>& local, int i) { return i < 0 ? -1 : local[i]; };
+  for (int v = 0; v < this->vertexCount(); ++v)
+  {
+    const int c = this->VertexComponents[v];
+    if (c < 0)
+    {
+      continue;
+    }
+    TriangleMesh& part = parts[c];
+    part.Points.push_back(this->Points[v]);
+    for (int f : this->vertexFaces(v))
+    {
+      part.VertexFaceList.push_back(localFace[f]);
+    }
+    part.VertexFaceOffsets.push_back(static_cast<int>(part.VertexFaceList.size()));
+  }
+  for (int f = 0; f < this->faceCount(); ++f)
+  {
+    TriangleMesh& part = parts[this->FaceComponents[f]];
+    const Triangle& t = this->Triangles[f];
+    part.Triangles.push_back({ localVertex[t[0]], localVertex[t[1]], localVertex[t[2]] });
+    const std::array<int, 3>& edges = this->FaceEdges[f];
+    part.FaceEdges.push_back({ mapped(localEdge, edges[0]), mapped(localEdge, edges[1]), mapped(localEdge, edges[2]) });
+    const std::array<int, 3>& neighbors = this->FaceNeighbors[f];
+    part.FaceNeighbors.push_back(
+      { mapped(localFace, neighbors[0]), mapped(localFace, neighbors[1]), mapped(localFace, neighbors[2]) });
+  }
+  for (int e = 0; e < this->edgeCount(); ++e)
+  {
+    const std::array<int, 2>& ev = this->EdgeVertices[e];
+    TriangleMesh& part = parts[this->VertexComponents[ev[0]]];
+    part.EdgeVertices.push_back({ localVertex[ev[0]], localVertex[ev[1]] });
+    part.EdgeFaces.push_back({ mapped(localFace, this->EdgeFaces[e][0]), mapped(localFace, this->EdgeFaces[e][1]) });
+    part.EdgeFaceCounts.push_back(this->EdgeFaceCounts[e]);
+  }
+  for (TriangleMesh& part : parts)
+  {
+    part.buildVertexEdges();
+    part.buildBoundaryLoops();
+  }
+  return parts;
+}
+
 void TriangleMesh::checkSize() const
 {
   if (this->Points.size() >= static_cast<std::size_t>(std::numeric_limits<int>::max()) ||
@@ -224,6 +311,66 @@ void TriangleMesh::discoverEdges(int v, std::vector<int>& stamp, std::vector<int
       ++count;
     }
   }
+}
+
+bool TriangleMesh::isSingleFan(int v) const
+{
+  const IndexRange faces = this->vertexFaces(v);
+  if (faces.empty())
+  {
+    return false;
+  }
+  // The two sides of triangle f at v (side k joins corners k and k + 1); false when f repeats a vertex.
+  auto sidesAt = [&](int f, std::array<int, 2>& sides) {
+    const Triangle& t = this->Triangles[f];
+    if (t[0] == t[1] || t[1] == t[2] || t[2] == t[0])
+    {
+      return false;
+    }
+    int found = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (t[k] == v || t[(k + 1) % 3] == v)
+      {
+        sides[found++] = k;
+      }
+    }
+    return found == 2;
+  };
+  const int first = faces[0];
+  std::array<int, 2> firstSides{};
+  if (!sidesAt(first, firstSides))
+  {
+    return false;
+  }
+  std::size_t reached = 1;
+  for (int way = 0; way < 2; ++way)
+  {
+    int f = first;
+    int side = firstSides[static_cast<std::size_t>(way)];
+    while (reached <= faces.size())
+    {
+      const int g = this->faceNeighbor(f, side);
+      if (g < 0)
+      {
+        break;
+      }
+      if (g == first)
+      {
+        return reached == faces.size(); // a closed fan, walked once round
+      }
+      ++reached;
+      std::array<int, 2> sides{};
+      if (!sidesAt(g, sides))
+      {
+        return false;
+      }
+      const int arrival = this->faceEdge(f, side);
+      side = this->faceEdge(g, sides[0]) == arrival ? sides[1] : sides[0];
+      f = g;
+    }
+  }
+  return reached == faces.size();
 }
 
 // The triangle across side k of f, where that edge is manifold and interior.

@@ -64,6 +64,12 @@ public:
   TriangleMesh refined(
     std::vector<Vector3> points, std::vector<Triangle> triangles, const std::vector<int>& originalFaces) const;
 
+  /// Each connected component (componentCount() of them, in order) as its own mesh: the
+  /// component's points and triangles in increasing order, renumbered from 0 (unreferenced points
+  /// belong to none). Each equals TriangleMesh(its points, its triangles) in every number and
+  /// list, but its adjacency is this mesh's, renumbered, not searched again.
+  std::vector<TriangleMesh> componentMeshes() const;
+
   /// Throws kerf::Error naming the first triangle that uses an index outside [0, pointCount).
   static void checkIndices(const std::vector<Triangle>& triangles, int pointCount);
 
@@ -96,6 +102,12 @@ public:
   int faceEdge(int f, int k) const { return this->FaceEdges[f][k]; }
   /// The triangle across edge k of triangle f, or -1 on a boundary or non-manifold edge.
   int faceNeighbor(int f, int k) const { return this->FaceNeighbors[f][k]; }
+
+  /// True when v's triangles form one fan: walking from v's first triangle across the edges at v
+  /// held by exactly two triangles, both ways, reaches every triangle at v (a fan is a path or a
+  /// cycle of triangles). False when they form several fans or none, and when a triangle at v
+  /// repeats a vertex (the walk cannot tell then; MeshValidation counts those fans in full).
+  bool isSingleFan(int v) const;
 
   /// True if v lies on a boundary edge.
   bool isBoundaryVertex(int v) const { return this->BoundaryVertex[v] != 0; }

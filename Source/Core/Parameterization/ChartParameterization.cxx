@@ -916,7 +916,7 @@ ChartParameterizationResult parameterizeCharts(
   };
 
   // Each chart as its own mesh (vertices in split-mesh order), checked before any is solved.
-  std::vector<int> localIndex(static_cast<std::size_t>(split.vertexCount()), -1);
+  std::vector<TriangleMesh> pieceMeshes = split.componentMeshes();
   std::vector<TriangleMesh> charts(labels.size());
   std::vector<std::vector<int>> chartVertices(labels.size());
   std::string problems;
@@ -935,23 +935,8 @@ ChartParameterizationResult parameterizeCharts(
   }
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
-    const std::vector<int>& vertices = chartVertices[c];
-    std::vector<Vector3> points(vertices.size());
-    for (std::size_t i = 0; i < vertices.size(); ++i)
-    {
-      localIndex[static_cast<std::size_t>(vertices[i])] = static_cast<int>(i);
-      points[i] = split.point(vertices[i]);
-    }
-    std::vector<Triangle> triangles;
-    triangles.reserve(chartFaces[c].size());
-    for (int f : chartFaces[c])
-    {
-      const Triangle& t = split.triangle(f);
-      triangles.push_back({ { localIndex[static_cast<std::size_t>(t[0])], localIndex[static_cast<std::size_t>(t[1])],
-        localIndex[static_cast<std::size_t>(t[2])] } });
-    }
-    charts[c] = TriangleMesh(std::move(points), std::move(triangles));
-    toChart[c].resize(vertices.size());
+    charts[c] = std::move(pieceMeshes[static_cast<std::size_t>(pieces[c].second)]);
+    toChart[c].resize(chartVertices[c].size());
     std::iota(toChart[c].begin(), toChart[c].end(), 0);
     const std::string problem = chartTopologyProblem(charts[c]);
     if (problem.empty())
