@@ -79,12 +79,14 @@ std::vector<TriangleMesh> TriangleMesh::componentMeshes() const
   std::vector<int> vertexCounts(static_cast<std::size_t>(count), 0);
   std::vector<int> faceCounts(static_cast<std::size_t>(count), 0);
   std::vector<int> edgeCounts(static_cast<std::size_t>(count), 0);
+  std::vector<int> incidenceCounts(static_cast<std::size_t>(count), 0);
   for (int v = 0; v < this->vertexCount(); ++v)
   {
     const int c = this->VertexComponents[v];
     if (c >= 0)
     {
       localVertex[v] = vertexCounts[c]++;
+      incidenceCounts[c] += this->VertexFaceOffsets[v + 1] - this->VertexFaceOffsets[v];
     }
   }
   for (int f = 0; f < this->faceCount(); ++f)
@@ -98,15 +100,16 @@ std::vector<TriangleMesh> TriangleMesh::componentMeshes() const
   for (int c = 0; c < count; ++c)
   {
     TriangleMesh& part = parts[c];
-    part.Points.reserve(vertexCounts[c]);
-    part.VertexFaceOffsets.reserve(vertexCounts[c] + 1);
-    part.VertexFaceOffsets.push_back(0);
-    part.Triangles.reserve(faceCounts[c]);
-    part.FaceEdges.reserve(faceCounts[c]);
-    part.FaceNeighbors.reserve(faceCounts[c]);
-    part.EdgeVertices.reserve(edgeCounts[c]);
-    part.EdgeFaces.reserve(edgeCounts[c]);
-    part.EdgeFaceCounts.reserve(edgeCounts[c]);
+    part.Points.resize(vertexCounts[c]);
+    part.VertexFaceOffsets.resize(vertexCounts[c] + 1);
+    part.VertexFaceOffsets[0] = 0;
+    part.VertexFaceList.resize(incidenceCounts[c]);
+    part.Triangles.resize(faceCounts[c]);
+    part.FaceEdges.resize(faceCounts[c]);
+    part.FaceNeighbors.resize(faceCounts[c]);
+    part.EdgeVertices.resize(edgeCounts[c]);
+    part.EdgeFaces.resize(edgeCounts[c]);
+    part.EdgeFaceCounts.resize(edgeCounts[c]);
     part.ComponentCount = 1;
     part.FaceComponents.assign(faceCounts[c], 0);
     part.VertexComponents.assign(vertexCounts[c], 0);
@@ -120,31 +123,35 @@ std::vector<TriangleMesh> TriangleMesh::componentMeshes() const
       continue;
     }
     TriangleMesh& part = parts[c];
-    part.Points.push_back(this->Points[v]);
+    const int local = localVertex[v];
+    part.Points[local] = this->Points[v];
+    int at = part.VertexFaceOffsets[local];
     for (int f : this->vertexFaces(v))
     {
-      part.VertexFaceList.push_back(localFace[f]);
+      part.VertexFaceList[at++] = localFace[f];
     }
-    part.VertexFaceOffsets.push_back(static_cast<int>(part.VertexFaceList.size()));
+    part.VertexFaceOffsets[local + 1] = at;
   }
   for (int f = 0; f < this->faceCount(); ++f)
   {
     TriangleMesh& part = parts[this->FaceComponents[f]];
+    const int local = localFace[f];
     const Triangle& t = this->Triangles[f];
-    part.Triangles.push_back({ localVertex[t[0]], localVertex[t[1]], localVertex[t[2]] });
+    part.Triangles[local] = { localVertex[t[0]], localVertex[t[1]], localVertex[t[2]] };
     const std::array<int, 3>& edges = this->FaceEdges[f];
-    part.FaceEdges.push_back({ mapped(localEdge, edges[0]), mapped(localEdge, edges[1]), mapped(localEdge, edges[2]) });
+    part.FaceEdges[local] = { mapped(localEdge, edges[0]), mapped(localEdge, edges[1]), mapped(localEdge, edges[2]) };
     const std::array<int, 3>& neighbors = this->FaceNeighbors[f];
-    part.FaceNeighbors.push_back(
-      { mapped(localFace, neighbors[0]), mapped(localFace, neighbors[1]), mapped(localFace, neighbors[2]) });
+    part.FaceNeighbors[local] = { mapped(localFace, neighbors[0]), mapped(localFace, neighbors[1]),
+      mapped(localFace, neighbors[2]) };
   }
   for (int e = 0; e < this->edgeCount(); ++e)
   {
     const std::array<int, 2>& ev = this->EdgeVertices[e];
     TriangleMesh& part = parts[this->VertexComponents[ev[0]]];
-    part.EdgeVertices.push_back({ localVertex[ev[0]], localVertex[ev[1]] });
-    part.EdgeFaces.push_back({ mapped(localFace, this->EdgeFaces[e][0]), mapped(localFace, this->EdgeFaces[e][1]) });
-    part.EdgeFaceCounts.push_back(this->EdgeFaceCounts[e]);
+    const int local = localEdge[e];
+    part.EdgeVertices[local] = { localVertex[ev[0]], localVertex[ev[1]] };
+    part.EdgeFaces[local] = { mapped(localFace, this->EdgeFaces[e][0]), mapped(localFace, this->EdgeFaces[e][1]) };
+    part.EdgeFaceCounts[local] = this->EdgeFaceCounts[e];
   }
   for (TriangleMesh& part : parts)
   {

@@ -881,10 +881,15 @@ ChartParameterizationResult parameterizeCharts(
   const TriangleMesh& split = result.split.mesh;
 
   // Charts: the connected pieces, in increasing label order, then piece order; faces in mesh order.
-  std::vector<std::pair<int, int>> pieces; // (label, component)
+  // A piece has one label (the split gives each label its own copies of the vertices).
+  std::vector<std::pair<int, int>> pieces(static_cast<std::size_t>(split.componentCount()), { 0, -1 }); // (label, component)
   for (int f = 0; f < split.faceCount(); ++f)
   {
-    pieces.emplace_back(faceLabels[static_cast<std::size_t>(f)], split.faceComponent(f));
+    std::pair<int, int>& piece = pieces[static_cast<std::size_t>(split.faceComponent(f))];
+    if (piece.second < 0)
+    {
+      piece = { faceLabels[static_cast<std::size_t>(f)], split.faceComponent(f) };
+    }
   }
   std::sort(pieces.begin(), pieces.end());
   pieces.erase(std::unique(pieces.begin(), pieces.end()), pieces.end());
