@@ -58,6 +58,9 @@ SplitMesh splitAlongFaceLabels(const TriangleMesh& mesh, const std::vector<int>&
   SplitMesh split;
   std::vector<Vector3> points;
   std::vector<Triangle> triangles = mesh.triangles();
+  // At least one copy of every vertex a triangle uses.
+  points.reserve(static_cast<std::size_t>(mesh.vertexCount()));
+  split.originalPoint.reserve(static_cast<std::size_t>(mesh.vertexCount()));
   // Around each vertex: its faces as (label, group, face), the group the first face of its fan
   // (or of its label), so that sorting numbers the copies by label, then fan.
   std::vector<std::tuple<int, int, int>> around;
