@@ -78,7 +78,9 @@ ClosestPointLocator::ClosestPointLocator(const TriangleMesh& mesh)
   }
   if (faces > 0)
   {
-    this->Nodes.reserve(2 * static_cast<std::size_t>(faces) / 4 + 1);
+    // Leaves hold 2 to 4 faces (a split of 5 or more gives halves of 2 or more), so there are
+    // fewer nodes than faces: one reservation, never a regrowth.
+    this->Nodes.reserve(static_cast<std::size_t>(faces));
     this->build(0, faces, centroids);
   }
   this->FaceOrder.resize(faces);
