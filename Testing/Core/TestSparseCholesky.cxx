@@ -12,6 +12,7 @@
 #include <numeric>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCholesky>
 
 #include <cstring>
 #include <limits>
@@ -233,6 +234,48 @@ TEST(SparseCholesky, LowRankDoesNotDependOnEarlierCalls)
   ASSERT_TRUE(other.factor(f.A));
   EXPECT_TRUE(bitwiseEqual(other.prepare(swapped).gram, permuted));
   EXPECT_TRUE(bitwiseEqual(fresh.prepare(swapped).gram, permuted));
+}
+
+TEST(SparseCholesky, GramSumsOnlyWhereColumnsCanBeNonzero)
+{
+  // A larger grid, whose elimination tree spreads constraints scattered over it into separate
+  // branches: the Gram matrix sums each supernode's rows over the columns that can be nonzero
+  // there, and still equals the dense reference. Half the columns join two distant rows, so
+  // that their nonzero supernodes are not those of one branch.
+  const Eigen::SparseMatrix<double> A = gridSystem(60);
+  const int n = static_cast<int>(A.rows());
+  Eigen::SparseMatrix<double> U(n, 64);
+  U.leftCols(32) = lowRankColumns(n, 32, 31);
+  const Eigen::SparseMatrix<double> near = lowRankColumns(n, 32, 32);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int c = 0; c < 32; ++c)
+  {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(near, c); it; ++it)
+    {
+      entries.emplace_back(static_cast<int>(it.row()), c, it.value());
+      entries.emplace_back((static_cast<int>(it.row()) + n / 2 + 7 * c) % n, c, 0.5 * it.value());
+    }
+  }
+  Eigen::SparseMatrix<double> joined(n, 32);
+  joined.setFromTriplets(entries.begin(), entries.end());
+  U.rightCols(32) = joined;
+  U.makeCompressed();
+
+  SparseCholesky cholesky;
+  ASSERT_TRUE(cholesky.factor(A));
+  const SparseCholesky::LowRank lowRank = cholesky.prepare(U);
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> reference(A);
+  const Eigen::MatrixXd inverseU = reference.solve(Eigen::MatrixXd(U));
+  EXPECT_LT(relativeError(lowRank.gram, Eigen::MatrixXd(U.transpose()) * inverseU), 1e-9);
+  EXPECT_TRUE(bitwiseEqual(lowRank.gram, lowRank.gram.transpose()));
+  const Eigen::VectorXd s = Eigen::VectorXd::LinSpaced(64, -1.0, 2.0);
+  EXPECT_LT(relativeError(cholesky.apply(lowRank, s), inverseU * s), 1e-9);
+  if (SparseCholesky::backend() == "CHOLMOD")
+  {
+    const std::size_t denseProducts = lowRank.reachRows * 64 * 65 / 2;
+    EXPECT_GT(lowRank.gramProducts, 0u);
+    EXPECT_LT(lowRank.gramProducts, denseProducts / 2) << lowRank.gramProducts << " of " << denseProducts;
+  }
 }
 
 TEST(SparseCholesky, LowRankEdgeCases)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <memory>
 #include <vector>
@@ -239,12 +240,20 @@ extern "C" void dsyrk_(const char* uplo, const char* trans, const int* n, const 
 /// Y = L^-1 P U on its reach, for apply() and for the next prepare().
 struct SparseCholesky::LowRankFactor
 {
+  /// Rows of y on which only a range of its columns can be nonzero.
+  struct Block
+  {
+    int firstRow = 0, rowCount = 0; ///< rows [firstRow, firstRow + rowCount) of y
+    int first = 0, last = 0;        ///< columns [first, last] of y
+  };
   std::vector<ColumnKey> keys;  ///< U's distinct columns, sorted
   std::vector<int> distinct;    ///< U's column -> its distinct column
+  std::vector<int> column;      ///< distinct column -> its column in y
   std::vector<int> supernodes;  ///< the reach, ascending
   std::vector<int> firstRow;    ///< each reach supernode's first row in y
   std::vector<int> rows;        ///< the permuted row of each row of y
-  std::vector<double> y;        ///< row-major, one value per distinct column
+  std::vector<Block> blocks;    ///< y's rows in order, grouped by the range of columns nonzero on them
+  std::vector<double> y;        ///< row-major, one value per distinct column, in the order of `column`
   std::uint64_t generation = 0; ///< the factorization it belongs to
   int count() const { return static_cast<int>(this->keys.size()); }
 };
@@ -356,6 +365,7 @@ struct SparseCholesky::Implementation
   // The steps of prepare(), in order; `work` holds the sweep's rows (plan.width values each).
   static ColumnPlan planColumns(const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous);
   void reachOfColumns(const ColumnPlan& plan, LowRankFactor& out) const;
+  void blocksOfColumns(const ColumnPlan& plan, LowRankFactor& out) const;
   void copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous, const LowRankFactor& out,
     std::vector<double>& work) const;
   void scatterFreshColumns(const ColumnPlan& plan, std::vector<double>& work) const;
@@ -591,6 +601,70 @@ void SparseCholesky::Implementation::reachOfColumns(const ColumnPlan& plan, LowR
   }
 }
 
+void SparseCholesky::Implementation::blocksOfColumns(const ColumnPlan& plan, LowRankFactor& out) const
+{
+  // y's columns are ordered by the first supernode of their reach (the supernodes are numbered
+  // in a postorder of the elimination tree), so that the columns nonzero on a supernode, the
+  // ones with a start in its subtree, form a range or nearly: the Gram matrix then sums, block
+  // by block, only over a supernode's range (on the cube dumbbell at 100k, 12% of the dense
+  // product's flops for 128 columns). Zeros inside a range add nothing. The order and the ranges
+  // depend only on U's pattern and the factor.
+  const int count = static_cast<int>(plan.keys.size());
+  std::vector<std::vector<int>> starts(count);
+  std::vector<int> order(count);
+  std::vector<int> lowest(count, std::numeric_limits<int>::max());
+  for (int d = 0; d < count; ++d)
+  {
+    for (const auto& entry : plan.keys[d])
+    {
+      starts[d].push_back(this->supernodeOf[this->inversePermutation[entry.first]]);
+      lowest[d] = std::min(lowest[d], starts[d].back());
+    }
+    order[d] = d;
+  }
+  std::stable_sort(order.begin(), order.end(), [&lowest](int a, int b) { return lowest[a] < lowest[b]; });
+  out.column.assign(count, 0);
+  const std::size_t reachCount = out.supernodes.size();
+  std::vector<int> first(reachCount, count), last(reachCount, -1);
+  auto indexOf = [&out](int node) {
+    return static_cast<std::size_t>(
+      std::lower_bound(out.supernodes.begin(), out.supernodes.end(), node) - out.supernodes.begin());
+  };
+  for (int q = 0; q < count; ++q)
+  {
+    out.column[order[q]] = q;
+    for (int start : starts[order[q]])
+    {
+      // Columns go in increasing q: a supernode whose last column is already q has been
+      // reached by q from another start, and so have all its ancestors.
+      for (int node = start; node >= 0; node = this->superParent[node])
+      {
+        const std::size_t i = indexOf(node);
+        if (last[i] == q)
+        {
+          break;
+        }
+        first[i] = std::min(first[i], q);
+        last[i] = q;
+      }
+    }
+  }
+  out.blocks.clear();
+  for (std::size_t i = 0; i < reachCount; ++i)
+  {
+    const int node = out.supernodes[i];
+    const int rowCount = this->super()[node + 1] - this->super()[node];
+    if (!out.blocks.empty() && out.blocks.back().first == first[i] && out.blocks.back().last == last[i])
+    {
+      out.blocks.back().rowCount += rowCount;
+    }
+    else
+    {
+      out.blocks.push_back({ out.firstRow[i], rowCount, first[i], last[i] });
+    }
+  }
+}
+
 void SparseCholesky::Implementation::copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous,
   const LowRankFactor& out, std::vector<double>& work) const
 {
@@ -618,7 +692,7 @@ void SparseCholesky::Implementation::copyKeptColumns(const ColumnPlan& plan, con
       double* row = work.data() + r * width;
       for (std::size_t q = 0; q < plan.kept.size(); ++q)
       {
-        row[q] = from[plan.source[q]];
+        row[q] = from[previous->column[plan.source[q]]];
       }
     }
   }
@@ -773,36 +847,44 @@ void SparseCholesky::Implementation::solveFreshColumnsTogether(const ColumnPlan&
 void SparseCholesky::Implementation::keepDistinctColumns(
   const ColumnPlan& plan, const std::vector<double>& work, LowRankFactor& out)
 {
-  // Y row by row in the distinct columns' order, whatever the sweep's layout was (+ 0.0 makes
-  // every zero positive).
+  // Y row by row in the order of out.column, whatever the sweep's layout was (+ 0.0 makes every
+  // zero positive).
   out.keys = plan.keys;
   out.distinct = plan.distinct;
   const std::size_t count = plan.keys.size();
+  std::vector<int> slotOfColumn(count);
+  for (std::size_t d = 0; d < count; ++d)
+  {
+    slotOfColumn[static_cast<std::size_t>(out.column[d])] = plan.slot[d];
+  }
   out.y.resize(out.rows.size() * count);
   for (std::size_t r = 0; r < out.rows.size(); ++r)
   {
     const double* from = work.data() + r * static_cast<std::size_t>(plan.width);
     double* to = out.y.data() + r * count;
-    for (std::size_t d = 0; d < count; ++d)
+    for (std::size_t q = 0; q < count; ++q)
     {
-      to[d] = from[plan.slot[d]] + 0.0;
+      to[q] = from[slotOfColumn[q]] + 0.0;
     }
   }
 }
 
 Eigen::MatrixXd SparseCholesky::Implementation::gramOf(const LowRankFactor& out)
 {
-  // U^T A^-1 U = Y^T Y by the BLAS (syrk) on the distinct columns in their sorted order: every U
-  // with the same columns, in any order and whatever the last prepare() kept, gives it the same
-  // matrix, so the entries depend only on U.
+  // U^T A^-1 U = Y^T Y by the BLAS (syrk), block by block in y's row order, each block on its
+  // range of columns only. The columns' order, the blocks and the order of the sums depend only
+  // on U's distinct columns and the factor: every U with the same columns, in any order and
+  // whatever the last prepare() kept, gives the same matrix, so the entries depend only on U.
   const int count = out.count();
-  const int rows = static_cast<int>(out.rows.size());
   Eigen::MatrixXd product = Eigen::MatrixXd::Zero(count, count);
-  if (count > 0 && rows > 0)
+  const char lower = 'L', plain = 'N';
+  const double one = 1.0;
+  for (const LowRankFactor::Block& block : out.blocks)
   {
-    const char lower = 'L', plain = 'N';
-    const double one = 1.0, zero = 0.0;
-    dsyrk_(&lower, &plain, &count, &rows, &one, out.y.data(), &count, &zero, product.data(), &count);
+    const int width = block.last - block.first + 1;
+    dsyrk_(&lower, &plain, &width, &block.rowCount, &one,
+      out.y.data() + static_cast<std::size_t>(block.firstRow) * count + block.first, &count, &one,
+      product.data() + static_cast<Eigen::Index>(block.first) * (count + 1), &count);
   }
   const int k = static_cast<int>(out.distinct.size());
   Eigen::MatrixXd gram(k, k);
@@ -810,7 +892,7 @@ Eigen::MatrixXd SparseCholesky::Implementation::gramOf(const LowRankFactor& out)
   {
     for (int b = 0; b < k; ++b)
     {
-      const int i = out.distinct[a], j = out.distinct[b];
+      const int i = out.column[out.distinct[a]], j = out.column[out.distinct[b]];
       gram(a, b) = product(std::max(i, j), std::min(i, j)) + 0.0;
     }
   }
@@ -833,6 +915,7 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   out.generation = m.generation;
   const Marks reachMarks(m.offset, out.supernodes);
   m.reachOfColumns(plan, out);
+  m.blocksOfColumns(plan, out);
   std::vector<double> work;
   m.copyKeptColumns(plan, previous.get(), out, work);
   if (!plan.fresh.empty())
@@ -854,6 +937,11 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   LowRank result;
   result.gram = Implementation::gramOf(out);
   result.reachRows = out.rows.size();
+  for (const LowRankFactor::Block& block : out.blocks)
+  {
+    const std::size_t width = static_cast<std::size_t>(block.last - block.first + 1);
+    result.gramProducts += static_cast<std::size_t>(block.rowCount) * width * (width + 1) / 2;
+  }
   result.factor = factor;
   if (sweep)
   {
@@ -877,7 +965,7 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
   Eigen::VectorXd t = Eigen::VectorXd::Zero(f.count());
   for (Eigen::Index c = 0; c < s.size(); ++c)
   {
-    t[f.distinct[c]] += s[c];
+    t[f.column[f.distinct[c]]] += s[c];
   }
   const Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>> y(
     f.y.data(), static_cast<Eigen::Index>(f.rows.size()), f.count());
@@ -990,6 +1078,7 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   LowRank out;
   const Eigen::MatrixXd gram = U.transpose() * factor->inverseU;
   out.gram = 0.5 * (gram + gram.transpose()); // exactly symmetric
+  out.gramProducts = static_cast<std::size_t>(U.nonZeros()) * static_cast<std::size_t>(U.cols());
   out.factor = factor;
   return out;
 }

@@ -20,7 +20,8 @@ namespace kerf
 /// elimination tree (the "reach"), which constraints confined to a region of the surface keep
 /// short: one sweep over the reach computes all k columns together with dense vector kernels
 /// (3 to 11 times faster than CHOLMOD's sparse solves, see Documentation/filters/
-/// HarmonicCuts.md), U^T A^-1 U is Y^T Y (Eigen's product), and A^-1 U s is one backward solve
+/// HarmonicCuts.md), U^T A^-1 U is Y^T Y (the BLAS's syrk, supernode by supernode on the
+/// columns that can be nonzero there), and A^-1 U s is one backward solve
 /// P^T L^-T Y s (CHOLMOD's). The last prepare()'s Y is kept, so a U that adds columns to the
 /// previous one only sweeps the new ones. Each column's arithmetic in the sweep is the same
 /// whatever the others are, and the Gram matrix is formed from U's distinct columns in a fixed
@@ -71,6 +72,10 @@ public:
     Eigen::MatrixXd gram; ///< U^T A^-1 U (k x k)
     std::shared_ptr<const LowRankFactor> factor; ///< what apply() reads
     std::size_t reachRows = 0; ///< rows of L^-1 P U that can be nonzero
+    /// Multiply-adds that formed the Gram matrix: the rows of each supernode of the reach times
+    /// the products of the columns that can be nonzero there (about m(m+1)/2 for m columns),
+    /// where the dense product would take reachRows k(k+1)/2 for U's k distinct columns.
+    std::size_t gramProducts = 0;
   };
 
   /// How prepare() computes Y = L^-1 P U. The CHOLMOD routes are the references the sweep is
