@@ -160,6 +160,19 @@ double StrokeIsoValue(double value)
   return value;
 }
 
+SoftConstraintFormulation FilterFormulation(int property, const TriangleMesh& mesh)
+{
+  switch (property)
+  {
+    case 0:
+      return SoftConstraintFormulation::PointValues;
+    case 1:
+      return SoftConstraintFormulation::LeastSquares;
+    default:
+      return automaticFormulation(mesh.faceCount());
+  }
+}
+
 double RelativeDistance(double fraction, double diagonal, const char* parameter)
 {
   if (!std::isfinite(fraction))

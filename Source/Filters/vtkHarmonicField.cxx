@@ -26,9 +26,6 @@ static_assert(static_cast<int>(kerf::LaplacianWeighting::Uniform) == vtkHarmonic
     static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY &&
     static_cast<int>(kerf::LaplacianWeighting::IntrinsicDelaunay) == vtkHarmonicField::INTRINSIC_DELAUNAY,
   "vtkHarmonicField's Weightings follow kerf::LaplacianWeighting");
-static_assert(static_cast<int>(kerf::SoftConstraintFormulation::PointValues) == vtkHarmonicField::POINT_VALUES &&
-    static_cast<int>(kerf::SoftConstraintFormulation::LeastSquares) == vtkHarmonicField::LEAST_SQUARES,
-  "vtkHarmonicField's Formulations follow kerf::SoftConstraintFormulation");
 
 struct vtkHarmonicField::Internals
 {
@@ -106,7 +103,7 @@ int vtkHarmonicField::RequestData(
     options.weights.concaveBeta = kerf::Finite(this->ConcaveBeta, "ConcaveBeta");
     options.weights.concavityQuantile = kerf::Finite(this->ConcavityQuantile, "ConcavityQuantile");
     options.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
-    options.formulation = kerf::SoftConstraintFormulation(this->Formulation);
+    options.formulation = kerf::FilterFormulation(this->Formulation, session.mesh());
     kerf::HarmonicFieldSolution solution = session.solve(constraints, options);
     this->UpdateProgress(0.9);
 

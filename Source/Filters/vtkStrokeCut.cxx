@@ -95,7 +95,7 @@ int vtkStrokeCut::RequestData(
     kerf::HarmonicFieldOptions fieldOptions;
     fieldOptions.weights.weighting = static_cast<kerf::LaplacianWeighting>(this->Weighting);
     fieldOptions.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
-    fieldOptions.formulation = static_cast<kerf::SoftConstraintFormulation>(this->Formulation);
+    fieldOptions.formulation = kerf::FilterFormulation(this->Formulation, session.mesh());
     const kerf::HarmonicFieldSolution solution = session.solve(constraints, fieldOptions);
     this->UpdateProgress(0.8);
 

@@ -43,9 +43,10 @@ public:
   ///@}
 
   ///@{
-  /// How the stroke's constraints shape the field, as vtkHarmonicField's Formulation.
-  /// Default 1 (least squares, the most faithful cut); 0 (point values) is faster.
-  vtkSetClampMacro(Formulation, int, 0, 1);
+  /// How the stroke's constraints shape the field, as vtkHarmonicField's Formulation: 0 point
+  /// values (faster), 1 least squares (the most faithful cut), 2 automatic (default: least
+  /// squares below 200,000 triangles, point values from there).
+  vtkSetClampMacro(Formulation, int, 0, 2);
   vtkGetMacro(Formulation, int);
   ///@}
 
@@ -107,7 +108,7 @@ protected:
     vtkInformationVector* outputVector) override;
 
   int Weighting = 1;
-  int Formulation = 1;
+  int Formulation = 2;
   double SoftConstraintWeight = 1.0;
   int SamplesPerSegment = 4;
   double Offset = 0.005;

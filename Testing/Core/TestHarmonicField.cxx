@@ -199,6 +199,15 @@ TriangleMesh twoSpheres(int levels)
 // ---------------------------------------------------------------------------------------------
 // Hard constraints: linear harmonic functions and the maximum principle.
 
+TEST(HarmonicField, AutomaticFormulationSwitchesToPointValuesAt200000Triangles)
+{
+  EXPECT_EQ(automaticFormulation(0), SoftConstraintFormulation::LeastSquares);
+  EXPECT_EQ(automaticFormulation(PointValueTriangles - 1), SoftConstraintFormulation::LeastSquares);
+  EXPECT_EQ(automaticFormulation(PointValueTriangles), SoftConstraintFormulation::PointValues);
+  EXPECT_EQ(automaticFormulation(2000000000LL), SoftConstraintFormulation::PointValues);
+  EXPECT_EQ(PointValueTriangles, 200000);
+}
+
 TEST(HarmonicField, GridColumnsGiveLinearFieldWithCotangentWeights)
 {
   const double width = 2.0, height = 1.5;

@@ -179,6 +179,24 @@ int TestHarmonicFieldFilter(int, char*[])
   ok &= KERF_CHECK(sameField(cached->GetOutput()->GetPointData()->GetArray("HarmonicField"),
     fresher->GetOutput()->GetPointData()->GetArray("HarmonicField")));
 
+  // The default formulation is chosen by size: least squares below 200,000 triangles, so this
+  // sphere's field is the least-squares one, bit for bit (point values from 200,000 triangles:
+  // Testing/Python/TestHarmonicCut.py, too slow under valgrind).
+  ok &= KERF_CHECK(fresher->GetFormulation() == vtkHarmonicField::AUTOMATIC);
+  vtkNew<vtkHarmonicField> squares;
+  squares->SetInputData(0, sphere);
+  squares->SetInputData(1, soft);
+  squares->SetFormulation(vtkHarmonicField::LEAST_SQUARES);
+  squares->Update();
+  vtkNew<vtkHarmonicField> points;
+  points->SetInputData(0, sphere);
+  points->SetInputData(1, soft);
+  points->SetFormulation(vtkHarmonicField::POINT_VALUES);
+  points->Update();
+  vtkDataArray* automatic = fresher->GetOutput()->GetPointData()->GetArray("HarmonicField");
+  ok &= KERF_CHECK(sameField(automatic, squares->GetOutput()->GetPointData()->GetArray("HarmonicField")));
+  ok &= KERF_CHECK(!sameField(automatic, points->GetOutput()->GetPointData()->GetArray("HarmonicField")));
+
   // A new weighting: a new factorization.
   cached->SetWeightingToUniform();
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cached).empty());

@@ -8,9 +8,10 @@ import numpy
 from vtkmodules.util.misc import calldata_type
 from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from vtkmodules.util.vtkConstants import VTK_STRING
-from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList
+from vtkmodules.vtkCommonCore import vtkCommand, vtkIdList, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkDataObject, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkCellCenters
+from vtkmodules.vtkFiltersSources import vtkSphereSource
 
 CAMEL = os.path.join(os.environ["KERF_SOURCE_DIR"], "Data", "camel.off")
 NECK_STROKE = os.path.join(os.environ["KERF_SOURCE_DIR"], "Data", "camel-neck-stroke.vtk")
@@ -288,6 +289,39 @@ class HarmonicCutTest(unittest.TestCase):
         self.assertEqual(chosen.GetValue(0), iso_values[int(numpy.argmax(scores))])
         segments = vtk_to_numpy(best.GetLabelledSurface().GetCellData().GetArray("Segment"))
         self.assertEqual(len(numpy.unique(segments)), 2)
+
+    def test_automatic_formulation_takes_point_values_from_200000_triangles(self):
+        # A sphere of exactly 200,000 triangles: the default (automatic) field is the point-value
+        # one, bit for bit (below 200,000 the least-squares one: TestHarmonicFieldFilter.cxx).
+        sphere = vtkSphereSource()
+        sphere.SetThetaResolution(500)
+        sphere.SetPhiResolution(202)
+        sphere.Update()
+        surface = sphere.GetOutput()
+        self.assertEqual(surface.GetNumberOfPolys(), 200000)
+        constraints = vtkPolyData()
+        points = vtkPoints()
+        for point in ((0.0, 0.0, 0.5), (0.0, 0.0, -0.5), (0.5, 0.0, 0.0)):
+            points.InsertNextPoint(point)
+        constraints.SetPoints(points)
+        values = numpy_to_vtk(numpy.array([1.0, -1.0, 0.0]), deep=True)
+        values.SetName("ConstraintValue")
+        constraints.GetPointData().AddArray(values)
+        fields = {}
+        for name, formulation in (("automatic", None), ("points", kerf.vtkHarmonicField.POINT_VALUES)):
+            field = kerf.vtkHarmonicField()
+            field.SetInputData(0, surface)
+            field.SetInputData(1, constraints)
+            if formulation is not None:
+                field.SetFormulation(formulation)
+            errors = ErrorLog()
+            errors.watch(field)
+            self.assertEqual(field.GetExecutive().Update(), 1, errors.messages)
+            self.assertEqual(errors.messages, [])
+            fields[name] = vtk_to_numpy(field.GetOutput().GetPointData().GetArray("HarmonicField")).copy()
+        self.assertEqual(kerf.vtkHarmonicField().GetFormulation(), kerf.vtkHarmonicField.AUTOMATIC)
+        self.assertTrue(numpy.array_equal(fields["automatic"], fields["points"]))
+        self.assertAlmostEqual(fields["points"][surface.FindPoint(0.0, 0.0, 0.5)], 1.0, delta=0.05)
 
 
 if __name__ == "__main__":

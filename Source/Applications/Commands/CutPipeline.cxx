@@ -78,7 +78,7 @@ void CutPipeline::Run(vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& a
   }
   else if (formulation == "auto")
   {
-    this->field->SetFormulation(static_cast<int>(automaticFormulation(mesh->GetNumberOfPolys())));
+    this->field->SetFormulation(vtkHarmonicField::AUTOMATIC);
   }
   else
   {
