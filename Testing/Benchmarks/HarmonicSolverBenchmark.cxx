@@ -436,6 +436,7 @@ void alternatePrepare(benchmark::State& state, const Cholesky& factor, const std
   }
   state.counters["columns"] = static_cast<double>(u[0].cols());
   state.counters["reachRows"] = static_cast<double>(lowRank.reachRows);
+  state.counters["gramProducts"] = static_cast<double>(lowRank.gramProducts);
 }
 
 void newStroke(benchmark::State& state, SolverScene& scene, Matrix matrix, Cholesky::Ordering ordering)
