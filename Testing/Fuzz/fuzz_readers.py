@@ -12,6 +12,7 @@ import base64
 import concurrent.futures
 import math
 import os
+import re
 import shutil
 import signal
 import struct
@@ -152,7 +153,9 @@ def vtp_float_arrays(path):
 
 def check_outputs(paths, stdout):
     """'valid result', 'NaN output' or 'wrong' for a run that exited with 0."""
-    if "nan" in stdout.lower().replace("nanos", ""):
+    # A standalone nan ("nan", "-nan", "NaN"), not the letters inside a word or a temporary
+    # folder's random name.
+    if re.search(r"(?<![A-Za-z0-9_])[-+]?nan(?![A-Za-z0-9_])", stdout, re.IGNORECASE):
         return "NaN output", "stdout mentions nan"
     for path in paths:
         if not os.path.exists(path):
