@@ -33,6 +33,10 @@
 //                                            each route (Sweep, CholmodSolve2, CholmodSpsolve) on
 //                                            one factor (AMD), the Gram matrix included
 //   BM_Apply/<size>/<matrix>                 apply() for 64 columns: Y s and one backward solve
+//   BM_SolveOne/<size>/<matrix>/<route>      one right-hand side on that factor: solve() (route
+//                                            kerf, Kerf's supernodal kernels) or solveColumns()
+//                                            with one column (route cholmod, CHOLMOD's solve
+//                                            with the BLAS)
 // The scene of a size (mesh, weights, strokes, factors) is built once, outside the timed loops.
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
@@ -478,6 +482,24 @@ void lowRankRoute(benchmark::State& state, SolverScene& scene, Matrix matrix, in
   alternatePrepare(state, factor, u, route, false);
 }
 
+void solveOne(benchmark::State& state, SolverScene& scene, Matrix matrix, bool library)
+{
+  const Cholesky& factor = factorOf(scene, matrix, Cholesky::Ordering::AMD);
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(factor.permutation().size(), -1.0, 1.0);
+  Eigen::VectorXd x;
+  for (auto _ : state)
+  {
+    x = library ? Eigen::VectorXd(factor.solveColumns(b)) : factor.solve(b);
+    benchmark::DoNotOptimize(x.data());
+  }
+  const Eigen::VectorXd other = library ? factor.solve(b) : Eigen::VectorXd(factor.solveColumns(b));
+  const double difference = (x - other).norm() / other.norm();
+  if (!(difference < 1e-12))
+  {
+    Fail(state, "the two solves differ by " + std::to_string(difference));
+  }
+}
+
 void applyLowRank(benchmark::State& state, SolverScene& scene, Matrix matrix)
 {
   const Cholesky& factor = factorOf(scene, matrix, Cholesky::Ordering::AMD);
@@ -564,6 +586,11 @@ void RegisterHarmonicSolverBenchmarks()
       }
       add(std::string("BM_Apply") + label + "/" + matrixName(matrix), size,
         [matrix](benchmark::State& state, SolverScene& scene) { applyLowRank(state, scene, matrix); });
+      for (bool library : { false, true })
+      {
+        add(std::string("BM_SolveOne") + label + "/" + matrixName(matrix) + (library ? "/cholmod" : "/kerf"), size,
+          [matrix, library](benchmark::State& state, SolverScene& scene) { solveOne(state, scene, matrix, library); });
+      }
     }
   }
 }

@@ -14,6 +14,7 @@
 #include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 
+#include <cmath>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -105,6 +106,54 @@ TEST(SparseCholesky, SolveMatchesDenseReference)
   ASSERT_TRUE(cholesky.factor(f.A));
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(f.A.rows(), -1.0, 2.0);
   EXPECT_LT(relativeError(cholesky.solve(b), f.reference.solve(b)), 1e-9);
+}
+
+TEST(SparseCholesky, SolveMatchesTheLibrarysSolve)
+{
+  // solve() runs Kerf's supernodal kernels; solveColumns() CHOLMOD's own solve (the BLAS). They
+  // agree to rounding on supernodes one column wide (a chain), a few wide (grids, whose fill
+  // gives supernodes of every width, with and without a remainder of four columns) and dense
+  // (one supernode), and the kernels give the same bits on every call.
+  std::vector<Eigen::SparseMatrix<double>> matrices = { gridSystem(40), gridSystem(7) };
+  const int n = 300;
+  std::vector<Eigen::Triplet<double>> chain, dense;
+  for (int i = 0; i < n; ++i)
+  {
+    chain.emplace_back(i, i, 2.5);
+    if (i > 0)
+    {
+      chain.emplace_back(i, i - 1, -1.0);
+      chain.emplace_back(i - 1, i, -1.0);
+    }
+  }
+  for (int i = 0; i < 61; ++i)
+  {
+    for (int j = 0; j < 61; ++j)
+    {
+      dense.emplace_back(i, j, i == j ? 70.0 : 1.0 / (1.0 + std::abs(i - j)));
+    }
+  }
+  matrices.emplace_back(n, n);
+  matrices.back().setFromTriplets(chain.begin(), chain.end());
+  matrices.emplace_back(61, 61);
+  matrices.back().setFromTriplets(dense.begin(), dense.end());
+  for (Eigen::SparseMatrix<double>& A : matrices)
+  {
+    A.makeCompressed();
+    SparseCholesky cholesky;
+    ASSERT_TRUE(cholesky.factor(A));
+    Eigen::VectorXd b(A.rows());
+    for (Eigen::Index i = 0; i < b.size(); ++i)
+    {
+      b[i] = std::sin(0.37 * static_cast<double>(i)) + 0.25;
+    }
+    const Eigen::VectorXd x = cholesky.solve(b);
+    const Eigen::VectorXd reference = cholesky.solveColumns(b);
+    EXPECT_LT(relativeError(x, reference), 1e-13) << A.rows();
+    // As accurate as the library's: residuals within twice its own.
+    EXPECT_LE((A * x - b).norm(), 2.0 * (A * reference - b).norm() + 1e-15 * b.norm()) << A.rows();
+    EXPECT_TRUE(bitwiseEqual(cholesky.solve(b), x));
+  }
 }
 
 TEST(SparseCholesky, GivenPermutationSolvesAlike)

@@ -12,6 +12,8 @@
 #include <Eigen/SparseCore>
 
 #ifdef KERF_HAVE_CHOLMOD
+#include "Harmonic/SupernodalSolve.h"
+
 #include <cholmod.h>
 #else
 #include <Eigen/SparseCholesky>
@@ -119,6 +121,12 @@ public:
   Eigen::VectorXd solve(int index, Eigen::VectorXd b) const
   {
 #ifdef KERF_HAVE_CHOLMOD
+    if (SupernodalSolve::supports(*this->Factors[index]))
+    {
+      Eigen::VectorXd x(b.size());
+      SupernodalSolve::solve(*this->Factors[index], b.data(), x.data(), this->Work);
+      return x;
+    }
     cholmod_dense right;
     right.nrow = static_cast<size_t>(b.size());
     right.ncol = 1;
@@ -164,6 +172,7 @@ private:
   }
   mutable cholmod_common Common;
   std::vector<cholmod_factor*> Factors;
+  mutable std::vector<double> Work; // SupernodalSolve's workspace
 #else
   std::vector<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>> Factors;
 #endif

@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Harmonic/SerialOpenMP.h"
+#include "Harmonic/SupernodalSolve.h"
 
 #include <algorithm>
 #include <cmath>
@@ -279,6 +280,7 @@ struct SparseCholesky::Implementation
   mutable cholmod_dense* solveY = nullptr;
   mutable cholmod_dense* solveE = nullptr;
   mutable cholmod_sparse* solveXset = nullptr;
+  mutable std::vector<double> solveWork; // SupernodalSolve's workspace
 
   Implementation()
   {
@@ -502,12 +504,13 @@ Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
   {
     throw Error("no factorization to solve with");
   }
-  cholmod_dense rhs = cholmodView(b.data(), static_cast<std::size_t>(b.size()));
-  if (!cholmod_solve2(CHOLMOD_A, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
+  if (b.size() != static_cast<Eigen::Index>(m.factor->n))
   {
-    throw Error("the sparse solve failed");
+    throw Error("the right-hand side does not match the factored matrix");
   }
-  return Eigen::Map<const Eigen::VectorXd>(static_cast<const double*>(m.solveX->x), b.size());
+  Eigen::VectorXd x(b.size());
+  SupernodalSolve::solve(*m.factor, b.data(), x.data(), m.solveWork);
+  return x;
 }
 
 Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
@@ -960,8 +963,8 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
   }
   const LowRankFactor& f = *lowRank.factor;
   const int n = static_cast<int>(m.factor->n);
-  // z = Y s on the reach (s summed over equal columns in U's order), then P^T L^-T z with
-  // CHOLMOD's supernodal backward solve.
+  // z = Y s on the reach (s summed over equal columns in U's order), then P^T L^-T z with the
+  // supernodal backward solve.
   Eigen::VectorXd t = Eigen::VectorXd::Zero(f.count());
   for (Eigen::Index c = 0; c < s.size(); ++c)
   {
@@ -975,12 +978,8 @@ Eigen::VectorXd SparseCholesky::apply(const LowRank& lowRank, const Eigen::Vecto
   {
     z[f.rows[r]] = reach[static_cast<Eigen::Index>(r)];
   }
-  cholmod_dense rhs = cholmodView(z.data(), static_cast<std::size_t>(n));
-  if (!cholmod_solve2(CHOLMOD_Lt, m.factor, &rhs, nullptr, &m.solveX, nullptr, &m.solveY, &m.solveE, m.mutableCommon()))
-  {
-    throw Error("the sparse solve failed");
-  }
-  const double* x = static_cast<const double*>(m.solveX->x);
+  SupernodalSolve::backward(*m.factor, z.data(), m.solveWork);
+  const double* x = z.data();
   const int* perm = static_cast<const int*>(m.factor->Perm);
   Eigen::VectorXd out(n);
   for (int r = 0; r < n; ++r)

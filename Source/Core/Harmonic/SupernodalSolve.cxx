@@ -1,0 +1,243 @@
+// Triangular solves with one right-hand side on a CHOLMOD supernodal factor, with vector kernels chosen per processor.
+#include "Harmonic/SupernodalSolve.h"
+
+#ifdef KERF_HAVE_CHOLMOD
+#include <algorithm>
+#include <cstddef>
+
+namespace kerf
+{
+namespace
+{
+// The kernels inline their vector helpers, so no vector crosses a call boundary.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define KERF_SOLVE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
+#else
+#define KERF_SOLVE_CLONES
+#endif
+#define KERF_SOLVE_INLINE inline __attribute__((always_inline))
+
+constexpr int Lanes = 8;
+typedef double Lane __attribute__((vector_size(Lanes * sizeof(double))));
+
+KERF_SOLVE_INLINE Lane load(const double* p)
+{
+  Lane v;
+  __builtin_memcpy(&v, p, sizeof v);
+  return v;
+}
+
+KERF_SOLVE_INLINE double sum(const Lane& v)
+{
+  // A fixed pairwise order, whatever the vector width the compiler lowers Lane to.
+  return ((v[0] + v[4]) + (v[2] + v[6])) + ((v[1] + v[5]) + (v[3] + v[7]));
+}
+
+// v[j] for the supernode's columns j (nsc of them) from L v = v on its diagonal block, and the
+// rows below (v[nsc..nsr), the values of the rows they update) minus the block's contribution.
+// L is the supernode's column-major block (nsr rows). Four columns at a time: their small
+// triangle first, then one pass over the rows below.
+KERF_SOLVE_CLONES
+void forwardBlock(const double* __restrict L, int nsr, int nsc, double* __restrict v)
+{
+  const std::size_t ld = static_cast<std::size_t>(nsr);
+  int j = 0;
+  for (; j + 4 <= nsc; j += 4)
+  {
+    const double* c0 = L + j * ld;
+    const double* c1 = c0 + ld;
+    const double* c2 = c1 + ld;
+    const double* c3 = c2 + ld;
+    const double v0 = v[j] / c0[j];
+    const double v1 = (v[j + 1] - c0[j + 1] * v0) / c1[j + 1];
+    const double v2 = (v[j + 2] - c0[j + 2] * v0 - c1[j + 2] * v1) / c2[j + 2];
+    const double v3 = (v[j + 3] - c0[j + 3] * v0 - c1[j + 3] * v1 - c2[j + 3] * v2) / c3[j + 3];
+    v[j] = v0;
+    v[j + 1] = v1;
+    v[j + 2] = v2;
+    v[j + 3] = v3;
+    for (int i = j + 4; i < nsr; ++i)
+    {
+      v[i] -= ((c0[i] * v0 + c1[i] * v1) + c2[i] * v2) + c3[i] * v3;
+    }
+  }
+  for (; j < nsc; ++j)
+  {
+    const double* c = L + j * ld;
+    const double vj = v[j] / c[j];
+    v[j] = vj;
+    for (int i = j + 1; i < nsr; ++i)
+    {
+      v[i] -= c[i] * vj;
+    }
+  }
+}
+
+// v[j] for the supernode's columns from L^T v = v, given the final values of the rows below
+// (v[nsc..nsr)). Four columns at a time, from the last: their dot products with the rows below
+// them in one pass, then their small triangle.
+KERF_SOLVE_CLONES
+void backwardBlock(const double* __restrict L, int nsr, int nsc, double* __restrict v)
+{
+  const std::size_t ld = static_cast<std::size_t>(nsr);
+  int j = nsc;
+  for (; j >= 4; j -= 4)
+  {
+    const int j0 = j - 4;
+    const double* c0 = L + j0 * ld;
+    const double* c1 = c0 + ld;
+    const double* c2 = c1 + ld;
+    const double* c3 = c2 + ld;
+    Lane a0 = {}, a1 = {}, a2 = {}, a3 = {};
+    int i = j;
+    for (; i + Lanes <= nsr; i += Lanes)
+    {
+      const Lane x = load(v + i);
+      a0 += load(c0 + i) * x;
+      a1 += load(c1 + i) * x;
+      a2 += load(c2 + i) * x;
+      a3 += load(c3 + i) * x;
+    }
+    double s0 = sum(a0), s1 = sum(a1), s2 = sum(a2), s3 = sum(a3);
+    for (; i < nsr; ++i)
+    {
+      s0 += c0[i] * v[i];
+      s1 += c1[i] * v[i];
+      s2 += c2[i] * v[i];
+      s3 += c3[i] * v[i];
+    }
+    const double v3 = (v[j0 + 3] - s3) / c3[j0 + 3];
+    const double v2 = (v[j0 + 2] - s2 - c2[j0 + 3] * v3) / c2[j0 + 2];
+    const double v1 = (v[j0 + 1] - s1 - c1[j0 + 2] * v2 - c1[j0 + 3] * v3) / c1[j0 + 1];
+    const double v0 = (v[j0] - s0 - c0[j0 + 1] * v1 - c0[j0 + 2] * v2 - c0[j0 + 3] * v3) / c0[j0];
+    v[j0] = v0;
+    v[j0 + 1] = v1;
+    v[j0 + 2] = v2;
+    v[j0 + 3] = v3;
+  }
+  for (--j; j >= 0; --j)
+  {
+    const double* c = L + j * ld;
+    Lane a = {};
+    int i = j + 1;
+    for (; i + Lanes <= nsr; i += Lanes)
+    {
+      a += load(c + i) * load(v + i);
+    }
+    double s = sum(a);
+    for (; i < nsr; ++i)
+    {
+      s += c[i] * v[i];
+    }
+    v[j] = (v[j] - s) / c[j];
+  }
+}
+
+// A supernode's rows: its own columns first, then the rows below its diagonal block.
+struct Block
+{
+  int first; // the first column
+  int nsc;   // columns
+  int nsr;   // rows
+  const int* rows;
+};
+
+struct Supernodes
+{
+  const int* super;
+  const int* pi;
+  const int* px;
+  const int* rows;
+  const double* values;
+  int count;
+
+  explicit Supernodes(const cholmod_factor& factor)
+    : super(static_cast<const int*>(factor.super))
+    , pi(static_cast<const int*>(factor.pi))
+    , px(static_cast<const int*>(factor.px))
+    , rows(static_cast<const int*>(factor.s))
+    , values(static_cast<const double*>(factor.x))
+    , count(static_cast<int>(factor.nsuper))
+  {
+  }
+  /// Copies the values of supernode `node`'s rows from y into v, in its row order.
+  Block gather(int node, const double* y, double* v) const
+  {
+    const Block b{ this->super[node], this->super[node + 1] - this->super[node], this->pi[node + 1] - this->pi[node],
+      this->rows + this->pi[node] };
+    std::copy(y + b.first, y + b.first + b.nsc, v);
+    for (int i = b.nsc; i < b.nsr; ++i)
+    {
+      v[i] = y[b.rows[i]];
+    }
+    return b;
+  }
+  int largest() const
+  {
+    int most = 0;
+    for (int s = 0; s < this->count; ++s)
+    {
+      most = std::max(most, this->pi[s + 1] - this->pi[s]);
+    }
+    return most;
+  }
+};
+} // namespace
+
+bool SupernodalSolve::supports(const cholmod_factor& factor)
+{
+  return factor.is_super && factor.xtype == CHOLMOD_REAL && factor.dtype == CHOLMOD_DOUBLE &&
+    factor.itype == CHOLMOD_INT;
+}
+
+void SupernodalSolve::forward(const cholmod_factor& factor, double* y, std::vector<double>& workspace)
+{
+  const Supernodes s(factor);
+  workspace.resize(static_cast<std::size_t>(s.largest()));
+  double* v = workspace.data();
+  for (int node = 0; node < s.count; ++node)
+  {
+    const Block b = s.gather(node, y, v);
+    forwardBlock(s.values + s.px[node], b.nsr, b.nsc, v);
+    std::copy(v, v + b.nsc, y + b.first);
+    for (int i = b.nsc; i < b.nsr; ++i)
+    {
+      y[b.rows[i]] = v[i];
+    }
+  }
+}
+
+void SupernodalSolve::backward(const cholmod_factor& factor, double* y, std::vector<double>& workspace)
+{
+  const Supernodes s(factor);
+  workspace.resize(static_cast<std::size_t>(s.largest()));
+  double* v = workspace.data();
+  for (int node = s.count - 1; node >= 0; --node)
+  {
+    const Block b = s.gather(node, y, v);
+    backwardBlock(s.values + s.px[node], b.nsr, b.nsc, v);
+    std::copy(v, v + b.nsc, y + b.first);
+  }
+}
+
+void SupernodalSolve::solve(const cholmod_factor& factor, const double* b, double* x, std::vector<double>& workspace)
+{
+  const std::size_t n = factor.n;
+  const int* perm = static_cast<const int*>(factor.Perm);
+  std::vector<double> y(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    y[k] = b[perm ? perm[k] : static_cast<int>(k)];
+  }
+  forward(factor, y.data(), workspace);
+  backward(factor, y.data(), workspace);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    x[perm ? perm[k] : static_cast<int>(k)] = y[k] + 0.0;
+  }
+}
+
+} // namespace kerf
+#endif

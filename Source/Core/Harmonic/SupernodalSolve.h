@@ -1,0 +1,36 @@
+// Triangular solves with one right-hand side on a CHOLMOD supernodal factor, with vector kernels chosen per processor.
+#pragma once
+
+#ifdef KERF_HAVE_CHOLMOD
+#include <cholmod.h>
+
+#include <vector>
+
+namespace kerf
+{
+
+/// Solves with a real supernodal CHOLMOD factor L L^T = P A P^T, one right-hand side, the
+/// dense kernels inline: each supernode's triangle and the block below it are swept column by
+/// column with vector instructions compiled for AVX-512, AVX2 with FMA and the x86-64 baseline
+/// (the processor picks one when the library loads). CHOLMOD's own solve calls the BLAS once or
+/// twice per supernode (dtrsv, dgemv), whose kernels are chosen when the BLAS loads and can miss
+/// the processor (OpenBLAS 0.3.21 runs its SSE3 kernels on some AVX-512 Xeons);
+/// Documentation/filters/HarmonicCuts.md ("Low-rank kernels") compares the two. The results
+/// differ from CHOLMOD's in the last bits only; on one machine they are the same bit for bit
+/// run after run. Workspace is resized as needed.
+class SupernodalSolve
+{
+public:
+  /// True if `factor` is one these solves take: supernodal, real, double precision.
+  static bool supports(const cholmod_factor& factor);
+
+  /// y := L^-1 y, y in the factor's (permuted) row order.
+  static void forward(const cholmod_factor& factor, double* y, std::vector<double>& workspace);
+  /// y := L^-T y, y in the factor's (permuted) row order.
+  static void backward(const cholmod_factor& factor, double* y, std::vector<double>& workspace);
+  /// x = A^-1 b (b and x in A's row order; they may be the same array).
+  static void solve(const cholmod_factor& factor, const double* b, double* x, std::vector<double>& workspace);
+};
+
+} // namespace kerf
+#endif
