@@ -37,6 +37,8 @@
 //                                            kerf, Kerf's supernodal kernels) or solveColumns()
 //                                            with one column (route cholmod, CHOLMOD's solve
 //                                            with the BLAS)
+//   BM_LocatorBuild/<size>                   kerf::ClosestPointLocator on the surface, then the
+//                                            closest points of the stroke's 9 points
 // The scene of a size (mesh, weights, strokes, factors) is built once, outside the timed loops.
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
@@ -482,6 +484,22 @@ void lowRankRoute(benchmark::State& state, SolverScene& scene, Matrix matrix, in
   alternatePrepare(state, factor, u, route, false);
 }
 
+void locatorBuild(benchmark::State& state, SolverScene& scene)
+{
+  double distance = 0.0;
+  for (auto _ : state)
+  {
+    const kerf::ClosestPointLocator locator(scene.surface.mesh);
+    distance = 0.0;
+    for (const kerf::Vector3& point : scene.strokes[0])
+    {
+      distance += locator.closest(point).distance;
+    }
+    benchmark::DoNotOptimize(distance);
+  }
+  state.counters["distance"] = distance;
+}
+
 void solveOne(benchmark::State& state, SolverScene& scene, Matrix matrix, bool library)
 {
   const Cholesky& factor = factorOf(scene, matrix, Cholesky::Ordering::AMD);
@@ -562,6 +580,7 @@ void RegisterHarmonicSolverBenchmarks()
       add("BM_SolverRefinement" + suffix, size,
         [formulation](benchmark::State& state, SolverScene& scene) { alternateCuts(state, scene, formulation, true); });
     }
+    add("BM_LocatorBuild" + label, size, locatorBuild);
     for (Matrix matrix : matrices)
     {
       for (Cholesky::Ordering ordering : orderings)

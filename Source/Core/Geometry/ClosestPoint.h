@@ -8,9 +8,10 @@
 namespace kerf
 {
 
-/// Finds the point of a mesh nearest to a query point. Built once per mesh in O(F log F);
-/// each query visits the boxes that can hold a nearer point. Ties go to the lower face index, so
-/// results are deterministic.
+/// Finds the point of a mesh nearest to a query point. Built once per mesh: the faces sorted in
+/// the Morton order of their centroids, a binary tree of boxes over that order.
+/// Each query visits the boxes that can hold a point at least as near; ties go to the lower face
+/// index, so results are deterministic and do not depend on the tree's shape.
 class ClosestPointLocator
 {
 public:
@@ -35,12 +36,7 @@ private:
     int count = 0; // leaves: number of faces; 0 for inner nodes
     int right = -1; // inner nodes: the right child
   };
-  struct Centroid
-  {
-    Vector3 position;
-    int face = -1;
-  };
-  int build(int first, int count, std::vector<Centroid>& centroids);
+  int build(int first, int count);
   void search(int node, const Vector3& query, Hit& best) const;
 
   const TriangleMesh& Mesh;
