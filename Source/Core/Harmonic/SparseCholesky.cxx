@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "Harmonic/SerialOpenMP.h"
 #include "Harmonic/SupernodalSolve.h"
+#include "Harmonic/VectorKernels.h"
 
 #include <algorithm>
 #include <cmath>
@@ -100,27 +101,17 @@ cholmod_sparse cholmodPattern(std::size_t n, std::vector<int>& rows, int (&point
 // picks one when the library loads (the factor's own BLAS kernels are chosen per processor too).
 constexpr int ColumnChunk = 8;
 constexpr int TileRows = 8;
-typedef double Chunk __attribute__((vector_size(ColumnChunk * sizeof(double))));
-// The kernels inline their vector helpers, so no vector crosses a call boundary.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define KERF_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define KERF_VECTOR_CLONES
-#endif
-#define KERF_INLINE inline __attribute__((always_inline))
+typedef Vector8 Chunk;
+static_assert(sizeof(Chunk) == ColumnChunk * sizeof(double), "a chunk is one Vector8");
 
 KERF_INLINE Chunk loadChunk(const double* p)
 {
-  Chunk v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
+  return loadVector8(p);
 }
 
 KERF_INLINE void storeChunk(double* p, const Chunk& v)
 {
-  __builtin_memcpy(p, &v, sizeof v);
+  storeVector8(p, v);
 }
 
 // Y_i -= sum_{t < depth} L(i, t) y[t] for rows [begin, end) of a block whose columns start at

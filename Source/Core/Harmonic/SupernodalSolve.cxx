@@ -2,6 +2,8 @@
 #include "Harmonic/SupernodalSolve.h"
 
 #ifdef KERF_HAVE_CHOLMOD
+#include "Harmonic/VectorKernels.h"
+
 #include <algorithm>
 #include <cstddef>
 
@@ -9,27 +11,15 @@ namespace kerf
 {
 namespace
 {
-// The kernels inline their vector helpers, so no vector crosses a call boundary.
-#pragma GCC diagnostic ignored "-Wpsabi"
-
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-#define KERF_SOLVE_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define KERF_SOLVE_CLONES
-#endif
-#define KERF_SOLVE_INLINE inline __attribute__((always_inline))
-
 constexpr int Lanes = 8;
-typedef double Lane __attribute__((vector_size(Lanes * sizeof(double))));
+typedef Vector8 Lane;
 
-KERF_SOLVE_INLINE Lane load(const double* p)
+KERF_INLINE Lane load(const double* p)
 {
-  Lane v;
-  __builtin_memcpy(&v, p, sizeof v);
-  return v;
+  return loadVector8(p);
 }
 
-KERF_SOLVE_INLINE double sum(const Lane& v)
+KERF_INLINE double sum(const Lane& v)
 {
   // A fixed pairwise order, whatever the vector width the compiler lowers Lane to.
   return ((v[0] + v[4]) + (v[2] + v[6])) + ((v[1] + v[5]) + (v[3] + v[7]));
@@ -39,7 +29,7 @@ KERF_SOLVE_INLINE double sum(const Lane& v)
 // rows below (v[nsc..nsr), the values of the rows they update) minus the block's contribution.
 // L is the supernode's column-major block (nsr rows). Four columns at a time: their small
 // triangle first, then one pass over the rows below.
-KERF_SOLVE_CLONES
+KERF_VECTOR_CLONES
 void forwardBlock(const double* __restrict L, int nsr, int nsc, double* __restrict v)
 {
   const std::size_t ld = static_cast<std::size_t>(nsr);
@@ -78,7 +68,7 @@ void forwardBlock(const double* __restrict L, int nsr, int nsc, double* __restri
 // v[j] for the supernode's columns from L^T v = v, given the final values of the rows below
 // (v[nsc..nsr)). Four columns at a time, from the last: their dot products with the rows below
 // them in one pass, then their small triangle.
-KERF_SOLVE_CLONES
+KERF_VECTOR_CLONES
 void backwardBlock(const double* __restrict L, int nsr, int nsc, double* __restrict v)
 {
   const std::size_t ld = static_cast<std::size_t>(nsr);
