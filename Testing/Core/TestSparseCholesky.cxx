@@ -111,9 +111,10 @@ TEST(SparseCholesky, SolveMatchesDenseReference)
 TEST(SparseCholesky, SolveMatchesTheLibrarysSolve)
 {
   // solve() runs Kerf's supernodal kernels; solveColumns() CHOLMOD's own solve (the BLAS). They
-  // agree to rounding on supernodes one column wide (a chain), a few wide (grids, whose fill
-  // gives supernodes of every width, with and without a remainder of four columns) and dense
-  // (one supernode), and the kernels give the same bits on every call.
+  // agree to rounding on a chain (which CHOLMOD's amalgamation may merge into wider
+  // supernodes), grids (whose fill gives supernodes of many widths) and a dense block (one
+  // supernode of 61 columns, a remainder of one past the blocks of four), and the kernels give
+  // the same bits on every call.
   std::vector<Eigen::SparseMatrix<double>> matrices = { gridSystem(40), gridSystem(7) };
   const int n = 300;
   std::vector<Eigen::Triplet<double>> chain, dense;

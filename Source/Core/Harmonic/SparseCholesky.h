@@ -22,7 +22,7 @@ namespace kerf
 /// (3 to 11 times faster than CHOLMOD's sparse solves, see Documentation/filters/
 /// HarmonicCuts.md), U^T A^-1 U is Y^T Y (the BLAS's syrk, supernode by supernode on the
 /// columns that can be nonzero there), and A^-1 U s is one backward solve
-/// P^T L^-T Y s (CHOLMOD's). The last prepare()'s Y is kept, so a U that adds columns to the
+/// P^T L^-T Y s (Kerf's SupernodalSolve::backward). The last prepare()'s Y is kept, so a U that adds columns to the
 /// previous one only sweeps the new ones. Each column's arithmetic in the sweep is the same
 /// whatever the others are, and the Gram matrix is formed from U's distinct columns in a fixed
 /// order, so every result depends only on A and U, never on earlier calls or on the order of U's
