@@ -24,6 +24,8 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <string>
 #include <vector>
@@ -54,6 +56,23 @@ const ChartScene& chartScene(int cells)
   return found->second;
 }
 
+// FNV-1a (32 bits, exact as a counter) of the texture coordinates' bytes: equal checksums from two
+// builds (--benchmark_format=json prints them whole) mean the same atlas, bit for bit.
+double uvChecksum(const std::vector<kerf::Vector2>& uv)
+{
+  std::uint32_t hash = 2166136261u;
+  for (const kerf::Vector2& p : uv)
+  {
+    unsigned char bytes[2 * sizeof(double)];
+    std::memcpy(bytes, p.data(), sizeof bytes);
+    for (unsigned char b : bytes)
+    {
+      hash = (hash ^ b) * 16777619u;
+    }
+  }
+  return static_cast<double>(hash);
+}
+
 void chartParameterization(benchmark::State& state, int cells, kerf::ChartMethod method, kerf::ChartSolver solver)
 {
   kerf::ChartParameterizationResult result;
@@ -81,6 +100,7 @@ void chartParameterization(benchmark::State& state, int cells, kerf::ChartMethod
       s.counters["L2stretch"] = result.distortion.surfaceStretch;
       s.counters["meanShear"] = result.distortion.meanShear;
       s.counters["flipped"] = result.distortion.flippedFaces;
+      s.counters["uvChecksum"] = uvChecksum(result.uv);
     });
 }
 
@@ -118,6 +138,7 @@ void chartSeams(benchmark::State& state, int levels, kerf::ChartMethod method)
     [&](benchmark::State& s, const kerf::TriangleMesh& mesh) {
       s.counters["triangles"] = mesh.faceCount();
       s.counters["seams"] = result.charts.empty() ? 0 : result.charts[0].seams;
+      s.counters["uvChecksum"] = uvChecksum(result.uv);
       s.counters["L2stretch"] = result.distortion.surfaceStretch;
       s.counters["meanShear"] = result.distortion.meanShear;
       s.counters["flipped"] = result.distortion.flippedFaces;

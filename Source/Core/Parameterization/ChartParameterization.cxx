@@ -15,13 +15,15 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <cstdlib>
 #include <limits>
+#include <new>
 #include <numeric>
 #include <set>
 #include <utility>
 
 #ifdef KERF_HAVE_CHOLMOD
-#include <Eigen/CholmodSupport>
+#include <cholmod.h>
 #endif
 
 namespace kerf
@@ -198,32 +200,136 @@ namespace
 {
 using Complex = std::complex<double>;
 
+#ifdef KERF_HAVE_CHOLMOD
+// CHOLMOD's L L^H of one Hermitian system after another (the charts of one parameterizeCharts
+// call) with one cholmod_common, and one buffer for a supernodal factor's values kept from system
+// to system: the factorization writes every value of it, and a fresh factor's pages cost more to
+// touch first than to fill (Documentation/filters/ChartParameterization.md, "Speed").
+class HermitianSolves
+{
+public:
+  HermitianSolves()
+  {
+    cholmod_start(&this->Common);
+    this->Common.print = 0; // a failure is reported by the exception below, never printed
+    // AMD alone: METIS' ordering costs more than its fill saves on these charts (the figures are
+    // in Documentation/filters/ChartParameterization.md).
+    this->Common.nmethods = 1;
+    this->Common.method[0].ordering = CHOLMOD_AMD;
+  }
+  ~HermitianSolves()
+  {
+    std::free(this->Values);
+    cholmod_finish(&this->Common);
+  }
+  HermitianSolves(const HermitianSolves&) = delete;
+  HermitianSolves& operator=(const HermitianSolves&) = delete;
+
+  Eigen::VectorXcd solve(const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs)
+  {
+    cholmod_sparse a{};
+    a.nrow = a.ncol = static_cast<std::size_t>(lower.rows());
+    a.nzmax = static_cast<std::size_t>(lower.nonZeros());
+    a.p = const_cast<int*>(lower.outerIndexPtr());
+    a.i = const_cast<int*>(lower.innerIndexPtr());
+    a.x = const_cast<Complex*>(lower.valuePtr());
+    a.stype = -1; // the lower triangle
+    a.itype = CHOLMOD_INT;
+    a.xtype = CHOLMOD_COMPLEX;
+    a.dtype = CHOLMOD_DOUBLE;
+    a.sorted = 1;
+    a.packed = 1;
+    const SerialOpenMP serial;
+    cholmod_factor* factor = cholmod_analyze(&a, &this->Common);
+    if (factor == nullptr)
+    {
+      throw Error("the sparse Cholesky analysis of the conformal map's system failed");
+    }
+    // The factor is given the kept buffer (CHOLMOD factors into values it finds allocated) and
+    // takes it back before it is freed.
+    struct Release
+    {
+      HermitianSolves& solves;
+      cholmod_factor*& factor;
+      ~Release()
+      {
+        if (this->factor->x == this->solves.Values)
+        {
+          this->factor->x = nullptr;
+          this->factor->xtype = CHOLMOD_PATTERN;
+        }
+        cholmod_free_factor(&this->factor, &this->solves.Common);
+      }
+    } release{ *this, factor };
+    if (factor->is_super)
+    {
+      const std::size_t doubles = 2 * factor->xsize;
+      if (doubles > this->Capacity)
+      {
+        std::free(this->Values);
+        this->Capacity = 0;
+        this->Values = static_cast<double*>(std::malloc(doubles * sizeof(double)));
+        if (this->Values == nullptr)
+        {
+          throw std::bad_alloc();
+        }
+        this->Capacity = doubles;
+      }
+      factor->x = this->Values;
+      factor->xtype = CHOLMOD_COMPLEX;
+    }
+    if (!cholmod_factorize(&a, factor, &this->Common) || this->Common.status != CHOLMOD_OK ||
+      factor->minor < factor->n)
+    {
+      throw Error("the conformal map's system is not positive definite");
+    }
+    cholmod_dense b{};
+    b.nrow = b.nzmax = b.d = static_cast<std::size_t>(rhs.size());
+    b.ncol = 1;
+    b.x = const_cast<Complex*>(rhs.data());
+    b.xtype = CHOLMOD_COMPLEX;
+    b.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* x = cholmod_solve(CHOLMOD_A, factor, &b, &this->Common);
+    if (x == nullptr)
+    {
+      throw Error("the conformal map's system could not be solved");
+    }
+    const Eigen::VectorXcd solution = Eigen::Map<const Eigen::VectorXcd>(static_cast<const Complex*>(x->x), rhs.size());
+    cholmod_free_dense(&x, &this->Common);
+    return solution;
+  }
+
+private:
+  cholmod_common Common;
+  double* Values = nullptr; // a supernodal factor's values, interleaved real and imaginary parts
+  std::size_t Capacity = 0; // doubles
+};
+#else
+class HermitianSolves
+{
+};
+#endif
+
 // Solves H z = rhs for the Hermitian positive definite H given by its lower triangle: with
 // ComplexCHOLMOD, CHOLMOD's L L^H (supernodal or simplicial, CHOLMOD's choice by the flops per
-// nonzero of the factor) after an AMD ordering; else Eigen's SimplicialLDLT.
-Eigen::VectorXcd solveHermitian(const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs, ChartSolver solver)
+// nonzero of the factor) after an AMD ordering, through `solves` if given; else Eigen's
+// SimplicialLDLT.
+Eigen::VectorXcd solveHermitian(
+  const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs, ChartSolver solver, HermitianSolves* solves)
 {
 #ifdef KERF_HAVE_CHOLMOD
   if (solver == ChartSolver::ComplexCHOLMOD)
   {
-    Eigen::CholmodDecomposition<Eigen::SparseMatrix<Complex>, Eigen::Lower> cholesky;
-    // AMD alone: METIS' ordering costs more than its fill saves on these charts (the figures are
-    // in Documentation/filters/ChartParameterization.md).
-    cholesky.cholmod().print = 0; // a failure is reported by the exception below, never printed
-    cholesky.cholmod().nmethods = 1;
-    cholesky.cholmod().method[0].ordering = CHOLMOD_AMD;
+    if (solves != nullptr)
     {
-      const SerialOpenMP serial;
-      cholesky.compute(lower);
+      return solves->solve(lower, rhs);
     }
-    if (cholesky.info() != Eigen::Success)
-    {
-      throw Error("the conformal map's system is not positive definite");
-    }
-    return cholesky.solve(rhs);
+    HermitianSolves once;
+    return once.solve(lower, rhs);
   }
 #else
   (void)solver;
+  (void)solves;
 #endif
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<Complex>, Eigen::Lower> ldlt(lower);
   if (ldlt.info() != Eigen::Success)
@@ -237,7 +343,7 @@ Eigen::VectorXcd solveHermitian(const Eigen::SparseMatrix<Complex>& lower, const
 // cotangent Laplacian and C the antisymmetric boundary term of the real form, so H has the
 // Laplacian's pattern and half the real form's unknowns.
 std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::vector<double>& cotangents,
-  const std::vector<int>& loop, int pinA, int pinB, double pinDistance, ChartSolver solver)
+  const std::vector<int>& loop, int pinA, int pinB, double pinDistance, ChartSolver solver, HermitianSolves* solves)
 {
   const int n = chart.vertexCount();
   std::vector<int> freeIndex(static_cast<std::size_t>(n), -1);
@@ -345,7 +451,7 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
     }
   }
   columnStart[freeCount] = entry;
-  const Eigen::VectorXcd solution = solveHermitian(lower, rhs, solver);
+  const Eigen::VectorXcd solution = solveHermitian(lower, rhs, solver, solves);
   std::vector<Vector2> uv(static_cast<std::size_t>(n));
   for (int v = 0; v < n; ++v)
   {
@@ -361,7 +467,8 @@ namespace
 {
 // leastSquaresConformalMap or linearAngleBasedFlattening of a chart known to be a disk
 // (parameterizeCharts checks every chart once, before any is flattened).
-std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, ChartSolver solver);
+std::vector<Vector2> flattenDisk(
+  const TriangleMesh& chart, ChartMethod method, ChartSolver solver, HermitianSolves* solves = nullptr);
 
 void requireDisk(const TriangleMesh& chart)
 {
@@ -390,7 +497,8 @@ namespace
 // The conformal energy E_D - A with the cotangent weights of `cotangents` (per corner) minimised
 // with the two boundary vertices farthest apart pinned: LSCM with the 3D angles' cotangents, the
 // angle-based reconstruction with LinABF's.
-std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, const std::vector<double>& cotangents, ChartSolver solver)
+std::vector<Vector2> conformalMapOfDisk(
+  const TriangleMesh& chart, const std::vector<double>& cotangents, ChartSolver solver, HermitianSolves* solves)
 {
   const int n = chart.vertexCount();
   const std::vector<int>& loop = chart.boundaryLoops().front();
@@ -399,7 +507,7 @@ std::vector<Vector2> conformalMapOfDisk(const TriangleMesh& chart, const std::ve
   const double pinDistance = (chart.point(pinA) - chart.point(pinB)).norm();
   if (solver == ChartSolver::ComplexLDLT || solver == ChartSolver::ComplexCHOLMOD)
   {
-    std::vector<Vector2> uv = complexConformalMap(chart, cotangents, loop, pinA, pinB, pinDistance, solver);
+    std::vector<Vector2> uv = complexConformalMap(chart, cotangents, loop, pinA, pinB, pinDistance, solver, solves);
     for (std::size_t v = 0; v < uv.size(); ++v)
     {
       if (!uv[v].allFinite())
@@ -510,9 +618,10 @@ std::vector<double> reconstructionCotangents(const TriangleMesh& chart)
   return cotangents;
 }
 
-std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, ChartSolver solver)
+std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, ChartSolver solver, HermitianSolves* solves)
 {
-  return conformalMapOfDisk(chart, method == ChartMethod::LinABF ? reconstructionCotangents(chart) : cornerCotangents(chart), solver);
+  return conformalMapOfDisk(
+    chart, method == ChartMethod::LinABF ? reconstructionCotangents(chart) : cornerCotangents(chart), solver, solves);
 }
 
 } // namespace
@@ -771,7 +880,7 @@ double seamScore(const TriangleMesh& chart, const std::vector<Vector2>& uv, std:
 // score is at least SeamCandidateFraction of the worst, the vertex farthest from the boundary
 // (the tip of a protrusion the map shrank).
 void addSeams(TriangleMesh& chart, std::vector<int>& toChart, std::vector<Vector2>& uv, ChartSummary& summary,
-  const ChartParameterizationOptions& options)
+  const ChartParameterizationOptions& options, HermitianSolves* solves)
 {
   if (options.maximumSeams <= 0)
   {
@@ -835,7 +944,7 @@ void addSeams(TriangleMesh& chart, std::vector<int>& toChart, std::vector<Vector
     try
     {
       requireDisk(cut.mesh);
-      current.uv = flattenDisk(cut.mesh, options.method, options.solver);
+      current.uv = flattenDisk(cut.mesh, options.method, options.solver, solves);
     }
     catch (const Error&)
     {
@@ -972,10 +1081,11 @@ ChartParameterizationResult parameterizeCharts(
   }
   // Flatten each chart, adding seams where the map is worst (options.maximumSeams).
   std::vector<std::vector<Vector2>> chartUV(labels.size());
+  HermitianSolves solves;
   for (std::size_t c = 0; c < labels.size(); ++c)
   {
-    chartUV[c] = flattenDisk(charts[c], options.method, options.solver);
-    addSeams(charts[c], toChart[c], chartUV[c], summaries[c], options);
+    chartUV[c] = flattenDisk(charts[c], options.method, options.solver, &solves);
+    addSeams(charts[c], toChart[c], chartUV[c], summaries[c], options, &solves);
   }
   // Vertices copied by the cuts: the first copy keeps the split mesh's vertex, the others are
   // appended to it (charts share no vertex of the split mesh).
