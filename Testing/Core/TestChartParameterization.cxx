@@ -10,6 +10,8 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace kerf
 {
@@ -149,6 +151,18 @@ TEST(ChartParameterization, IsDeterministicAndSolversAgree)
   }
 }
 
+// A unit grid of cells x cells squares, bent (z = 0.3 sin 3x cos 2y) and moved by `offset` along x.
+std::pair<std::vector<Vector3>, std::vector<Triangle>> bentGrid(int cells, double offset)
+{
+  const TriangleMesh grid = makeGrid(1.0, 1.0, cells, cells);
+  std::vector<Vector3> points = grid.points();
+  for (Vector3& p : points)
+  {
+    p = Vector3(p.x() + offset, p.y(), 0.3 * std::sin(3.0 * p.x()) * std::cos(2.0 * p.y()));
+  }
+  return { points, grid.triangles() };
+}
+
 // The charts of one call are factored one after another into one kept buffer when CHOLMOD makes
 // supernodal factors, as it does for both charts here (81 x 81 and 71 x 71 vertices; at 61 x 61
 // it chooses a simplicial factor): the larger chart first leaves its values in the buffer the
@@ -156,15 +170,6 @@ TEST(ChartParameterization, IsDeterministicAndSolversAgree)
 // fresh memory; the atlas must be the same bit for bit.
 TEST(ChartParameterization, ChartsFactoredIntoKeptMemoryMatchChartsFactoredIntoFreshMemory)
 {
-  auto bentGrid = [](int cells, double offset) {
-    const TriangleMesh grid = makeGrid(1.0, 1.0, cells, cells);
-    std::vector<Vector3> points = grid.points();
-    for (Vector3& p : points)
-    {
-      p = Vector3(p.x() + offset, p.y(), 0.3 * std::sin(3.0 * p.x()) * std::cos(2.0 * p.y()));
-    }
-    return std::make_pair(points, grid.triangles());
-  };
   auto [points, triangles] = bentGrid(80, 0.0);
   const auto [smallPoints, smallTriangles] = bentGrid(70, 2.0);
   const int offset = static_cast<int>(points.size());
@@ -191,6 +196,29 @@ TEST(ChartParameterization, ChartsFactoredIntoKeptMemoryMatchChartsFactoredIntoF
     ASSERT_EQ(kept.split.originalPoint[v], fresh.split.originalPoint[v]);
     EXPECT_EQ(kept.uv[v], fresh.uv[v]) << "vertex " << v;
   }
+}
+
+// On a chart whose factor CHOLMOD makes supernodal (81 x 81 vertices, see above), the solve runs
+// Kerf's complex one-column kernels: the map matches Eigen's SimplicialLDLT's to rounding, as
+// amplified by the system's condition, and is the same bit for bit on every call.
+TEST(ChartParameterization, SupernodalSolvesMatchTheSimplicialSolver)
+{
+  const auto [points, triangles] = bentGrid(80, 0.0);
+  const TriangleMesh chart(points, triangles);
+  const std::vector<Vector2> kerf = leastSquaresConformalMap(chart, ChartSolver::ComplexCHOLMOD);
+  const std::vector<Vector2> eigen = leastSquaresConformalMap(chart, ChartSolver::ComplexLDLT);
+  const std::vector<Vector2> again = leastSquaresConformalMap(chart, ChartSolver::ComplexCHOLMOD);
+  ASSERT_EQ(kerf.size(), eigen.size());
+  double largest = 0.0;
+  double difference = 0.0;
+  for (std::size_t v = 0; v < kerf.size(); ++v)
+  {
+    largest = std::max(largest, eigen[v].norm());
+    difference = std::max(difference, (kerf[v] - eigen[v]).norm());
+    EXPECT_EQ(kerf[v], again[v]) << "vertex " << v;
+  }
+  EXPECT_GT(largest, 0.5);
+  EXPECT_LT(difference, 1e-10 * largest);
 }
 
 TEST(ChartParameterization, FaceDistortionOfKnownMaps)

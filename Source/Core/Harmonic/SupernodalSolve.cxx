@@ -125,6 +125,120 @@ void backwardBlock(const double* __restrict L, int nsr, int nsc, double* __restr
   }
 }
 
+// The complex kernels: values interleaved (real, imaginary), four complex numbers per Lane. For a
+// column value w = (wr, wi) and column entries a: a w = a * (wr, wr) + swap(a) * (-wi, wi).
+typedef long LaneIndex __attribute__((vector_size(8 * sizeof(long))));
+
+KERF_INLINE Lane swapPairs(const Lane& a)
+{
+  return __builtin_shuffle(a, LaneIndex{ 1, 0, 3, 2, 5, 4, 7, 6 });
+}
+
+KERF_INLINE Lane realLanes(double wr)
+{
+  return Lane{ wr, wr, wr, wr, wr, wr, wr, wr };
+}
+
+KERF_INLINE Lane signedImaginaryLanes(double wi)
+{
+  return Lane{ -wi, wi, -wi, wi, -wi, wi, -wi, wi };
+}
+
+// forwardBlock for a complex factor (L L^H, real diagonal): two columns at a time.
+KERF_VECTOR_CLONES
+void forwardBlockComplex(const double* __restrict L, int nsr, int nsc, double* __restrict v)
+{
+  const std::size_t ld = 2 * static_cast<std::size_t>(nsr);
+  int j = 0;
+  for (; j + 2 <= nsc; j += 2)
+  {
+    const double* c0 = L + j * ld;
+    const double* c1 = c0 + ld;
+    const double d0 = c0[2 * j];
+    const double d1 = c1[2 * (j + 1)];
+    const double w0r = v[2 * j] / d0;
+    const double w0i = v[2 * j + 1] / d0;
+    // v[j + 1] -= L[j + 1, j] w0
+    const double ar = c0[2 * (j + 1)], ai = c0[2 * (j + 1) + 1];
+    const double w1r = (v[2 * (j + 1)] - (ar * w0r - ai * w0i)) / d1;
+    const double w1i = (v[2 * (j + 1) + 1] - (ar * w0i + ai * w0r)) / d1;
+    v[2 * j] = w0r;
+    v[2 * j + 1] = w0i;
+    v[2 * (j + 1)] = w1r;
+    v[2 * (j + 1) + 1] = w1i;
+    const Lane r0 = realLanes(w0r), i0 = signedImaginaryLanes(w0i);
+    const Lane r1 = realLanes(w1r), i1 = signedImaginaryLanes(w1i);
+    int i = 2 * (j + 2);
+    const int end = 2 * nsr;
+    for (; i + Lanes <= end; i += Lanes)
+    {
+      const Lane a0 = load(c0 + i);
+      const Lane a1 = load(c1 + i);
+      const Lane update = (a0 * r0 + swapPairs(a0) * i0) + (a1 * r1 + swapPairs(a1) * i1);
+      storeVector8(v + i, load(v + i) - update);
+    }
+    for (; i < end; i += 2)
+    {
+      const double re = (c0[i] * w0r - c0[i + 1] * w0i) + (c1[i] * w1r - c1[i + 1] * w1i);
+      const double im = (c0[i + 1] * w0r + c0[i] * w0i) + (c1[i + 1] * w1r + c1[i] * w1i);
+      v[i] -= re;
+      v[i + 1] -= im;
+    }
+  }
+  for (; j < nsc; ++j)
+  {
+    const double* c = L + j * ld;
+    const double d = c[2 * j];
+    const double wr = v[2 * j] / d;
+    const double wi = v[2 * j + 1] / d;
+    v[2 * j] = wr;
+    v[2 * j + 1] = wi;
+    for (int i = 2 * (j + 1); i < 2 * nsr; i += 2)
+    {
+      v[i] -= c[i] * wr - c[i + 1] * wi;
+      v[i + 1] -= c[i + 1] * wr + c[i] * wi;
+    }
+  }
+}
+
+// sum over the rows i in [from, nsr) of conj(c[i]) v[i], c and v interleaved complex.
+KERF_INLINE void conjugateDot(const double* __restrict c, const double* __restrict v, int from, int nsr, double& re, double& im)
+{
+  Lane p = {}, q = {};
+  int i = 2 * from;
+  const int end = 2 * nsr;
+  for (; i + Lanes <= end; i += Lanes)
+  {
+    const Lane a = load(c + i);
+    const Lane x = load(v + i);
+    p += a * x;            // (ar xr, ai xi): their sum is the real part
+    q += swapPairs(a) * x; // (ai xr, ar xi): ar xi - ai xr is the imaginary part
+  }
+  re = sum(p);
+  im = ((q[1] - q[0]) + (q[5] - q[4])) + ((q[3] - q[2]) + (q[7] - q[6]));
+  for (; i < end; i += 2)
+  {
+    re += c[i] * v[i] + c[i + 1] * v[i + 1];
+    im += c[i] * v[i + 1] - c[i + 1] * v[i];
+  }
+}
+
+// backwardBlock for a complex factor: L^H v = v, one column at a time from the last.
+KERF_VECTOR_CLONES
+void backwardBlockComplex(const double* __restrict L, int nsr, int nsc, double* __restrict v)
+{
+  const std::size_t ld = 2 * static_cast<std::size_t>(nsr);
+  for (int j = nsc - 1; j >= 0; --j)
+  {
+    const double* c = L + j * ld;
+    double re = 0.0, im = 0.0;
+    conjugateDot(c, v, j + 1, nsr, re, im);
+    const double d = c[2 * j];
+    v[2 * j] = (v[2 * j] - re) / d;
+    v[2 * j + 1] = (v[2 * j + 1] - im) / d;
+  }
+}
+
 // A supernode's rows: its own columns first, then the rows below its diagonal block.
 struct Block
 {
@@ -226,6 +340,61 @@ void SupernodalSolve::solve(const cholmod_factor& factor, const double* b, doubl
   for (std::size_t k = 0; k < n; ++k)
   {
     x[perm ? perm[k] : static_cast<int>(k)] = y[k] + 0.0;
+  }
+}
+
+bool SupernodalSolve::supportsComplex(const cholmod_factor& factor)
+{
+  return factor.is_super && factor.xtype == CHOLMOD_COMPLEX && factor.dtype == CHOLMOD_DOUBLE &&
+    factor.itype == CHOLMOD_INT;
+}
+
+void SupernodalSolve::solveComplex(
+  const cholmod_factor& factor, const std::complex<double>* b, std::complex<double>* x, std::vector<double>& workspace)
+{
+  const std::size_t n = factor.n;
+  const int* perm = static_cast<const int*>(factor.Perm);
+  const Supernodes s(factor);
+  workspace.resize(2 * static_cast<std::size_t>(s.largest()));
+  double* v = workspace.data();
+  std::vector<double> y(2 * n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    const std::complex<double>& value = b[perm ? perm[k] : static_cast<int>(k)];
+    y[2 * k] = value.real();
+    y[2 * k + 1] = value.imag();
+  }
+  auto gather = [&](int node) {
+    const Block block{ s.super[node], s.super[node + 1] - s.super[node], s.pi[node + 1] - s.pi[node], s.rows + s.pi[node] };
+    std::copy(y.begin() + 2 * block.first, y.begin() + 2 * (block.first + block.nsc), v);
+    for (int i = block.nsc; i < block.nsr; ++i)
+    {
+      v[2 * i] = y[2 * static_cast<std::size_t>(block.rows[i])];
+      v[2 * i + 1] = y[2 * static_cast<std::size_t>(block.rows[i]) + 1];
+    }
+    return block;
+  };
+  // The values of supernode s start at complex entry px[s].
+  for (int node = 0; node < s.count; ++node)
+  {
+    const Block block = gather(node);
+    forwardBlockComplex(s.values + 2 * static_cast<std::size_t>(s.px[node]), block.nsr, block.nsc, v);
+    std::copy(v, v + 2 * block.nsc, y.begin() + 2 * block.first);
+    for (int i = block.nsc; i < block.nsr; ++i)
+    {
+      y[2 * static_cast<std::size_t>(block.rows[i])] = v[2 * i];
+      y[2 * static_cast<std::size_t>(block.rows[i]) + 1] = v[2 * i + 1];
+    }
+  }
+  for (int node = s.count - 1; node >= 0; --node)
+  {
+    const Block block = gather(node);
+    backwardBlockComplex(s.values + 2 * static_cast<std::size_t>(s.px[node]), block.nsr, block.nsc, v);
+    std::copy(v, v + 2 * block.nsc, y.begin() + 2 * block.first);
+  }
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    x[perm ? perm[k] : static_cast<int>(k)] = std::complex<double>(y[2 * k] + 0.0, y[2 * k + 1] + 0.0);
   }
 }
 

@@ -4,12 +4,13 @@
 #ifdef KERF_HAVE_CHOLMOD
 #include <cholmod.h>
 
+#include <complex>
 #include <vector>
 
 namespace kerf
 {
 
-/// Solves with a real supernodal CHOLMOD factor L L^T = P A P^T, one right-hand side, the
+/// Solves with a real supernodal CHOLMOD factor L L^T = P A P^T (or a complex L L^H), one right-hand side, the
 /// dense kernels inline: each supernode's triangle and the block below it are swept column by
 /// column with vector instructions compiled for AVX-512, AVX2 with FMA and the x86-64 baseline
 /// (the processor picks one when the library loads). CHOLMOD's own solve calls the BLAS once or
@@ -30,6 +31,13 @@ public:
   static void backward(const cholmod_factor& factor, double* y, std::vector<double>& workspace);
   /// x = A^-1 b (b and x in A's row order; they may be the same array).
   static void solve(const cholmod_factor& factor, const double* b, double* x, std::vector<double>& workspace);
+
+  /// True if `factor` is one solveComplex takes: supernodal, complex (L L^H), double precision.
+  static bool supportsComplex(const cholmod_factor& factor);
+  /// x = A^-1 b for a Hermitian A factored by CHOLMOD into a complex supernodal L L^H (b and x in
+  /// A's row order; they may be the same array). The same kernels, four complex numbers per vector.
+  static void solveComplex(const cholmod_factor& factor, const std::complex<double>* b, std::complex<double>* x,
+    std::vector<double>& workspace);
 };
 
 } // namespace kerf

@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "Harmonic/SerialOpenMP.h"
 #include "Harmonic/SparseCholesky.h"
+#include "Harmonic/SupernodalSolve.h"
 #include "Mesh/MeshValidation.h"
 #include "Parameterization/CutToDisk.h"
 #include "Parameterization/LinearABF.h"
@@ -283,6 +284,13 @@ public:
     {
       throw Error("the conformal map's system is not positive definite");
     }
+    if (SupernodalSolve::supportsComplex(*factor))
+    {
+      // Kerf's one-column kernels (CHOLMOD's solve calls the BLAS per supernode).
+      Eigen::VectorXcd solution(rhs.size());
+      SupernodalSolve::solveComplex(*factor, rhs.data(), solution.data(), this->Work);
+      return solution;
+    }
     cholmod_dense b{};
     b.nrow = b.nzmax = b.d = static_cast<std::size_t>(rhs.size());
     b.ncol = 1;
@@ -303,6 +311,7 @@ private:
   cholmod_common Common;
   double* Values = nullptr; // a supernodal factor's values, interleaved real and imaginary parts
   std::size_t Capacity = 0; // doubles
+  std::vector<double> Work;  // SupernodalSolve's workspace
 };
 #else
 class HermitianSolves
