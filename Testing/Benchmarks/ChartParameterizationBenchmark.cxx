@@ -8,6 +8,8 @@
 //                                               (at 1M the complex forms only)
 //   BM_ChartParameterization/<size>/LinABF     the same with LinABF (its angle system, then the
 //                                               reconstruction with the default ComplexCHOLMOD)
+//   BM_ChartSplit/<size>                       its first step alone: splitAlongFaceLabels into the
+//                                               12 pieces (LabelFans::Separate)
 //   BM_ChartSeams/<size>                       one closed chart, a sphere with five fingers
 //                                               (kerf::makeProtrusions, 20,480 and 81,920
 //                                               triangles): cut into a disk (cutToDisk), then up
@@ -20,6 +22,7 @@
 #include "KerfBenchmarks.h"
 
 #include "Mesh/MeshGenerators.h"
+#include "Mesh/SplitAlongFaceLabels.h"
 #include "Parameterization/ChartParameterization.h"
 
 #include <benchmark/benchmark.h>
@@ -104,6 +107,29 @@ void chartParameterization(benchmark::State& state, int cells, kerf::ChartMethod
     });
 }
 
+// The first step of parameterizeCharts alone: the mesh cut open along the charts' borders.
+void chartSplit(benchmark::State& state, int cells)
+{
+  kerf::SplitMesh split;
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ChartScene& { return chartScene(cells); },
+    [&](benchmark::State& s, const ChartScene& scene) {
+      for (auto _ : s)
+      {
+        split = kerf::splitAlongFaceLabels(scene.mesh, scene.labels, kerf::LabelFans::Separate);
+        benchmark::DoNotOptimize(split.mesh.triangles().data());
+      }
+      if (split.mesh.componentCount() != 12)
+      {
+        kerf::benchmarks::Fail(s, "expected 12 pieces, got " + std::to_string(split.mesh.componentCount()));
+      }
+    },
+    [&](benchmark::State& s, const ChartScene& scene) {
+      s.counters["triangles"] = scene.mesh.faceCount();
+      s.counters["vertices"] = split.mesh.vertexCount();
+    });
+}
+
 const kerf::TriangleMesh& fingers(int levels)
 {
   static std::map<int, kerf::TriangleMesh> meshes;
@@ -181,6 +207,17 @@ void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
       {
         registered->MinTime(1.0);
       }
+    }
+  }
+  for (const auto& [label, cells] : sizes)
+  {
+    const std::string name = std::string("BM_ChartSplit/") + label;
+    benchmark::internal::Benchmark* registered =
+      benchmark::RegisterBenchmark(name.c_str(), [cells = cells](benchmark::State& state) { chartSplit(state, cells); });
+    registered->Unit(benchmark::kMillisecond)->UseRealTime();
+    if (useSizeMinimumTimes)
+    {
+      registered->MinTime(1.0);
     }
   }
   for (const auto& [label, levels] : { std::pair<const char*, int>{ "20k", 5 }, std::pair<const char*, int>{ "82k", 6 } })
