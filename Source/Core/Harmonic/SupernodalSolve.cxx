@@ -266,17 +266,28 @@ struct Supernodes
     , count(static_cast<int>(factor.nsuper))
   {
   }
-  /// Copies the values of supernode `node`'s rows from y into v, in its row order.
+  /// Copies the values of supernode `node`'s rows from y into v, in its row order; Width doubles
+  /// per value (1 real, 2 complex).
+  template <int Width = 1>
   Block gather(int node, const double* y, double* v) const
   {
     const Block b{ this->super[node], this->super[node + 1] - this->super[node], this->pi[node + 1] - this->pi[node],
       this->rows + this->pi[node] };
-    std::copy(y + b.first, y + b.first + b.nsc, v);
+    std::copy(y + Width * b.first, y + Width * (b.first + b.nsc), v);
     for (int i = b.nsc; i < b.nsr; ++i)
     {
-      v[i] = y[b.rows[i]];
+      std::copy(y + Width * b.rows[i], y + Width * (b.rows[i] + 1), v + Width * i);
     }
     return b;
+  }
+  /// Writes v back to the rows below supernode b's columns (the forward sweep's updates).
+  template <int Width = 1>
+  static void scatterBelow(const Block& b, const double* v, double* y)
+  {
+    for (int i = b.nsc; i < b.nsr; ++i)
+    {
+      std::copy(v + Width * i, v + Width * (i + 1), y + Width * b.rows[i]);
+    }
   }
   int largest() const
   {
@@ -306,10 +317,7 @@ void SupernodalSolve::forward(const cholmod_factor& factor, double* y, std::vect
     const Block b = s.gather(node, y, v);
     forwardBlock(s.values + s.px[node], b.nsr, b.nsc, v);
     std::copy(v, v + b.nsc, y + b.first);
-    for (int i = b.nsc; i < b.nsr; ++i)
-    {
-      y[b.rows[i]] = v[i];
-    }
+    Supernodes::scatterBelow(b, v, y);
   }
 }
 
@@ -364,31 +372,17 @@ void SupernodalSolve::solveComplex(
     y[2 * k] = value.real();
     y[2 * k + 1] = value.imag();
   }
-  auto gather = [&](int node) {
-    const Block block{ s.super[node], s.super[node + 1] - s.super[node], s.pi[node + 1] - s.pi[node], s.rows + s.pi[node] };
-    std::copy(y.begin() + 2 * block.first, y.begin() + 2 * (block.first + block.nsc), v);
-    for (int i = block.nsc; i < block.nsr; ++i)
-    {
-      v[2 * i] = y[2 * static_cast<std::size_t>(block.rows[i])];
-      v[2 * i + 1] = y[2 * static_cast<std::size_t>(block.rows[i]) + 1];
-    }
-    return block;
-  };
   // The values of supernode s start at complex entry px[s].
   for (int node = 0; node < s.count; ++node)
   {
-    const Block block = gather(node);
+    const Block block = s.gather<2>(node, y.data(), v);
     forwardBlockComplex(s.values + 2 * static_cast<std::size_t>(s.px[node]), block.nsr, block.nsc, v);
     std::copy(v, v + 2 * block.nsc, y.begin() + 2 * block.first);
-    for (int i = block.nsc; i < block.nsr; ++i)
-    {
-      y[2 * static_cast<std::size_t>(block.rows[i])] = v[2 * i];
-      y[2 * static_cast<std::size_t>(block.rows[i]) + 1] = v[2 * i + 1];
-    }
+    Supernodes::scatterBelow<2>(block, v, y.data());
   }
   for (int node = s.count - 1; node >= 0; --node)
   {
-    const Block block = gather(node);
+    const Block block = s.gather<2>(node, y.data(), v);
     backwardBlockComplex(s.values + 2 * static_cast<std::size_t>(s.px[node]), block.nsr, block.nsc, v);
     std::copy(v, v + 2 * block.nsc, y.begin() + 2 * block.first);
   }
