@@ -37,6 +37,11 @@
 //                                            kerf, Kerf's supernodal kernels) or solveColumns()
 //                                            with one column (route cholmod, CHOLMOD's solve
 //                                            with the BLAS)
+//   BM_SupernodalFactorization/<size>/<matrix>/<route>
+//                                            the numeric factorization by CHOLMOD (route cholmod,
+//                                            with its BLAS) or by Kerf's driver with Eigen's
+//                                            kernels for the processor (route kerf), with the
+//                                            solver's ordering for the size, computed once
 //   BM_LocatorBuild/<size>                   kerf::ClosestPointLocator on the surface, then the
 //                                            closest points of the stroke's 9 points
 // The scene of a size (mesh, weights, strokes, factors) is built once, outside the timed loops.
@@ -49,6 +54,7 @@
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
+#include "Harmonic/NestedDissection.h"
 #include "Harmonic/SparseCholesky.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Mesh/MeshValidation.h"
@@ -411,6 +417,53 @@ void factorization(benchmark::State& state, SolverScene& scene, Matrix matrix, C
   state.counters["factorNonZeros"] = static_cast<double>(kept->factorNonZeros());
 }
 
+// The factorization with the solver's ordering for the size (geometric nested dissection from
+// GeometricOrderingRows rows, else AMD), computed once outside the loop, by one numeric route.
+void supernodalFactorization(benchmark::State& state, SolverScene& scene, Matrix matrix, kerf::SupernodalRoute route)
+{
+  const Eigen::SparseMatrix<double>& a = matrixOf(scene, matrix);
+  std::vector<int> permutation;
+  if (a.rows() >= kerf::GeometricOrderingRows)
+  {
+    // The free rows are the vertices but the first (solverMatrices).
+    const std::vector<kerf::Vector3>& points = scene.surface.mesh.points();
+    permutation = kerf::geometricNestedDissection(std::vector<kerf::Vector3>(points.begin() + 1, points.end()), a);
+  }
+  else
+  {
+    Cholesky amd;
+    if (!amd.factor(a, Cholesky::Ordering::AMD))
+    {
+      Fail(state, "the matrix could not be factored");
+      return;
+    }
+    permutation = amd.permutation();
+  }
+  bool factored = true;
+  Eigen::VectorXd x;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(a.rows(), -1.0, 1.0);
+  std::size_t nonZeros = 0;
+  for (auto _ : state)
+  {
+    Cholesky factor;
+    factor.setSupernodalRoute(route);
+    factored = factored && factor.factor(a, permutation);
+    state.PauseTiming();
+    x = factor.solve(b);
+    nonZeros = factor.factorNonZeros();
+    state.ResumeTiming();
+  }
+  const Eigen::SparseMatrix<double> full = a.selfadjointView<Eigen::Lower>();
+  const double residual = (full * x - b).norm() / b.norm();
+  if (!factored || !(residual < 1e-6))
+  {
+    Fail(state, "the factorization failed or its solve is off by " + std::to_string(residual));
+  }
+  state.counters["factorNonZeros"] = static_cast<double>(nonZeros);
+  state.counters["residual"] = residual;
+  state.counters["route"] = static_cast<double>(route == kerf::SupernodalRoute::Automatic ? kerf::automaticSupernodalRoute() : route);
+}
+
 // Relative error of apply(prepare(U), s) against U's columns solved one by one with solve().
 double checkAgainstSolve(const Cholesky& factor, const Eigen::SparseMatrix<double>& u, const Cholesky::LowRank& lowRank)
 {
@@ -602,6 +655,20 @@ void RegisterHarmonicSolverBenchmarks()
           add(std::string("BM_LowRank") + name + label + "/" + matrixName(matrix) + "/" + std::to_string(k), size,
             [matrix, k, r](benchmark::State& state, SolverScene& scene) { lowRankRoute(state, scene, matrix, k, r); });
         }
+      }
+      // The squared matrix is factored below 200k triangles only (least squares); at 1M its
+      // solve is too ill-conditioned for the residual check.
+      for (kerf::SupernodalRoute route : { kerf::SupernodalRoute::CHOLMOD, kerf::SupernodalRoute::Automatic })
+      {
+        if (matrix == Matrix::Squared && std::string(size.label) == "1M")
+        {
+          continue;
+        }
+        add(std::string("BM_SupernodalFactorization") + label + "/" + matrixName(matrix) +
+            (route == kerf::SupernodalRoute::CHOLMOD ? "/cholmod" : "/kerf"),
+          size, [matrix, route](benchmark::State& state, SolverScene& scene) {
+            supernodalFactorization(state, scene, matrix, route);
+          });
       }
       add(std::string("BM_Apply") + label + "/" + matrixName(matrix), size,
         [matrix](benchmark::State& state, SolverScene& scene) { applyLowRank(state, scene, matrix); });

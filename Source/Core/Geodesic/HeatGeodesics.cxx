@@ -12,6 +12,7 @@
 #include <Eigen/SparseCore>
 
 #ifdef KERF_HAVE_CHOLMOD
+#include "Harmonic/SupernodalFactorization.h"
 #include "Harmonic/SupernodalSolve.h"
 
 #include <cholmod.h>
@@ -103,7 +104,7 @@ public:
     bool factored = false;
     {
       const SerialOpenMP serial;
-      factored = cholmod_factorize(&view, factor, &this->Common) != 0;
+      factored = factorizeSupernodal(&view, factor, &this->Common);
     }
     if (!factored || this->Common.status != CHOLMOD_OK || factor->minor < factor->n)
     {

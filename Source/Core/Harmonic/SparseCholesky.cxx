@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Harmonic/SerialOpenMP.h"
+#include "Harmonic/SupernodalFactorization.h"
 #include "Harmonic/SupernodalSolve.h"
 #include "Harmonic/VectorKernels.h"
 
@@ -254,6 +255,7 @@ struct SparseCholesky::Implementation
 {
   cholmod_common common;
   cholmod_factor* factor = nullptr; // supernodal L L^T after factor()
+  SupernodalRoute route = SupernodalRoute::Automatic;
   std::vector<int> inversePermutation; // original row -> permuted row
   std::vector<int> supernodeOf;        // permuted row -> its supernode
   std::vector<int> superParent;        // supernodal elimination tree
@@ -388,6 +390,11 @@ std::size_t SparseCholesky::factorNonZeros() const
   return m.factor ? static_cast<std::size_t>(m.factor->xsize) : 0;
 }
 
+void SparseCholesky::setSupernodalRoute(SupernodalRoute route)
+{
+  this->Impl->route = route;
+}
+
 bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering ordering)
 {
   return this->factorOrdered(A, ordering, nullptr);
@@ -447,7 +454,7 @@ bool SparseCholesky::factorOrdered(const Eigen::SparseMatrix<double>& A, Orderin
   bool factored = false;
   {
     const SerialOpenMP serial;
-    factored = cholmod_factorize(&s, m.factor, &m.common) != 0;
+    factored = factorizeSupernodal(&s, m.factor, &m.common, m.route);
   }
   if (!factored || m.common.status != CHOLMOD_OK ||
     m.factor->minor < m.factor->n || !m.factor->is_super)
@@ -1006,6 +1013,10 @@ SparseCholesky::~SparseCholesky() = default;
 std::string SparseCholesky::backend()
 {
   return "Eigen SimplicialLDLT";
+}
+
+void SparseCholesky::setSupernodalRoute(SupernodalRoute)
+{
 }
 
 std::size_t SparseCholesky::factorNonZeros() const

@@ -1,6 +1,8 @@
 // Sparse Cholesky factorization (CHOLMOD, or Eigen's SimplicialLDLT without it) and low-rank corrections.
 #pragma once
 
+#include "Harmonic/SupernodalFactorization.h"
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 
@@ -59,6 +61,11 @@ public:
 
   /// Nonzeros of the factor L (0 before the first factorization).
   std::size_t factorNonZeros() const;
+
+  /// Who computes the supernodal factor's values in the next factorizations (Automatic by
+  /// default: Kerf's kernels for the processor, see Harmonic/SupernodalFactorization.h). A route
+  /// this processor cannot run falls back to CHOLMOD's. Without CHOLMOD it changes nothing.
+  void setSupernodalRoute(SupernodalRoute route);
 
   /// A^-1 b.
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;

@@ -1,0 +1,130 @@
+// Dispatch of the numeric supernodal factorization: Kerf's driver with Eigen's kernels for the
+// processor's instruction-set level (Harmonic/SupernodalNumeric.cxx), or CHOLMOD's.
+#include "Harmonic/SupernodalFactorization.h"
+
+#include "Harmonic/SupernodalNumeric.h"
+
+#include <limits>
+#include <new>
+
+namespace kerf
+{
+
+namespace
+{
+
+using Entry = int (*)(const SupernodalProblem*);
+
+bool processorHas(SupernodalRoute route)
+{
+#if defined(KERF_HAVE_CHOLMOD) && defined(KERF_HAVE_SUPERNODAL_KERNELS) && (defined(__x86_64__) || defined(_M_X64))
+  __builtin_cpu_init();
+  const bool avx2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma") && __builtin_cpu_supports("bmi2");
+  switch (route)
+  {
+    case SupernodalRoute::AVX2:
+      return avx2;
+    case SupernodalRoute::AVX512:
+      return avx2 && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+        __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512cd");
+    default:
+      return false;
+  }
+#else
+  (void)route;
+  return false;
+#endif
+}
+
+Entry entryOf(SupernodalRoute route)
+{
+#if defined(KERF_HAVE_CHOLMOD) && defined(KERF_HAVE_SUPERNODAL_KERNELS)
+  switch (route)
+  {
+    case SupernodalRoute::AVX2:
+      return &kerf_supernodal_numeric_x86_64_v3;
+    case SupernodalRoute::AVX512:
+      return &kerf_supernodal_numeric_x86_64_v4;
+    default:
+      return nullptr;
+  }
+#else
+  (void)route;
+  return nullptr;
+#endif
+}
+
+} // namespace
+
+bool supernodalRouteAvailable(SupernodalRoute route)
+{
+  return route == SupernodalRoute::Automatic || route == SupernodalRoute::CHOLMOD || processorHas(route);
+}
+
+SupernodalRoute automaticSupernodalRoute()
+{
+  static const SupernodalRoute route = processorHas(SupernodalRoute::AVX512) ? SupernodalRoute::AVX512
+    : processorHas(SupernodalRoute::AVX2)                                    ? SupernodalRoute::AVX2
+                                                                             : SupernodalRoute::CHOLMOD;
+  return route;
+}
+
+#ifdef KERF_HAVE_CHOLMOD
+bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common, SupernodalRoute route)
+{
+  if (route == SupernodalRoute::Automatic)
+  {
+    route = automaticSupernodalRoute();
+  }
+  const Entry entry = supernodalRouteAvailable(route) ? entryOf(route) : nullptr;
+  const bool kerfRoute = entry && A && L && common && L->is_super && A->stype < 0 && A->xtype == CHOLMOD_REAL &&
+    A->dtype == CHOLMOD_DOUBLE && A->itype == CHOLMOD_INT && L->itype == CHOLMOD_INT && A->packed &&
+    A->nrow == L->n && A->ncol == L->n && L->n <= static_cast<std::size_t>(std::numeric_limits<int>::max()) &&
+    (L->xtype == CHOLMOD_PATTERN || (L->xtype == CHOLMOD_REAL && L->is_ll));
+  if (!kerfRoute)
+  {
+    return cholmod_factorize(A, L, common) != 0;
+  }
+  if (L->xtype == CHOLMOD_PATTERN)
+  {
+    // A symbolic supernodal factor gets its values' memory, as cholmod_factorize gives it.
+    L->is_ll = 1;
+    if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, common))
+    {
+      return false;
+    }
+  }
+  SupernodalProblem problem;
+  problem.n = static_cast<int>(L->n);
+  problem.supernodes = static_cast<int>(L->nsuper);
+  problem.super = static_cast<const int*>(L->super);
+  problem.pi = static_cast<const int*>(L->pi);
+  problem.px = static_cast<const int*>(L->px);
+  problem.s = static_cast<const int*>(L->s);
+  problem.perm = static_cast<const int*>(L->Perm);
+  problem.ap = static_cast<const int*>(A->p);
+  problem.ai = static_cast<const int*>(A->i);
+  problem.ax = static_cast<const double*>(A->x);
+  problem.values = static_cast<double*>(L->x);
+  int failed = -1;
+  try
+  {
+    failed = entry(&problem);
+  }
+  catch (const std::bad_alloc&)
+  {
+    common->status = CHOLMOD_OUT_OF_MEMORY;
+    return false;
+  }
+  common->status = CHOLMOD_OK;
+  L->minor = L->n;
+  if (failed >= 0)
+  {
+    L->minor = static_cast<std::size_t>(failed);
+    common->status = CHOLMOD_NOT_POSDEF;
+  }
+  return true;
+}
+#endif
+
+} // namespace kerf

@@ -1,0 +1,42 @@
+// The numeric supernodal Cholesky factorization of a CHOLMOD symbolic factor with Kerf's
+// driver and Eigen's dense kernels for the processor, CHOLMOD's own factorization otherwise.
+#pragma once
+
+#ifdef KERF_HAVE_CHOLMOD
+#include <cholmod.h>
+#endif
+
+namespace kerf
+{
+
+/// Who computes a supernodal factor's values.
+enum class SupernodalRoute
+{
+  Automatic, ///< Kerf's kernels where the processor has AVX2 and FMA (the widest level it has), else CHOLMOD
+  CHOLMOD,   ///< cholmod_factorize, with the BLAS CHOLMOD was linked with
+  AVX2,      ///< Kerf's driver, Eigen's kernels for x86-64-v3 (AVX2, FMA)
+  AVX512     ///< Kerf's driver, Eigen's kernels for x86-64-v4 (AVX-512)
+};
+
+/// True if `route` can run here (CHOLMOD always; Kerf's levels when built for this processor
+/// family and the processor has the instructions).
+bool supernodalRouteAvailable(SupernodalRoute route);
+
+/// The route Automatic takes on this processor.
+SupernodalRoute automaticSupernodalRoute();
+
+#ifdef KERF_HAVE_CHOLMOD
+/// Drop-in for cholmod_factorize(A, L, common): factors the real symmetric A (stype -1, lower
+/// triangle read) into L, whose symbolic analysis (cholmod_analyze or cholmod_analyze_p) it must
+/// be. Kerf's route runs when L is supernodal, A real, packed and sorted or not, and the route is
+/// available: it fills L's values as cholmod_factorize would (L L^T, values to rounding; a
+/// supernode's diagonal block keeps zeros above its diagonal) and sets L->minor to n, or to the
+/// first column of the supernode that is not positive definite (then it returns true and
+/// common->status is CHOLMOD_NOT_POSDEF, as with CHOLMOD). Otherwise, and for the CHOLMOD route,
+/// it calls cholmod_factorize. Returns false when the factorization could not run (out of memory,
+/// invalid input). Deterministic: one route on one machine gives the same bits every time.
+bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common,
+  SupernodalRoute route = SupernodalRoute::Automatic);
+#endif
+
+} // namespace kerf
