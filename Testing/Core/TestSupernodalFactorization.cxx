@@ -10,7 +10,17 @@
 
 #include <Eigen/Dense>
 
+#ifdef KERF_HAVE_CHOLMOD
+#include <cholmod.h>
+#endif
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdint>
 #include <cstring>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 using namespace kerf;
@@ -48,7 +58,187 @@ std::vector<SupernodalRoute> kerfRoutes()
   return routes;
 }
 
+#ifdef KERF_HAVE_CHOLMOD
+using Complex = std::complex<double>;
+
+// A CHOLMOD view of the lower triangle `lower` (real or complex).
+template <typename Scalar>
+cholmod_sparse lowerView(const Eigen::SparseMatrix<Scalar>& lower)
+{
+  cholmod_sparse a{};
+  a.nrow = a.ncol = static_cast<std::size_t>(lower.rows());
+  a.nzmax = static_cast<std::size_t>(lower.nonZeros());
+  a.p = const_cast<int*>(lower.outerIndexPtr());
+  a.i = const_cast<int*>(lower.innerIndexPtr());
+  a.x = const_cast<Scalar*>(lower.valuePtr());
+  a.stype = -1;
+  a.itype = CHOLMOD_INT;
+  a.xtype = std::is_same<Scalar, double>::value ? CHOLMOD_REAL : CHOLMOD_COMPLEX;
+  a.dtype = CHOLMOD_DOUBLE;
+  a.sorted = 1;
+  a.packed = 1;
+  return a;
+}
+
+// The values of the supernodal factor of the lower triangle `lower` (AMD), computed by `route`
+// through factorizeSupernodal, and the solution of A x = b with it (CHOLMOD's solve).
+template <typename Scalar>
+std::pair<std::vector<Scalar>, std::vector<Scalar>> factorAndSolve(
+  const Eigen::SparseMatrix<Scalar>& lower, SupernodalRoute route, const std::vector<Scalar>& b)
+{
+  cholmod_common common;
+  cholmod_start(&common);
+  common.supernodal = CHOLMOD_SUPERNODAL;
+  common.print = 0;
+  cholmod_sparse a = lowerView(lower);
+  cholmod_factor* factor = cholmod_analyze(&a, &common);
+  std::pair<std::vector<Scalar>, std::vector<Scalar>> result;
+  if (factor && factorizeSupernodal(&a, factor, &common, route) && factor->minor == factor->n && factor->is_super)
+  {
+    const Scalar* values = static_cast<const Scalar*>(factor->x);
+    result.first.assign(values, values + factor->xsize);
+    cholmod_dense rhs{};
+    rhs.nrow = rhs.nzmax = rhs.d = b.size();
+    rhs.ncol = 1;
+    rhs.x = const_cast<Scalar*>(b.data());
+    rhs.xtype = a.xtype;
+    rhs.dtype = CHOLMOD_DOUBLE;
+    cholmod_dense* x = cholmod_solve(CHOLMOD_A, factor, &rhs, &common);
+    if (x)
+    {
+      result.second.assign(static_cast<const Scalar*>(x->x), static_cast<const Scalar*>(x->x) + b.size());
+      cholmod_free_dense(&x, &common);
+    }
+  }
+  cholmod_free_factor(&factor, &common);
+  cholmod_finish(&common);
+  return result;
+}
+
+// The values of the supernodal factor of `lower` computed by `route` into memory lent to the
+// factor `offset` bytes past a 64-byte boundary (as the charts lend their kept buffer).
+template <typename Scalar>
+std::vector<Scalar> factorValuesAt(const Eigen::SparseMatrix<Scalar>& lower, SupernodalRoute route, std::size_t offset)
+{
+  cholmod_common common;
+  cholmod_start(&common);
+  common.supernodal = CHOLMOD_SUPERNODAL;
+  common.print = 0;
+  cholmod_sparse a = lowerView(lower);
+  cholmod_factor* factor = cholmod_analyze(&a, &common);
+  std::vector<Scalar> values;
+  if (factor && factor->is_super)
+  {
+    std::vector<unsigned char> memory(factor->xsize * sizeof(Scalar) + 128);
+    unsigned char* start = memory.data() + (64 - reinterpret_cast<std::uintptr_t>(memory.data()) % 64) % 64 + offset;
+    std::memset(start, 0xff, factor->xsize * sizeof(Scalar)); // stale values: NaN
+    factor->x = start;
+    factor->xtype = a.xtype;
+    if (factorizeSupernodal(&a, factor, &common, route) && factor->minor == factor->n)
+    {
+      values.resize(factor->xsize);
+      std::memcpy(values.data(), start, factor->xsize * sizeof(Scalar));
+    }
+    factor->x = nullptr;
+    factor->xtype = CHOLMOD_PATTERN;
+  }
+  cholmod_free_factor(&factor, &common);
+  cholmod_finish(&common);
+  return values;
+}
+
+template <typename Scalar>
+double largestDifference(const std::vector<Scalar>& a, const std::vector<Scalar>& b)
+{
+  double largest = a.size() == b.size() ? 0.0 : 1e300;
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+  {
+    largest = std::max(largest, std::abs(a[i] - b[i]));
+  }
+  return largest;
+}
+
+template <typename Scalar>
+double largestMagnitude(const std::vector<Scalar>& a)
+{
+  double largest = 0.0;
+  for (const Scalar& v : a)
+  {
+    largest = std::max(largest, std::abs(v));
+  }
+  return largest;
+}
+#endif
+
 } // namespace
+
+#ifdef KERF_HAVE_CHOLMOD
+TEST(SupernodalFactorization, HermitianFactorsMatchCHOLMODEntryByEntry)
+{
+  const std::vector<SupernodalRoute> routes = kerfRoutes();
+  if (routes.empty())
+  {
+    GTEST_SKIP() << "this processor runs no Kerf kernel level (CHOLMOD factors)";
+  }
+  // H = L + shift I + i S on an icosphere, S_ij = -S_ji = 0.2 w_ij: Hermitian, and positive
+  // definite by diagonal dominance (|L_ij + i S_ij| = 1.02 w_ij, shift 0.1 times the largest
+  // diagonal entry).
+  const TriangleMesh sphere = makeIcosphere(1.0, 4);
+  const std::vector<double> w = computeLaplacianWeights(sphere, LaplacianWeightOptions());
+  const Eigen::SparseMatrix<double> L = assembleLaplacian(sphere, w);
+  const double shift = 0.1 * L.diagonal().maxCoeff();
+  std::vector<Eigen::Triplet<Complex>> entries;
+  for (int e = 0; e < sphere.edgeCount(); ++e)
+  {
+    const int i = std::max(sphere.edgeVertices(e)[0], sphere.edgeVertices(e)[1]);
+    const int j = std::min(sphere.edgeVertices(e)[0], sphere.edgeVertices(e)[1]);
+    entries.emplace_back(i, j, Complex(-w[e], 0.2 * w[e]));
+  }
+  for (int v = 0; v < sphere.vertexCount(); ++v)
+  {
+    entries.emplace_back(v, v, Complex(L.coeff(v, v) + shift, 0.0));
+  }
+  Eigen::SparseMatrix<Complex> H(sphere.vertexCount(), sphere.vertexCount());
+  H.setFromTriplets(entries.begin(), entries.end());
+  H.makeCompressed();
+  std::vector<Complex> b(static_cast<std::size_t>(H.rows()));
+  for (std::size_t k = 0; k < b.size(); ++k)
+  {
+    b[k] = Complex(std::cos(0.01 * k), std::sin(0.02 * k));
+  }
+  // The real system too, entry by entry.
+  const Eigen::SparseMatrix<double> R = shiftedLaplacian(sphere, shift);
+  std::vector<double> c(static_cast<std::size_t>(R.rows()));
+  for (std::size_t k = 0; k < c.size(); ++k)
+  {
+    c[k] = std::cos(0.01 * k);
+  }
+  const auto referenceH = factorAndSolve(H, SupernodalRoute::CHOLMOD, b);
+  const auto referenceR = factorAndSolve(R, SupernodalRoute::CHOLMOD, c);
+  ASSERT_FALSE(referenceH.first.empty());
+  ASSERT_FALSE(referenceR.first.empty());
+  for (SupernodalRoute route : routes)
+  {
+    const auto h = factorAndSolve(H, route, b);
+    EXPECT_LE(largestDifference(h.first, referenceH.first), 1e-12 * largestMagnitude(referenceH.first));
+    EXPECT_LE(largestDifference(h.second, referenceH.second), 1e-11 * largestMagnitude(referenceH.second));
+    const auto r = factorAndSolve(R, route, c);
+    EXPECT_LE(largestDifference(r.first, referenceR.first), 1e-12 * largestMagnitude(referenceR.first));
+    EXPECT_LE(largestDifference(r.second, referenceR.second), 1e-11 * largestMagnitude(referenceR.second));
+    // Deterministic: the same bits again, and wherever the values' memory starts (the charts
+    // lend theirs), over stale values.
+    EXPECT_EQ(factorAndSolve(H, route, b).first, h.first);
+    const std::vector<Complex> lent = factorValuesAt(H, route, 0);
+    ASSERT_EQ(lent.size(), h.first.size());
+    EXPECT_LE(largestDifference(lent, referenceH.first), 1e-12 * largestMagnitude(referenceH.first));
+    for (std::size_t offset : { 16, 32, 48 })
+    {
+      EXPECT_TRUE(factorValuesAt(H, route, offset) == lent) << "offset " << offset;
+      EXPECT_TRUE(factorValuesAt(R, route, offset / 2) == factorValuesAt(R, route, 0)) << "offset " << offset / 2;
+    }
+  }
+}
+#endif
 
 TEST(SupernodalFactorization, KerfRoutesMatchCHOLMOD)
 {

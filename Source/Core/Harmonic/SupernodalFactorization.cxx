@@ -77,24 +77,30 @@ bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* c
     route = automaticSupernodalRoute();
   }
   const Entry entry = supernodalRouteAvailable(route) ? entryOf(route) : nullptr;
-  const bool kerfRoute = entry && A && L && common && L->is_super && A->stype < 0 && A->xtype == CHOLMOD_REAL &&
-    A->dtype == CHOLMOD_DOUBLE && A->itype == CHOLMOD_INT && L->itype == CHOLMOD_INT && A->packed &&
-    A->nrow == L->n && A->ncol == L->n && L->n <= static_cast<std::size_t>(std::numeric_limits<int>::max()) &&
-    (L->xtype == CHOLMOD_PATTERN || (L->xtype == CHOLMOD_REAL && L->is_ll));
+  // A real symmetric or complex Hermitian A (lower triangle) into a supernodal factor of the
+  // same kind, symbolic or with its values' memory (a supernodal factor is always L L^H).
+  const bool complex = A && A->xtype == CHOLMOD_COMPLEX;
+  const int xtype = complex ? CHOLMOD_COMPLEX : CHOLMOD_REAL;
+  const bool kerfRoute = entry && A && L && common && L->is_super && A->stype < 0 &&
+    (A->xtype == CHOLMOD_REAL || complex) && A->dtype == CHOLMOD_DOUBLE && A->itype == CHOLMOD_INT &&
+    L->itype == CHOLMOD_INT && A->packed && A->nrow == L->n && A->ncol == L->n &&
+    L->n <= static_cast<std::size_t>(std::numeric_limits<int>::max()) &&
+    (L->xtype == CHOLMOD_PATTERN || (L->xtype == xtype && L->x != nullptr));
   if (!kerfRoute)
   {
     return cholmod_factorize(A, L, common) != 0;
   }
+  L->is_ll = 1;
   if (L->xtype == CHOLMOD_PATTERN)
   {
     // A symbolic supernodal factor gets its values' memory, as cholmod_factorize gives it.
-    L->is_ll = 1;
-    if (!cholmod_change_factor(CHOLMOD_REAL, 1, 1, 1, 1, L, common))
+    if (!cholmod_change_factor(xtype, 1, 1, 1, 1, L, common))
     {
       return false;
     }
   }
   SupernodalProblem problem;
+  problem.complex = complex;
   problem.n = static_cast<int>(L->n);
   problem.supernodes = static_cast<int>(L->nsuper);
   problem.super = static_cast<const int*>(L->super);
@@ -104,7 +110,7 @@ bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* c
   problem.perm = static_cast<const int*>(L->Perm);
   problem.ap = static_cast<const int*>(A->p);
   problem.ai = static_cast<const int*>(A->i);
-  problem.ax = static_cast<const double*>(A->x);
+  problem.ax = static_cast<const double*>(A->x); // interleaved pairs when complex
   problem.values = static_cast<double*>(L->x);
   int failed = -1;
   try

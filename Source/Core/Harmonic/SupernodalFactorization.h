@@ -26,10 +26,11 @@ bool supernodalRouteAvailable(SupernodalRoute route);
 SupernodalRoute automaticSupernodalRoute();
 
 #ifdef KERF_HAVE_CHOLMOD
-/// Drop-in for cholmod_factorize(A, L, common): factors the real symmetric A (stype -1, lower
-/// triangle read) into L, whose symbolic analysis (cholmod_analyze or cholmod_analyze_p) it must
-/// be. Kerf's route runs when L is supernodal, A real, packed and sorted or not, and the route is
-/// available: it fills L's values as cholmod_factorize would (L L^T, values to rounding; a
+/// Drop-in for cholmod_factorize(A, L, common): factors the real symmetric or complex Hermitian A
+/// (stype -1, lower triangle read; CHOLMOD_REAL or CHOLMOD_COMPLEX) into L, whose symbolic
+/// analysis (cholmod_analyze or cholmod_analyze_p) it must be. Kerf's route runs when L is
+/// supernodal (symbolic, or with values of A's kind already allocated, which it overwrites), A
+/// packed, and the route available: it fills L's values as cholmod_factorize would (L L^H, values to rounding; a
 /// supernode's diagonal block keeps zeros above its diagonal) and sets L->minor to n, or to the
 /// first column of the supernode that is not positive definite (then it returns true and
 /// common->status is CHOLMOD_NOT_POSDEF, as with CHOLMOD). Otherwise, and for the CHOLMOD route,

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <complex>
 #include <cstddef>
 #include <vector>
 
@@ -19,14 +20,16 @@
 namespace
 {
 
-using Block = Eigen::Map<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-using BlockRef = Eigen::Ref<Eigen::MatrixXd, 0, Eigen::OuterStride<>>;
-
-int factorize(const kerf::SupernodalProblem& p)
+// L L^H = P A P^T for Scalar double (L L^T) or std::complex<double>.
+template <typename Scalar>
+int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values)
 {
+  using Matrix = Eigen::Matrix<Scalar, Eigen::Dynamic, Eigen::Dynamic>;
+  using Block = Eigen::Map<Matrix, 0, Eigen::OuterStride<>>;
+  using BlockRef = Eigen::Ref<Matrix, 0, Eigen::OuterStride<>>;
   const int n = p.n;
   const int supernodes = p.supernodes;
-  std::fill(p.values, p.values + p.px[supernodes], 0.0);
+  std::fill(values, values + p.px[supernodes], Scalar(0));
 
   // C = P A P^T, lower triangle, in compressed columns.
   std::vector<int> inverse(static_cast<std::size_t>(n));
@@ -50,7 +53,7 @@ int factorize(const kerf::SupernodalProblem& p)
     cp[j + 1] += cp[j];
   }
   std::vector<int> ci(static_cast<std::size_t>(cp[n]));
-  std::vector<double> cx(static_cast<std::size_t>(cp[n]));
+  std::vector<Scalar> cx(static_cast<std::size_t>(cp[n]));
   {
     std::vector<int> next(cp.begin(), cp.end() - 1);
     for (int j = 0; j < n; ++j)
@@ -59,10 +62,11 @@ int factorize(const kerf::SupernodalProblem& p)
       {
         if (p.ai[q] >= j)
         {
+          // A(i, j) lands at (a, b); above the diagonal its lower twin is conj(A(i, j)).
           const int a = inverse[p.ai[q]], b = inverse[j];
           const int at = next[std::min(a, b)]++;
           ci[at] = std::max(a, b);
-          cx[at] = p.ax[q];
+          cx[at] = a >= b ? ax[q] : Eigen::numext::conj(ax[q]);
         }
       }
     }
@@ -78,25 +82,26 @@ int factorize(const kerf::SupernodalProblem& p)
   std::vector<int> map(static_cast<std::size_t>(n), 0);
   std::vector<int> head(static_cast<std::size_t>(supernodes), -1), next(static_cast<std::size_t>(supernodes), -1);
   std::vector<int> position(static_cast<std::size_t>(supernodes), 0);
-  std::vector<double> update;
+  std::vector<Scalar> update;
+  std::vector<Scalar, Eigen::aligned_allocator<Scalar>> aligned;
   for (int s = 0; s < supernodes; ++s)
   {
     const int k1 = p.super[s], k2 = p.super[s + 1], columns = k2 - k1;
     const int firstRow = p.pi[s], rows = p.pi[s + 1] - firstRow;
-    double* target = p.values + p.px[s];
+    Scalar* target = values + p.px[s];
     for (int k = 0; k < rows; ++k)
     {
       map[p.s[firstRow + k]] = k;
     }
     for (int j = k1; j < k2; ++j)
     {
-      double* column = target + static_cast<std::size_t>(j - k1) * rows;
+      Scalar* column = target + static_cast<std::size_t>(j - k1) * rows;
       for (int q = cp[j]; q < cp[j + 1]; ++q)
       {
         column[map[ci[q]]] += cx[q];
       }
     }
-    // Each descendant d with rows in [k1, k2): subtract L_d(r, :) L_d(r1, :)^T, r its rows from
+    // Each descendant d with rows in [k1, k2): subtract L_d(r, :) L_d(r1, :)^H, r its rows from
     // the first one in this supernode down, r1 those inside [k1, k2).
     for (int d = head[s]; d != -1;)
     {
@@ -109,18 +114,18 @@ int factorize(const kerf::SupernodalProblem& p)
         ++inside;
       }
       const int rows1 = inside - begin, rows2 = p.pi[d + 1] - begin;
-      const Block ld(p.values + p.px[d] + position[d], rows2, dColumns, Eigen::OuterStride<>(dRows));
+      const Block ld(values + p.px[d] + position[d], rows2, dColumns, Eigen::OuterStride<>(dRows));
       update.resize(static_cast<std::size_t>(rows2) * rows1);
-      Eigen::Map<Eigen::MatrixXd> c(update.data(), rows2, rows1);
-      c.topRows(rows1).triangularView<Eigen::Lower>() = ld.topRows(rows1) * ld.topRows(rows1).transpose();
+      Eigen::Map<Matrix> c(update.data(), rows2, rows1);
+      c.topRows(rows1).template triangularView<Eigen::Lower>() = ld.topRows(rows1) * ld.topRows(rows1).adjoint();
       if (rows2 > rows1)
       {
-        c.bottomRows(rows2 - rows1).noalias() = ld.bottomRows(rows2 - rows1) * ld.topRows(rows1).transpose();
+        c.bottomRows(rows2 - rows1).noalias() = ld.bottomRows(rows2 - rows1) * ld.topRows(rows1).adjoint();
       }
       for (int j = 0; j < rows1; ++j)
       {
-        double* column = target + static_cast<std::size_t>(map[p.s[begin + j]]) * rows;
-        const double* from = update.data() + static_cast<std::size_t>(j) * rows2;
+        Scalar* column = target + static_cast<std::size_t>(map[p.s[begin + j]]) * rows;
+        const Scalar* from = update.data() + static_cast<std::size_t>(j) * rows2;
         for (int i = j; i < rows2; ++i)
         {
           column[map[p.s[begin + i]]] -= from[i];
@@ -135,22 +140,27 @@ int factorize(const kerf::SupernodalProblem& p)
       }
       d = following;
     }
-    // The diagonal block's Cholesky factor, then the rows below: L21 = A21 L11^-T.
-    Block block(target, rows, columns, Eigen::OuterStride<>(rows));
+    // The diagonal block's Cholesky factor, then the rows below: L21 = A21 L11^-H, on a copy
+    // aligned for Eigen's widest vectors: some of Eigen's complex kernels sum in an order that
+    // depends on where their data starts, and the factor's values may start anywhere.
+    aligned.assign(target, target + static_cast<std::size_t>(rows) * columns);
+    Block block(aligned.data(), rows, columns, Eigen::OuterStride<>(rows));
     BlockRef diagonal = block.topRows(columns);
-    Eigen::LLT<BlockRef> llt(diagonal);
+    Eigen::LLT<BlockRef> llt(diagonal); // L L^H, lower triangle, in place
     if (llt.info() != Eigen::Success)
     {
       return k1;
     }
     if (rows > columns)
     {
-      diagonal.triangularView<Eigen::Lower>().transpose().solveInPlace<Eigen::OnTheRight>(block.bottomRows(rows - columns));
+      diagonal.template triangularView<Eigen::Lower>().adjoint().template solveInPlace<Eigen::OnTheRight>(
+        block.bottomRows(rows - columns));
       const int t = supernodeOf[p.s[firstRow + columns]];
       position[s] = columns;
       next[s] = head[t];
       head[t] = s;
     }
+    std::copy(aligned.begin(), aligned.end(), target);
   }
   return -1;
 }
@@ -159,5 +169,11 @@ int factorize(const kerf::SupernodalProblem& p)
 
 extern "C" __attribute__((visibility("default"))) int KERF_SUPERNODAL_ENTRY(const kerf::SupernodalProblem* problem)
 {
-  return factorize(*problem);
+  if (problem->complex)
+  {
+    using Complex = std::complex<double>;
+    return factorize<Complex>(*problem, reinterpret_cast<const Complex*>(problem->ax),
+      reinterpret_cast<Complex*>(problem->values));
+  }
+  return factorize<double>(*problem, problem->ax, problem->values);
 }

@@ -7,10 +7,13 @@
 namespace kerf
 {
 
-/// A symmetric matrix and the symbolic supernodal factor L L^T = P A P^T of CHOLMOD's layout
-/// (cholmod_factor: super, pi, px, s, Perm; int indices), with the values to fill.
+/// A symmetric (real) or Hermitian (complex) matrix and the symbolic supernodal factor
+/// L L^H = P A P^T of CHOLMOD's layout (cholmod_factor: super, pi, px, s, Perm; int indices), with
+/// the values to fill. Complex values are interleaved (real, imaginary), as CHOLMOD_COMPLEX and
+/// std::complex<double> store them.
 struct SupernodalProblem
 {
+  bool complex = false;
   int n = 0;
   int supernodes = 0;
   const int* super = nullptr; ///< supernodes + 1: the first column of each supernode
@@ -18,11 +21,12 @@ struct SupernodalProblem
   const int* px = nullptr;    ///< supernodes + 1: where each supernode's values start
   const int* s = nullptr;     ///< the row indices (a supernode's own columns first, in order)
   const int* perm = nullptr;  ///< n: perm[k] is the row of A eliminated k-th
-  // A in compressed columns (packed); only the entries with row >= column are read.
+  // A in compressed columns (packed); only the entries with row >= column are read (values:
+  // one double each, or two when complex).
   const int* ap = nullptr;
   const int* ai = nullptr;
   const double* ax = nullptr;
-  double* values = nullptr; ///< px[supernodes] values: each supernode a column-major rows x columns block
+  double* values = nullptr; ///< px[supernodes] values (doubles, or pairs when complex): each supernode a column-major rows x columns block
 };
 
 } // namespace kerf

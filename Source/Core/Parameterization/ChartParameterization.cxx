@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "Harmonic/SerialOpenMP.h"
 #include "Harmonic/SparseCholesky.h"
+#include "Harmonic/SupernodalFactorization.h"
 #include "Harmonic/SupernodalSolve.h"
 #include "Mesh/MeshValidation.h"
 #include "Parameterization/CutToDisk.h"
@@ -202,8 +203,9 @@ namespace
 using Complex = std::complex<double>;
 
 #ifdef KERF_HAVE_CHOLMOD
-// CHOLMOD's L L^H of one Hermitian system after another (the charts of one parameterizeCharts
-// call) with one cholmod_common, and one buffer for a supernodal factor's values kept from system
+// CHOLMOD's analysis and L L^H (its supernodal values by factorizeSupernodal: Kerf's driver with
+// Eigen's kernels for the processor) of one Hermitian system after another (the charts of one
+// parameterizeCharts call) with one cholmod_common, and one buffer for a supernodal factor's values kept from system
 // to system: the factorization writes every value of it, and a fresh factor's pages cost more to
 // touch first than to fill (Documentation/filters/ChartParameterization.md, "Speed").
 class HermitianSolves
@@ -279,7 +281,7 @@ public:
       factor->x = this->Values;
       factor->xtype = CHOLMOD_COMPLEX;
     }
-    if (!cholmod_factorize(&a, factor, &this->Common) || this->Common.status != CHOLMOD_OK ||
+    if (!factorizeSupernodal(&a, factor, &this->Common) || this->Common.status != CHOLMOD_OK ||
       factor->minor < factor->n)
     {
       throw Error("the conformal map's system is not positive definite");
@@ -321,7 +323,7 @@ class HermitianSolves
 
 // Solves H z = rhs for the Hermitian positive definite H given by its lower triangle: with
 // ComplexCHOLMOD, CHOLMOD's L L^H (supernodal or simplicial, CHOLMOD's choice by the flops per
-// nonzero of the factor) after an AMD ordering, through `solves` if given; else Eigen's
+// nonzero of the factor; supernodal values by factorizeSupernodal) after an AMD ordering, through `solves` if given; else Eigen's
 // SimplicialLDLT.
 Eigen::VectorXcd solveHermitian(
   const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs, ChartSolver solver, HermitianSolves* solves)
