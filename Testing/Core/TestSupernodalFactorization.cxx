@@ -19,6 +19,7 @@
 #include <complex>
 #include <cstdint>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -80,18 +81,40 @@ cholmod_sparse lowerView(const Eigen::SparseMatrix<Scalar>& lower)
   return a;
 }
 
+// CHOLMOD's supernodal analysis (AMD) of the lower triangle `lower`; freed with the object.
+struct Analysis
+{
+  template <typename Scalar>
+  explicit Analysis(const Eigen::SparseMatrix<Scalar>& lower)
+  {
+    cholmod_start(&this->common);
+    this->common.supernodal = CHOLMOD_SUPERNODAL;
+    this->common.print = 0;
+    this->a = lowerView(lower);
+    this->factor = cholmod_analyze(&this->a, &this->common);
+  }
+  ~Analysis()
+  {
+    cholmod_free_factor(&this->factor, &this->common);
+    cholmod_finish(&this->common);
+  }
+  Analysis(const Analysis&) = delete;
+  Analysis& operator=(const Analysis&) = delete;
+  cholmod_common common;
+  cholmod_sparse a{};
+  cholmod_factor* factor = nullptr;
+};
+
 // The values of the supernodal factor of the lower triangle `lower` (AMD), computed by `route`
 // through factorizeSupernodal, and the solution of A x = b with it (CHOLMOD's solve).
 template <typename Scalar>
 std::pair<std::vector<Scalar>, std::vector<Scalar>> factorAndSolve(
   const Eigen::SparseMatrix<Scalar>& lower, SupernodalRoute route, const std::vector<Scalar>& b)
 {
-  cholmod_common common;
-  cholmod_start(&common);
-  common.supernodal = CHOLMOD_SUPERNODAL;
-  common.print = 0;
-  cholmod_sparse a = lowerView(lower);
-  cholmod_factor* factor = cholmod_analyze(&a, &common);
+  Analysis analysis(lower);
+  cholmod_common& common = analysis.common;
+  cholmod_sparse& a = analysis.a;
+  cholmod_factor*& factor = analysis.factor;
   std::pair<std::vector<Scalar>, std::vector<Scalar>> result;
   if (factor && factorizeSupernodal(&a, factor, &common, route) && factor->minor == factor->n && factor->is_super)
   {
@@ -110,8 +133,6 @@ std::pair<std::vector<Scalar>, std::vector<Scalar>> factorAndSolve(
       cholmod_free_dense(&x, &common);
     }
   }
-  cholmod_free_factor(&factor, &common);
-  cholmod_finish(&common);
   return result;
 }
 
@@ -120,12 +141,10 @@ std::pair<std::vector<Scalar>, std::vector<Scalar>> factorAndSolve(
 template <typename Scalar>
 std::vector<Scalar> factorValuesAt(const Eigen::SparseMatrix<Scalar>& lower, SupernodalRoute route, std::size_t offset)
 {
-  cholmod_common common;
-  cholmod_start(&common);
-  common.supernodal = CHOLMOD_SUPERNODAL;
-  common.print = 0;
-  cholmod_sparse a = lowerView(lower);
-  cholmod_factor* factor = cholmod_analyze(&a, &common);
+  Analysis analysis(lower);
+  cholmod_common& common = analysis.common;
+  cholmod_sparse& a = analysis.a;
+  cholmod_factor*& factor = analysis.factor;
   std::vector<Scalar> values;
   if (factor && factor->is_super)
   {
@@ -142,8 +161,6 @@ std::vector<Scalar> factorValuesAt(const Eigen::SparseMatrix<Scalar>& lower, Sup
     factor->x = nullptr;
     factor->xtype = CHOLMOD_PATTERN;
   }
-  cholmod_free_factor(&factor, &common);
-  cholmod_finish(&common);
   return values;
 }
 
@@ -308,6 +325,21 @@ TEST(SupernodalFactorization, MatricesThatAreNotPositiveDefiniteAreRefusedByEver
     cholesky.setSupernodalRoute(route);
     EXPECT_FALSE(cholesky.factor(indefinite)) << "route " << static_cast<int>(route);
     EXPECT_TRUE(cholesky.factor(definite)) << "route " << static_cast<int>(route);
+  }
+}
+
+TEST(SupernodalFactorization, MatricesWithNaNAreRefusedByKerfsRoutes)
+{
+  const TriangleMesh sphere = makeIcosphere(1.0, 4);
+  Eigen::SparseMatrix<double> withNaN = shiftedLaplacian(sphere, 1e-2);
+  withNaN.valuePtr()[withNaN.nonZeros() / 2] = std::numeric_limits<double>::quiet_NaN();
+  // Kerf's routes refuse it (CHOLMOD's, with OpenBLAS's potrf, factors it into NaNs; Kerf's
+  // solvers validate their input's numbers first either way).
+  for (SupernodalRoute route : kerfRoutes())
+  {
+    SparseCholesky cholesky;
+    cholesky.setSupernodalRoute(route);
+    EXPECT_FALSE(cholesky.factor(withNaN)) << "route " << static_cast<int>(route);
   }
 }
 

@@ -9,6 +9,7 @@
 #include <Eigen/Dense>
 
 #include <algorithm>
+#include <cmath>
 #include <complex>
 #include <cstddef>
 #include <vector>
@@ -150,6 +151,14 @@ int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values
     if (llt.info() != Eigen::Success)
     {
       return k1;
+    }
+    // Eigen's test (a pivot <= 0) lets a NaN through: a factor with one is refused too.
+    for (int r = 0; r < columns; ++r)
+    {
+      if (!std::isfinite(Eigen::numext::real(diagonal(r, r))))
+      {
+        return k1 + r;
+      }
     }
     if (rows > columns)
     {
