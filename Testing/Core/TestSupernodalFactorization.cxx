@@ -328,6 +328,59 @@ TEST(SupernodalFactorization, MatricesThatAreNotPositiveDefiniteAreRefusedByEver
   }
 }
 
+#ifdef KERF_HAVE_CHOLMOD
+TEST(SupernodalFactorization, AnEntryOutsideTheAnalysedPatternIsRefusedByKerfsRoutes)
+{
+  const TriangleMesh sphere = makeIcosphere(1.0, 3);
+  const Eigen::SparseMatrix<double> A = shiftedLaplacian(sphere, 1e-2);
+  for (SupernodalRoute route : kerfRoutes())
+  {
+    Analysis analysis(A);
+    ASSERT_NE(analysis.factor, nullptr);
+    ASSERT_TRUE(analysis.factor->is_super);
+    // A pair of rows that the factor's pattern does not join (the permuted column of the earlier
+    // one, in its supernode's row list, lacks the later one).
+    const cholmod_factor& f = *analysis.factor;
+    const int* perm = static_cast<const int*>(f.Perm);
+    const int* super = static_cast<const int*>(f.super);
+    const int* pi = static_cast<const int*>(f.pi);
+    const int* rows = static_cast<const int*>(f.s);
+    const int n = static_cast<int>(f.n);
+    std::vector<int> inverse(n), supernodeOf(n);
+    for (int k = 0; k < n; ++k)
+    {
+      inverse[perm[k]] = k;
+    }
+    for (int t = 0; t < static_cast<int>(f.nsuper); ++t)
+    {
+      std::fill(supernodeOf.begin() + super[t], supernodeOf.begin() + super[t + 1], t);
+    }
+    int outsideRow = -1, outsideColumn = -1;
+    for (int v = 1; v < n && outsideRow < 0; ++v)
+    {
+      const int a = std::min(inverse[0], inverse[v]), b = std::max(inverse[0], inverse[v]);
+      const int t = supernodeOf[a];
+      if (std::find(rows + pi[t], rows + pi[t + 1], b) == rows + pi[t + 1])
+      {
+        outsideRow = v;
+        outsideColumn = 0;
+      }
+    }
+    ASSERT_GE(outsideRow, 0);
+    Eigen::SparseMatrix<double> B = A;
+    B.coeffRef(outsideRow, outsideColumn) = -1e-3;
+    B.makeCompressed();
+    cholmod_sparse b = lowerView(B);
+    EXPECT_FALSE(factorizeSupernodal(&b, analysis.factor, &analysis.common, route)) << "route " << static_cast<int>(route);
+    EXPECT_EQ(analysis.common.status, CHOLMOD_INVALID);
+    // The same factor still takes the analysed matrix.
+    cholmod_sparse a = lowerView(A);
+    EXPECT_TRUE(factorizeSupernodal(&a, analysis.factor, &analysis.common, route));
+    EXPECT_EQ(analysis.factor->minor, analysis.factor->n);
+  }
+}
+#endif
+
 TEST(SupernodalFactorization, MatricesWithNaNAreRefusedByKerfsRoutes)
 {
   const TriangleMesh sphere = makeIcosphere(1.0, 4);

@@ -122,6 +122,11 @@ bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* c
     common->status = CHOLMOD_OUT_OF_MEMORY;
     return false;
   }
+  if (failed == SupernodalOutsidePattern)
+  {
+    common->status = CHOLMOD_INVALID;
+    return false;
+  }
   common->status = CHOLMOD_OK;
   L->minor = L->n;
   if (failed >= 0)

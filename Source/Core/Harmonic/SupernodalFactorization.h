@@ -35,7 +35,9 @@ SupernodalRoute automaticSupernodalRoute();
 /// first column of the supernode that is not positive definite (then it returns true and
 /// common->status is CHOLMOD_NOT_POSDEF, as with CHOLMOD). Otherwise, and for the CHOLMOD route,
 /// it calls cholmod_factorize. Returns false when the factorization could not run (out of memory,
-/// invalid input). Deterministic: one route on one machine gives the same bits every time.
+/// invalid input; on Kerf's route also an A with an entry outside the analysed pattern, which
+/// cholmod_factorize does not check: common->status is then CHOLMOD_INVALID). Deterministic: one
+/// route on one machine gives the same bits every time.
 bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common,
   SupernodalRoute route = SupernodalRoute::Automatic);
 #endif

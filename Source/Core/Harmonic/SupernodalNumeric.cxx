@@ -78,9 +78,10 @@ int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values
   {
     std::fill(supernodeOf.begin() + p.super[s], supernodeOf.begin() + p.super[s + 1], s);
   }
-  // map: a row's place in the current supernode; head/next: the supernodes that update each
-  // supernode next; position: where in its rows each such supernode's next update starts.
-  std::vector<int> map(static_cast<std::size_t>(n), 0);
+  // map: a row's place in the current supernode (-1 outside it); head/next: the supernodes that
+  // update each supernode next; position: where in its rows each such supernode's next update
+  // starts.
+  std::vector<int> map(static_cast<std::size_t>(n), -1);
   std::vector<int> head(static_cast<std::size_t>(supernodes), -1), next(static_cast<std::size_t>(supernodes), -1);
   std::vector<int> position(static_cast<std::size_t>(supernodes), 0);
   std::vector<Scalar> update;
@@ -99,7 +100,12 @@ int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values
       Scalar* column = target + static_cast<std::size_t>(j - k1) * rows;
       for (int q = cp[j]; q < cp[j + 1]; ++q)
       {
-        column[map[ci[q]]] += cx[q];
+        const int at = map[ci[q]];
+        if (at < 0)
+        {
+          return kerf::SupernodalOutsidePattern; // A is not the matrix that was analysed
+        }
+        column[at] += cx[q];
       }
     }
     // Each descendant d with rows in [k1, k2): subtract L_d(r, :) L_d(r1, :)^H, r its rows from
@@ -170,6 +176,10 @@ int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values
       head[t] = s;
     }
     std::copy(aligned.begin(), aligned.end(), target);
+    for (int k = 0; k < rows; ++k)
+    {
+      map[p.s[firstRow + k]] = -1;
+    }
   }
   return -1;
 }

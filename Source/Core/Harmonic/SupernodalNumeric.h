@@ -31,7 +31,15 @@ struct SupernodalProblem
 
 } // namespace kerf
 
-/// Fills problem->values with the factor. Returns -1, or the first column (in elimination
-/// order) of the supernode whose diagonal block is not positive definite.
+namespace kerf
+{
+/// What the kernels return when A has an entry outside the pattern the factor was analysed for.
+constexpr int SupernodalOutsidePattern = -2;
+}
+
+/// Fills problem->values with the factor. Returns -1; or the first column (in elimination
+/// order) of the supernode whose diagonal block is not positive definite; or
+/// kerf::SupernodalOutsidePattern, when A has an entry the analysis did not see (nothing is
+/// written outside the factor's values).
 extern "C" int kerf_supernodal_numeric_x86_64_v3(const kerf::SupernodalProblem* problem);
 extern "C" int kerf_supernodal_numeric_x86_64_v4(const kerf::SupernodalProblem* problem);
