@@ -27,6 +27,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace kerf
@@ -367,10 +368,20 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
   return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
+// A method parameter that counts something: a whole number below 1000.
+int wholeNumber(const MethodParameters& parameters, const std::string& name, int fallback)
+{
+  const std::string text = parameters.text(name, std::to_string(fallback));
+  return text.find_first_not_of("0123456789") == std::string::npos && !text.empty() && text.size() < 4
+    ? std::stoi(text)
+    : throw Error("the method parameter '" + name + "' must be a whole number below 1000, not '" + text + "'");
+}
+
 // Easy Mesh Cutting (Ji et al. 2006) with a simulated user: one stroke per segment of the input
 // human along its innermost faces, then `corrections` rounds in which a stroke is added inside
 // the wrongly labelled faces of each segment (through their innermost ones), as a user corrects
-// what the growing got wrong; the boundaries are refined as snakes at the end when asked.
+// what the growing got wrong; the boundaries are refined as snakes at the end when asked, then
+// edited by override strokes when asked.
 MethodOutput segmentWithRegionGrowing(
   const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters, bool snakes)
 {
@@ -381,11 +392,7 @@ MethodOutput segmentWithRegionGrowing(
   metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
   metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
   const double depth = parameters.positive("depth", 0.2);
-  const std::string correctionText = parameters.text("corrections", "3");
-  const int corrections = correctionText.find_first_not_of("0123456789") == std::string::npos &&
-      !correctionText.empty() && correctionText.size() < 4
-    ? std::stoi(correctionText)
-    : throw Error("the method parameter 'corrections' must be a whole number below 1000, not '" + correctionText + "'");
+  const int corrections = wholeNumber(parameters, "corrections", 3);
   const TriangleMesh& mesh = c.surface->mesh();
   std::vector<LabelledStroke> strokes;
   auto addStrokes = [&strokes](const std::vector<SegmentStroke>& simulated) {
@@ -429,6 +436,56 @@ MethodOutput segmentWithRegionGrowing(
     output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
   }
   output.inputs = static_cast<int>(strokes.size());
+  // Boundary editing (Ji et al. 2006, section 5.2): `overrides` rounds in which the user draws
+  // override strokes along the input human's boundaries where faces are still wrong (each
+  // boundary stroke that passes within the override radius plus the stroke spacing of a wrongly
+  // labelled face). An override the snake refuses (no boundary of the result within the radius)
+  // changes nothing and is not counted, as a stroke with no effect would be retracted.
+  const int overrideRounds = wholeNumber(parameters, "overrides", 0);
+  const double diagonal = mesh.boundingBoxDiagonal();
+  EasyMeshCutOptions editing;
+  editing.refine = false;
+  editing.overrideRadius = parameters.positive("override-radius", 0.02) * diagonal;
+  const double spacing = parameters.positive("spacing", 0.03) * diagonal;
+  const std::vector<BoundaryStroke> humanBoundaries =
+    overrideRounds > 0 ? boundaryStrokes(mesh, *input, spacing) : std::vector<BoundaryStroke>();
+  for (int round = 0; round < overrideRounds; ++round)
+  {
+    std::vector<Vector3> wrong; // centroids of the wrongly labelled faces
+    for (std::size_t f = 0; f < input->size(); ++f)
+    {
+      if ((*input)[f] >= 0 && output.labels[f] != (*input)[f])
+      {
+        const Triangle& t = mesh.triangle(static_cast<int>(f));
+        wrong.push_back((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0);
+      }
+    }
+    if (wrong.empty())
+    {
+      break;
+    }
+    const double reach = editing.overrideRadius + spacing;
+    for (const BoundaryStroke& stroke : humanBoundaries)
+    {
+      const bool nearWrong = std::any_of(stroke.points.begin(), stroke.points.end(), [&](const Vector3& p) {
+        return std::any_of(wrong.begin(), wrong.end(), [&](const Vector3& w) { return (w - p).norm() <= reach; });
+      });
+      if (!nearWrong)
+      {
+        continue;
+      }
+      editing.overrides = { stroke.points };
+      try
+      {
+        output.labels = refineBoundaries(c.surface, output.labels, editing).faceLabels;
+        ++output.inputs;
+      }
+      catch (const Error&)
+      {
+        // Refused: the result has no boundary near this part of the human's.
+      }
+    }
+  }
   return output;
 }
 
@@ -503,14 +560,16 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "region-growing",
-      "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "depth", "corrections" },
+      "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "depth", "corrections", "overrides",
+        "override-radius", "spacing" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, false);
       } },
     { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "depth", "corrections" },
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "depth", "corrections", "overrides",
+        "override-radius", "spacing" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, true);
