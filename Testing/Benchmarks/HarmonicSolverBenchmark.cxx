@@ -13,7 +13,8 @@
 //                                            nearestIsoline to the stroke, labelCuts
 //   BM_SolverFirstCutAMD/<size>/<formulation>  the same with the factorization ordered by AMD at
 //                                            every size (the solver's geometric nested
-//                                            dissection from GeometricOrderingRows rows)
+//                                            dissection from GeometricOrderingRows rows, from
+//                                            GeometricOrderingRowsSquared for least squares)
 //   BM_SolverNewCut/<size>/<formulation>     a new stroke on the factored mesh, stroke to labels
 //                                            (work: update)
 //   BM_SolverRefinement/<size>/<formulation> a refinement stroke appended to the first stroke's
@@ -418,12 +419,13 @@ void factorization(benchmark::State& state, SolverScene& scene, Matrix matrix, C
 }
 
 // The factorization with the solver's ordering for the size (geometric nested dissection from
-// GeometricOrderingRows rows, else AMD), computed once outside the loop, by one numeric route.
+// GeometricOrderingRows rows for the Laplacian and GeometricOrderingRowsSquared for the squared
+// Laplacian, else AMD), computed once outside the loop, by one numeric route.
 void supernodalFactorization(benchmark::State& state, SolverScene& scene, Matrix matrix, kerf::SupernodalRoute route)
 {
   const Eigen::SparseMatrix<double>& a = matrixOf(scene, matrix);
   std::vector<int> permutation;
-  if (a.rows() >= kerf::GeometricOrderingRows)
+  if (a.rows() >= (matrix == Matrix::Squared ? kerf::GeometricOrderingRowsSquared : kerf::GeometricOrderingRows))
   {
     // The free rows are the vertices but the first (solverMatrices).
     const std::vector<kerf::Vector3>& points = scene.surface.mesh.points();

@@ -957,6 +957,54 @@ double largestDifference(const std::vector<double>& a, const std::vector<double>
 }
 } // namespace
 
+// The squared Laplacian of least squares has its own threshold for the geometric ordering: on
+// two spheres, with it forced from one row for the squared Laplacian only, least squares is
+// ordered otherwise than with AMD and gives the dense solution, and a new stroke (low-rank update
+// of the nested-dissection factor) too; point values keep AMD's ordering.
+TEST(HarmonicField, SquaredLaplacianTakesItsOwnGeometricOrderingThreshold)
+{
+  HarmonicFieldSolver defaults;
+  EXPECT_EQ(defaults.geometricOrderingRows(), GeometricOrderingRows);
+  EXPECT_EQ(defaults.geometricOrderingRowsSquared(), GeometricOrderingRowsSquared);
+  EXPECT_LT(GeometricOrderingRowsSquared, GeometricOrderingRows);
+  const TriangleMesh mesh = twoSpheres(2);
+  const std::vector<double> weights = cotangentWeights(mesh);
+  FieldConstraints c;
+  c.softWeight = 0.7;
+  c.soft = scatteredConstraints(mesh, 12, 19u);
+  c.dirichletVertices = { 0, 5 };
+  c.dirichletValues = { 2.0, -1.5 };
+  HarmonicFieldSolver geometric;
+  geometric.setGeometricOrderingRows(std::numeric_limits<int>::max(), 1);
+  EXPECT_EQ(geometric.geometricOrderingRows(), std::numeric_limits<int>::max());
+  EXPECT_EQ(geometric.geometricOrderingRowsSquared(), 1);
+  const HarmonicFieldSolution first = geometric.solve(mesh, weights, c);
+  EXPECT_EQ(first.work, HarmonicFieldSolution::Work::Factorization);
+  EXPECT_LE(largestDifference(first.field, denseReference(mesh, weights, c)), 1e-8);
+  HarmonicFieldSolver amd;
+  amd.setGeometricOrderingRows(std::numeric_limits<int>::max());
+  EXPECT_LE(largestDifference(first.field, amd.solve(mesh, weights, c).field), 1e-10);
+#ifdef KERF_HAVE_CHOLMOD
+  // Another ordering of the same squared Laplacian.
+  ASSERT_EQ(geometric.factorPermutation().size(), amd.factorPermutation().size());
+  EXPECT_FALSE(amd.factorPermutation().empty());
+  EXPECT_NE(geometric.factorPermutation(), amd.factorPermutation());
+#endif
+  // Another stroke's constraints: a low-rank update of the same factor.
+  c.soft = scatteredConstraints(mesh, 12, 23u);
+  const HarmonicFieldSolution next = geometric.solve(mesh, weights, c);
+  EXPECT_NE(next.work, HarmonicFieldSolution::Work::Factorization);
+  EXPECT_LE(largestDifference(next.field, denseReference(mesh, weights, c)), 1e-8);
+  // Point values factor the Laplacian, whose threshold is not reached: AMD's ordering.
+  c.formulation = SoftConstraintFormulation::PointValues;
+  EXPECT_LE(largestDifference(geometric.solve(mesh, weights, c).field, denseReference(mesh, weights, c)), 1e-8);
+  EXPECT_LE(largestDifference(amd.solve(mesh, weights, c).field, denseReference(mesh, weights, c)), 1e-8);
+#ifdef KERF_HAVE_CHOLMOD
+  EXPECT_FALSE(amd.factorPermutation().empty());
+  EXPECT_EQ(geometric.factorPermutation(), amd.factorPermutation());
+#endif
+}
+
 // Few constraints go through the Woodbury identity, many through the factor of the whole
 // system: both give the dense solution of either formulation, with and without hard values, on
 // two components (one of them without hard values, so with an offset unknown).

@@ -197,6 +197,7 @@ struct HarmonicFieldSolver::Cache
 
 HarmonicFieldSolver::HarmonicFieldSolver()
   : GeometricRows(GeometricOrderingRows)
+  , GeometricSquaredRows(GeometricOrderingRowsSquared)
   , State(new Cache)
 {
 }
@@ -206,6 +207,11 @@ HarmonicFieldSolver::~HarmonicFieldSolver() = default;
 void HarmonicFieldSolver::reset()
 {
   this->State.reset(new Cache);
+}
+
+std::vector<int> HarmonicFieldSolver::factorPermutation() const
+{
+  return this->State->factored ? this->State->cholesky.permutation() : std::vector<int>();
 }
 
 HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
@@ -368,9 +374,10 @@ bool HarmonicFieldSolver::factorIfChanged(
   }
   cache.base.makeCompressed();
   // AMD: its ordering costs less than the fill it leaves (see SparseCholesky::Ordering), except
-  // on large meshes, where the geometric nested dissection halves the flops.
+  // on large meshes, where the geometric nested dissection halves the flops (and, for the
+  // squared Laplacian, shortens what a new stroke's columns sweep).
   bool factored = true;
-  if (columns > 0 && columns >= this->GeometricRows)
+  if (columns > 0 && columns >= (problem.squared ? this->GeometricSquaredRows : this->GeometricRows))
   {
     std::vector<Vector3> points(static_cast<std::size_t>(columns));
     for (int c = 0; c < columns; ++c)

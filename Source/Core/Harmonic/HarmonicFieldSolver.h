@@ -120,9 +120,22 @@ public:
   void reset();
 
   /// From this many free vertices the factored term is ordered by geometricNestedDissection
-  /// instead of AMD. Default GeometricOrderingRows; applies from the next factorization.
-  void setGeometricOrderingRows(int rows) { this->GeometricRows = rows; }
+  /// instead of AMD: `laplacianRows` for the Laplacian (hard values, point values; default
+  /// GeometricOrderingRows), `squaredRows` for least squares' squared Laplacian (default
+  /// GeometricOrderingRowsSquared). Applies from the next factorization.
+  void setGeometricOrderingRows(int laplacianRows, int squaredRows)
+  {
+    this->GeometricRows = laplacianRows;
+    this->GeometricSquaredRows = squaredRows;
+  }
+  /// Both thresholds at once.
+  void setGeometricOrderingRows(int rows) { this->setGeometricOrderingRows(rows, rows); }
   int geometricOrderingRows() const { return this->GeometricRows; }
+  int geometricOrderingRowsSquared() const { return this->GeometricSquaredRows; }
+
+  /// The fill-reducing permutation of the cached factorization (empty before the first, or
+  /// without CHOLMOD), row k being the free vertex's column eliminated k-th.
+  std::vector<int> factorPermutation() const;
 
   /// Past this many soft constraints (or more than half the unknowns), the constraint term is
   /// factored together with the Laplacian term instead of through the Woodbury identity, whose
@@ -136,6 +149,7 @@ public:
 
 private:
   int GeometricRows;
+  int GeometricSquaredRows;
   struct Problem;
   struct Cache;
   // The steps of solve(), in order.
