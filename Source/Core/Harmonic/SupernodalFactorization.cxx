@@ -4,8 +4,10 @@
 
 #include "Harmonic/SupernodalNumeric.h"
 
+#include <cstdlib>
 #include <limits>
 #include <new>
+#include <string>
 
 namespace kerf
 {
@@ -63,9 +65,24 @@ bool supernodalRouteAvailable(SupernodalRoute route)
 
 SupernodalRoute automaticSupernodalRoute()
 {
-  static const SupernodalRoute route = processorHas(SupernodalRoute::AVX512) ? SupernodalRoute::AVX512
-    : processorHas(SupernodalRoute::AVX2)                                    ? SupernodalRoute::AVX2
-                                                                             : SupernodalRoute::CHOLMOD;
+  static const SupernodalRoute route = [] {
+    // KERF_SUPERNODAL_ROUTE names a narrower route (to compare the routes' last bits, or to
+    // make the baselines of a processor without AVX-512); a route this processor cannot run, or
+    // another value, leaves the widest one.
+    const char* named = std::getenv("KERF_SUPERNODAL_ROUTE");
+    const std::string name = named ? named : "";
+    if (name == "cholmod")
+    {
+      return SupernodalRoute::CHOLMOD;
+    }
+    if (name == "avx2" && processorHas(SupernodalRoute::AVX2))
+    {
+      return SupernodalRoute::AVX2;
+    }
+    return processorHas(SupernodalRoute::AVX512) ? SupernodalRoute::AVX512
+      : processorHas(SupernodalRoute::AVX2)      ? SupernodalRoute::AVX2
+                                                 : SupernodalRoute::CHOLMOD;
+  }();
   return route;
 }
 

@@ -22,7 +22,8 @@ enum class SupernodalRoute
 /// family and the processor has the instructions).
 bool supernodalRouteAvailable(SupernodalRoute route);
 
-/// The route Automatic takes on this processor.
+/// The route Automatic takes on this processor: the widest it has, or the narrower one the
+/// environment variable KERF_SUPERNODAL_ROUTE names ("avx2", or "cholmod"), read once.
 SupernodalRoute automaticSupernodalRoute();
 
 #ifdef KERF_HAVE_CHOLMOD
