@@ -1,4 +1,4 @@
-// What Easy Mesh Cutting's filters share: labelled strokes read from polylines, boundaries written as polylines.
+// What Easy Mesh Cutting's filters share: labelled strokes read from polylines and vertices, boundaries written as polylines.
 #include "KerfEasyMeshCutting.h"
 
 #include "Error.h"
@@ -15,23 +15,37 @@ namespace kerf
 
 std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* labelArray)
 {
+  // Vertex cells come first in the cell data, lines next; each point of a vertex cell is a stroke
+  // of one point, each line a stroke along it.
+  const std::vector<std::vector<Vector3>> vertices = ReadVertexCells(input, "the strokes");
   const std::vector<std::vector<Vector3>> lines = ReadPolylines(input, "the strokes");
-  if (lines.empty())
+  if (vertices.empty() && lines.empty())
   {
-    throw Error("the strokes hold no line");
+    throw Error("the strokes hold no line and no vertex");
   }
   const std::vector<double> labels = ReadNamedCellArray(input, labelArray, "the strokes");
-  const vtkIdType first = input->GetNumberOfVerts(); // a line's cell id follows the verts
-  std::vector<LabelledStroke> strokes;
-  for (std::size_t i = 0; i < lines.size(); ++i)
-  {
-    const double label = labels[static_cast<std::size_t>(first) + i];
+  const auto labelOf = [&labels](std::size_t cell, const std::string& stroke) {
+    const double label = labels[cell];
     if (!(label >= 0.0 && label <= 1e9 && label == std::floor(label)))
     {
-      throw Error("stroke " + std::to_string(i) + " has the label " + std::to_string(label) +
+      throw Error(stroke + " has the label " + std::to_string(label) +
         "; labels are non-negative integers (background 0, foreground 1)");
     }
-    strokes.push_back({ static_cast<int>(label), lines[i] });
+    return static_cast<int>(label);
+  };
+  std::vector<LabelledStroke> strokes;
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+  {
+    const int label = labelOf(i, "vertex cell " + std::to_string(i) + " of the strokes");
+    for (const Vector3& point : vertices[i])
+    {
+      strokes.push_back({ label, { point } });
+    }
+  }
+  const std::size_t first = static_cast<std::size_t>(input->GetNumberOfVerts()); // a line's cell id follows the verts
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    strokes.push_back({ labelOf(first + i, "stroke " + std::to_string(i)), lines[i] });
   }
   return strokes;
 }

@@ -11,8 +11,9 @@ class vtkPolyData;
 namespace kerf
 {
 
-/// The polylines of `input` with their labels, the cell array `labelArray` (non-negative
-/// integers). Throws kerf::Error for no line, a missing or malformed array, or a label that is
+/// The strokes of `input` with their labels, the cell array `labelArray` (non-negative
+/// integers): each point of a vertex cell a stroke of one point, each line a stroke along it.
+/// Throws kerf::Error for no line and no vertex, a missing or malformed array, or a label that is
 /// negative or not an integer.
 std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* labelArray);
 

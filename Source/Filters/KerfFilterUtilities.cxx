@@ -391,14 +391,18 @@ std::vector<Vector3> ReadPoints(vtkPointSet* points)
   return coordinates;
 }
 
-std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner)
+namespace
+{
+// The points of each cell of one of a poly data's cell arrays (`kind` names its cells in errors).
+std::vector<std::vector<Vector3>> ReadCellPoints(
+  vtkPolyData* lines, vtkCellArray* array, const std::string& owner, const std::string& kind)
 {
   std::vector<std::vector<Vector3>> polylines;
-  if (!lines || !lines->GetLines())
+  if (!array)
   {
     return polylines;
   }
-  auto cells = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  auto cells = vtk::TakeSmartPointer(array->NewIterator());
   const vtkIdType pointCount = lines->GetNumberOfPoints();
   for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell())
   {
@@ -410,7 +414,7 @@ std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::s
     {
       if (ids[k] < 0 || ids[k] >= pointCount)
       {
-        throw Error("line " + std::to_string(cells->GetCurrentCellId()) + " of " + owner + " uses point " +
+        throw Error(kind + " " + std::to_string(cells->GetCurrentCellId()) + " of " + owner + " uses point " +
           std::to_string(ids[k]) + ", but " + owner + " has " + std::to_string(pointCount) + " points");
       }
       lines->GetPoint(ids[k], polyline[static_cast<std::size_t>(k)].data());
@@ -418,6 +422,18 @@ std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::s
     polylines.push_back(std::move(polyline));
   }
   return polylines;
+}
+} // namespace
+
+std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner)
+{
+  return lines ? ReadCellPoints(lines, lines->GetLines(), owner, "line") : std::vector<std::vector<Vector3>>();
+}
+
+std::vector<std::vector<Vector3>> ReadVertexCells(vtkPolyData* vertices, const std::string& owner)
+{
+  return vertices ? ReadCellPoints(vertices, vertices->GetVerts(), owner, "vertex cell")
+                  : std::vector<std::vector<Vector3>>();
 }
 
 std::vector<SurfaceCurve> PlaceLinesOnSurface(

@@ -136,6 +136,8 @@ std::vector<Vector3> ReadPoints(vtkPointSet* points);
 /// The polylines of a vtkPolyData's line cells, as point lists; throws for a line naming a point
 /// that does not exist.
 std::vector<std::vector<Vector3>> ReadPolylines(vtkPolyData* lines, const std::string& owner);
+/// The points of each of a vtkPolyData's vertex cells (vertex or poly-vertex), as ReadPolylines.
+std::vector<std::vector<Vector3>> ReadVertexCells(vtkPolyData* vertices, const std::string& owner);
 
 /// The polylines of `lines` placed on the surface (kerf::placeCurveOnSurface), each named
 /// "<owner> line <i>" in errors; a polyline whose last point repeats its first is closed.

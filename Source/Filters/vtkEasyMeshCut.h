@@ -2,7 +2,7 @@
  * @class vtkEasyMeshCut
  * @brief Easy Mesh Cut: a surface split into the parts that labelled strokes mark (Ji et al. 2006).
  *
- * Each stroke (a polyline of input 1) carries a label in the cell array named by
+ * Each stroke (a polyline of input 1, or a point of a vertex cell: a click) carries a label in the cell array named by
  * StrokeLabelArrayName: foreground 1 and background 0 cut out one part; more labels cut out more
  * parts. Without input 1, the foreground and background strokes drawn in the panel are used. Every vertex takes the label of the stroke nearest to it under the improved isophotic
  * metric (Ji et al. 2006, sections 3 and 4.2), a length that grows with the change of the normal and,

@@ -4,7 +4,7 @@
  *
  * The first half of Easy Mesh Cut, for pipelines that refine or inspect the grown parts on their
  * own (vtkRegionGrowing -> vtkSnakeRefinement gives what vtkEasyMeshCut gives in one step). Each
- * stroke (a polyline of input 1, a single point being a click) carries a label in the cell array
+ * stroke (a polyline of input 1, or a point of a vertex cell: a click) carries a label in the cell array
  * named by StrokeLabelArrayName. Every vertex takes the label of the stroke nearest to it under
  * the improved isophotic metric (sections 3 and 4.2), a length that grows with the change of the
  * normal and, strongly, with concave curvature, so parts meet along concave creases. A triangle

@@ -16,6 +16,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <iostream>
@@ -49,26 +50,27 @@ double creaseHeight()
   return best;
 }
 
-// Strokes as polylines along the surface's profile in the xz plane at the given heights, each
-// with its label, after one vertex cell (its label unused) so that line cells do not start at 0.
-vtkSmartPointer<vtkPolyData> strokes(const std::vector<std::pair<double, std::vector<double>>>& lines)
+// Labelled strokes on the surface's profile in the xz plane (x > 0): vertex cells (one per entry
+// of `vertices`, a point at each height), then polylines through the heights of `lines`.
+vtkSmartPointer<vtkPolyData> strokes(const std::vector<std::pair<double, std::vector<double>>>& lines,
+  const std::vector<std::pair<double, std::vector<double>>>& vertices = {})
 {
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> verts, cells;
   vtkNew<vtkDoubleArray> labels;
   labels->SetName("Label");
-  const vtkIdType vertex = points->InsertNextPoint(0.0, 0.0, 0.0);
-  verts->InsertNextCell(1, &vertex);
-  labels->InsertNextValue(7.0);
-  for (const auto& [label, heights] : lines)
+  for (const auto& [to, list] : { std::make_pair(verts.Get(), &vertices), std::make_pair(cells.Get(), &lines) })
   {
-    std::vector<vtkIdType> ids;
-    for (double z : heights)
+    for (const auto& [label, heights] : *list)
     {
-      ids.push_back(points->InsertNextPoint(radius(z), 0.0, z));
+      std::vector<vtkIdType> ids;
+      for (double z : heights)
+      {
+        ids.push_back(points->InsertNextPoint(radius(z), 0.0, z));
+      }
+      to->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+      labels->InsertNextValue(label);
     }
-    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-    labels->InsertNextValue(label);
   }
   auto result = vtkSmartPointer<vtkPolyData>::New();
   result->SetPoints(points);
@@ -166,6 +168,23 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(again).empty());
     ok &= KERF_CHECK(segmentsOf(again->GetOutput()) == labels);
     ok &= KERF_CHECK(coordinatesOf(again->GetBoundary()) == coordinatesOf(boundary));
+  }
+  // Strokes as points: vertex cells (a vertex and a poly-vertex) label like lines, and a line's
+  // label follows the vertex cells' in the cell data.
+  {
+    vtkNew<vtkEasyMeshCut> points;
+    points->SetInputData(0, dumbbell);
+    points->SetInputData(1, strokes({ { 1.0, { 1.4, 1.5, 1.6 } } }, { { 0.0, { -1.5 } }, { 2.0, { -1.6, -1.4 } } }));
+    points->SetRefine(false);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(points).empty());
+    std::vector<int> labels = segmentsOf(points->GetOutput());
+    const std::size_t backgroundTwo = static_cast<std::size_t>(std::count(labels.begin(), labels.end(), 2));
+    std::cout << "vertex strokes: " << backgroundTwo << " faces labelled 2" << std::endl;
+    ok &= KERF_CHECK(backgroundTwo > 0);
+    std::replace(labels.begin(), labels.end(), 2, 0); // the two labels of the larger lobe as one
+    const double error = kerf::compareSegmentations(mesh, labels, known).randIndexError;
+    std::cout << "vertex strokes: Rand index error " << error << std::endl;
+    ok &= KERF_CHECK(error < 0.006);
   }
   // Strokes drawn in the panel (no input 1): a foreground and a background click give the same
   // cut as the same clicks given as labelled one-point polylines.
@@ -385,7 +404,7 @@ int TestEasyMeshCutFilter(int, char*[])
     { "a negative label", strokes({ { 0.0, { -1.5, -1.4 } }, { -1.0, { 1.4, 1.5 } } }), "non-negative integers" },
     { "no label array", unnamed, "no one-component cell array named 'Label'" },
     { "a stroke off the mesh", offSurface, "farther" },
-    { "only a vertex", strokes({}), "hold no line" },
+    { "no cell", strokes({}), "hold no line and no vertex" },
   };
   for (const BadStrokes& b : bad)
   {
