@@ -80,6 +80,19 @@ vtkSmartPointer<vtkPolyData> strokes(const std::vector<std::pair<double, std::ve
   return result;
 }
 
+// Region Growing -> Snake Refinement on a surface and its strokes.
+struct GrowAndRefine
+{
+  GrowAndRefine(vtkPolyData* surface, vtkPolyData* strokes)
+  {
+    this->growing->SetInputData(0, surface);
+    this->growing->SetInputData(1, strokes);
+    this->snake->SetInputConnection(this->growing->GetOutputPort());
+  }
+  vtkNew<vtkRegionGrowing> growing;
+  vtkNew<vtkSnakeRefinement> snake;
+};
+
 std::vector<int> segmentsOf(vtkPolyData* output)
 {
   vtkDataArray* segment = output->GetCellData()->GetArray("Segment");
@@ -265,14 +278,58 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(succeeded == 0);
   }
 
+  // A second component without a stroke (an icosphere beside the dumbbell): its vertices are
+  // reported unreachable and its faces labelled -1 by the growing, the snakes and Easy Mesh Cut,
+  // while the dumbbell is cut as alone.
+  {
+    const kerf::TriangleMesh sphere = kerf::makeIcosphere(0.5, 2);
+    std::vector<kerf::Vector3> points = mesh.points();
+    std::vector<kerf::Triangle> triangles = mesh.triangles();
+    const int offset = mesh.vertexCount();
+    for (const kerf::Vector3& p : sphere.points())
+    {
+      points.push_back(p + kerf::Vector3(5.0, 0.0, 0.0));
+    }
+    for (const kerf::Triangle& t : sphere.triangles())
+    {
+      triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+    vtkSmartPointer<vtkPolyData> two = kerf::test::ToPolyData(kerf::TriangleMesh(points, triangles));
+    GrowAndRefine steps(two, twoStrokes);
+    vtkRegionGrowing* growing = steps.growing;
+    vtkSnakeRefinement* snake = steps.snake;
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(snake).empty());
+    ok &= KERF_CHECK(growing->GetOutput()->GetFieldData()->GetArray("UnreachableVertices")->GetComponent(0, 0) ==
+      static_cast<double>(sphere.vertexCount()));
+    vtkNew<vtkEasyMeshCut> cut;
+    cut->SetInputData(0, two);
+    cut->SetInputData(1, twoStrokes);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(cut).empty());
+    vtkNew<vtkEasyMeshCut> alone;
+    alone->SetInputData(0, dumbbell);
+    alone->SetInputData(1, twoStrokes);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(alone).empty());
+    const std::vector<int> expected = segmentsOf(alone->GetOutput());
+    for (vtkPolyData* output : { growing->GetOutput(), snake->GetOutput(), cut->GetOutput() })
+    {
+      const std::vector<int> labels = segmentsOf(output);
+      ok &= KERF_CHECK(labels.size() == triangles.size());
+      const std::size_t onSphere =
+        static_cast<std::size_t>(std::count(labels.begin() + mesh.faceCount(), labels.end(), -1));
+      std::cout << "second component: " << onSphere << " of " << sphere.faceCount() << " faces labelled -1"
+                << std::endl;
+      ok &= KERF_CHECK(onSphere == static_cast<std::size_t>(sphere.faceCount()));
+      ok &= KERF_CHECK(std::count(labels.begin(), labels.begin() + mesh.faceCount(), -1) == 0);
+    }
+    ok &= KERF_CHECK(std::equal(expected.begin(), expected.end(), segmentsOf(cut->GetOutput()).begin()));
+  }
+
   // The same in two filters: Region Growing gives Easy Mesh Cut's grown result and Region Growing
   // -> Snake Refinement its refined one, value for value.
   {
-    vtkNew<vtkRegionGrowing> growing;
-    growing->SetInputData(0, dumbbell);
-    growing->SetInputData(1, twoStrokes);
-    vtkNew<vtkSnakeRefinement> snake;
-    snake->SetInputConnection(growing->GetOutputPort());
+    GrowAndRefine steps(dumbbell, twoStrokes);
+    vtkRegionGrowing* growing = steps.growing;
+    vtkSnakeRefinement* snake = steps.snake;
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(snake).empty());
     for (bool refine : { false, true })
     {
