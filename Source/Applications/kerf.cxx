@@ -34,8 +34,8 @@ const Command Commands[] = {
     "Cut options: --weighting uniform|cotangent|concavity|smooth-concavity (cotangent),\n"
     "--iso-value I (0), --samples N per stroke segment (4), --offset F of the diagonal (0.005, at most\n"
     "5% of a stroke's length), --soft-weight W (1), --formulation auto|least-squares|point-values\n"
-    "(auto: least squares below 200,000 triangles, point values from there). --timings prints the\n"
-    "time of each step (reading, each stage, writing)." },
+    "(auto: point values where the mean edge is at most 1/180 of the diagonal, else least squares).\n"
+    "--timings prints the time of each step (reading, each stage, writing)." },
   { "unwrap",
     "kerf unwrap MESH --curves CURVES [-o OUT.obj] [--png OUT.png] [--seams N] [--mode M] [--margin F]\n"
     "            [--method lscm|linabf] [--checker N] [--refuse-non-disks]",

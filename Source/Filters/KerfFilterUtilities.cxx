@@ -160,7 +160,7 @@ double StrokeIsoValue(double value)
   return value;
 }
 
-SoftConstraintFormulation FilterFormulation(int property, const TriangleMesh& mesh)
+SoftConstraintFormulation FilterFormulation(int property, const HarmonicCutSession& session)
 {
   switch (property)
   {
@@ -169,7 +169,7 @@ SoftConstraintFormulation FilterFormulation(int property, const TriangleMesh& me
     case 1:
       return SoftConstraintFormulation::LeastSquares;
     default:
-      return automaticFormulation(mesh.faceCount());
+      return session.automaticFormulation();
   }
 }
 

@@ -52,9 +52,9 @@ double Finite(double value, const char* parameter);
 /// values of its two sides); throws otherwise.
 double StrokeIsoValue(double value);
 /// The soft-constraint formulation a Formulation property names: 0 point values, 1 least
-/// squares, 2 automatic (kerf::automaticFormulation of the surface's triangle count: least
-/// squares below 200,000 triangles, point values from there).
-SoftConstraintFormulation FilterFormulation(int property, const TriangleMesh& mesh);
+/// squares, 2 automatic (the session's kerf::automaticFormulation: least squares on coarse
+/// meshes, point values where the mean edge is at most 1/180 of the diagonal).
+SoftConstraintFormulation FilterFormulation(int property, const HarmonicCutSession& session);
 /// A distance given as a fraction of the bounding-box diagonal, in length units; 0 stays 0 (no
 /// limit). Throws for NaN.
 double RelativeDistance(double fraction, double diagonal, const char* parameter);

@@ -17,6 +17,8 @@
 #include <vtkPointSet.h>
 #include <vtkPolyData.h>
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkHarmonicField);
 
 // The filter's weighting codes are the Core enumeration's values.
@@ -103,12 +105,13 @@ int vtkHarmonicField::RequestData(
     options.weights.concaveBeta = kerf::Finite(this->ConcaveBeta, "ConcaveBeta");
     options.weights.concavityQuantile = kerf::Finite(this->ConcavityQuantile, "ConcavityQuantile");
     options.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
-    options.formulation = kerf::FilterFormulation(this->Formulation, session.mesh());
+    options.formulation = kerf::FilterFormulation(this->Formulation, session);
     kerf::HarmonicFieldSolution solution = session.solve(constraints, options);
     this->UpdateProgress(0.9);
 
     const std::vector<kerf::Vector3> gradients = kerf::computeFaceGradients(session.mesh(), solution.field);
-    const std::vector<double> magnitudes = kerf::faceGradientMagnitudes(session.mesh(), solution.field);
+    std::vector<double> magnitudes(gradients.size());
+    std::transform(gradients.begin(), gradients.end(), magnitudes.begin(), [](const kerf::Vector3& g) { return g.norm(); });
     kerf::CheckFinite({ &solution.field, &magnitudes }, solution.relativeResidual,
       "the field or its gradient overflows (hard or constraint values too large for double precision)");
     this->State->surface.MakeOutput(input, output);

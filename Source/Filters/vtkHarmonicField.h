@@ -91,9 +91,10 @@ public:
   /// squared Laplacian factored, the cut that follows the user's strokes most closely.
   /// POINT_VALUES: the field harmonic away from the constraint points and equal to their values
   /// there; the plain Laplacian factored, about three times faster on a fresh mesh. AUTOMATIC
-  /// (default): least squares below 200,000 triangles, point values from there, where the two
-  /// cuts agree to a fraction of the stroke offset and a first cut on 1M triangles costs about
-  /// 4 s instead of 11 s (kerf::automaticFormulation).
+  /// (default): least squares on coarse meshes, point values where the mean edge is at most 1/180
+  /// of the bounding-box diagonal (the default stroke offset spans 0.9 edges or more), where the
+  /// two cuts agree to a fraction of the stroke offset and a first cut on 1M triangles costs
+  /// about 4 s instead of 11 s (kerf::automaticFormulation).
   vtkSetClampMacro(Formulation, int, POINT_VALUES, AUTOMATIC);
   vtkGetMacro(Formulation, int);
   ///@}

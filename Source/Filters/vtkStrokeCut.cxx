@@ -95,7 +95,7 @@ int vtkStrokeCut::RequestData(
     kerf::HarmonicFieldOptions fieldOptions;
     fieldOptions.weights.weighting = static_cast<kerf::LaplacianWeighting>(this->Weighting);
     fieldOptions.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
-    fieldOptions.formulation = kerf::FilterFormulation(this->Formulation, session.mesh());
+    fieldOptions.formulation = kerf::FilterFormulation(this->Formulation, session);
     const kerf::HarmonicFieldSolution solution = session.solve(constraints, fieldOptions);
     this->UpdateProgress(0.8);
 

@@ -45,7 +45,7 @@ public:
   ///@{
   /// How the stroke's constraints shape the field, as vtkHarmonicField's Formulation: 0 point
   /// values (faster), 1 least squares (the most faithful cut), 2 automatic (default: least
-  /// squares below 200,000 triangles, point values from there).
+  /// squares on coarse meshes, point values where the mean edge is at most 1/180 of the diagonal).
   vtkSetClampMacro(Formulation, int, 0, 2);
   vtkGetMacro(Formulation, int);
   ///@}

@@ -11,6 +11,10 @@
 //                                            strokeConstraints, HarmonicFieldSolver::solve
 //                                            (factorization included), extractIsolines at 0,
 //                                            nearestIsoline to the stroke, labelCuts
+//   BM_SolverFirstCut/<size>/automatic       the same with the formulation the filters take by
+//                                            default (kerf::automaticFormulation, chosen inside
+//                                            the timed loop; counter pointValues 1 when it takes
+//                                            point values)
 //   BM_SolverFirstCutAMD/<size>/<formulation>  the same with the factorization ordered by AMD at
 //                                            every size (the solver's geometric nested
 //                                            dissection from GeometricOrderingRows rows, from
@@ -271,7 +275,8 @@ void setCounters(benchmark::State& state, const SolverScene& scene)
 
 using Formulation = kerf::SoftConstraintFormulation;
 
-void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulation, bool alwaysAMD = false)
+void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulation, bool alwaysAMD = false,
+  bool automatic = false)
 {
   int segments = 0;
   kerf::HarmonicFieldSolution solution;
@@ -279,6 +284,10 @@ void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulati
   {
     SurfaceData surface;
     surface.mesh = kerf::TriangleMesh(scene.points, scene.triangles);
+    if (automatic)
+    {
+      formulation = kerf::automaticFormulation(surface.mesh);
+    }
     prepareSurface(surface);
     kerf::HarmonicFieldSolver solver;
     if (alwaysAMD)
@@ -294,6 +303,10 @@ void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulati
     Fail(state, "the first cut gave " + std::to_string(segments) + " segments");
   }
   state.counters["residual"] = solution.relativeResidual;
+  if (automatic)
+  {
+    state.counters["pointValues"] = formulation == Formulation::PointValues ? 1.0 : 0.0;
+  }
 }
 
 kerf::HarmonicFieldSolver& strokeSolver(SolverScene& scene, Formulation formulation)
@@ -635,6 +648,9 @@ void RegisterHarmonicSolverBenchmarks()
       add("BM_SolverRefinement" + suffix, size,
         [formulation](benchmark::State& state, SolverScene& scene) { alternateCuts(state, scene, formulation, true); });
     }
+    add("BM_SolverFirstCut" + label + "/automatic", size, [](benchmark::State& state, SolverScene& scene) {
+      firstCut(state, scene, Formulation::LeastSquares, false, true);
+    });
     add("BM_LocatorBuild" + label, size, locatorBuild);
     for (Matrix matrix : matrices)
     {
@@ -658,8 +674,8 @@ void RegisterHarmonicSolverBenchmarks()
             [matrix, k, r](benchmark::State& state, SolverScene& scene) { lowRankRoute(state, scene, matrix, k, r); });
         }
       }
-      // The squared matrix is factored below 200k triangles only (least squares); at 1M its
-      // solve is too ill-conditioned for the residual check.
+      // The squared matrix (least squares) is the default on coarse meshes only, and measured at
+      // 22k and 100k; at 1M its solve is too ill-conditioned for the residual check.
       for (kerf::SupernodalRoute route : { kerf::SupernodalRoute::CHOLMOD, kerf::SupernodalRoute::Automatic })
       {
         if (matrix == Matrix::Squared && std::string(size.label) == "1M")

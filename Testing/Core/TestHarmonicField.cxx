@@ -199,13 +199,25 @@ TriangleMesh twoSpheres(int levels)
 // ---------------------------------------------------------------------------------------------
 // Hard constraints: linear harmonic functions and the maximum principle.
 
-TEST(HarmonicField, AutomaticFormulationSwitchesToPointValuesAt200000Triangles)
+// Point values where the default stroke offset (0.005 of the diagonal) spans 0.9 mean edges or
+// more: on an n x n grid of the unit square (mean edge (2 (n + 1) + sqrt(2) n) / (n (3 n + 2)),
+// diagonal sqrt(2)) from n = 145; the size of the square does not matter.
+TEST(HarmonicField, AutomaticFormulationTakesPointValuesWhereTheOffsetSpansAnEdge)
 {
-  EXPECT_EQ(automaticFormulation(0), SoftConstraintFormulation::LeastSquares);
-  EXPECT_EQ(automaticFormulation(PointValueTriangles - 1), SoftConstraintFormulation::LeastSquares);
-  EXPECT_EQ(automaticFormulation(PointValueTriangles), SoftConstraintFormulation::PointValues);
-  EXPECT_EQ(automaticFormulation(2000000000LL), SoftConstraintFormulation::PointValues);
-  EXPECT_EQ(PointValueTriangles, 200000);
+  EXPECT_EQ(automaticFormulation(TriangleMesh()), SoftConstraintFormulation::LeastSquares);
+  for (int n : { 10, 144, 145, 400 })
+  {
+    const double expectedEdge = (2.0 * (n + 1) + std::sqrt(2.0) * n) / (n * (3.0 * n + 2.0));
+    for (double size : { 1.0, 1000.0 })
+    {
+      const TriangleMesh grid = makeGrid(size, size, n, n);
+      EXPECT_NEAR(grid.meanEdgeLength(), size * expectedEdge, 1e-12 * size) << n;
+      EXPECT_EQ(automaticFormulation(grid),
+        n >= 145 ? SoftConstraintFormulation::PointValues : SoftConstraintFormulation::LeastSquares)
+        << n << " x " << n << ", size " << size;
+    }
+  }
+  EXPECT_DOUBLE_EQ(PointValueEdgeFraction, 0.005 / 0.9);
 }
 
 TEST(HarmonicField, GridColumnsGiveLinearFieldWithCotangentWeights)

@@ -179,9 +179,9 @@ int TestHarmonicFieldFilter(int, char*[])
   ok &= KERF_CHECK(sameField(cached->GetOutput()->GetPointData()->GetArray("HarmonicField"),
     fresher->GetOutput()->GetPointData()->GetArray("HarmonicField")));
 
-  // The default formulation is chosen by size: least squares below 200,000 triangles, so this
-  // sphere's field is the least-squares one, bit for bit (point values from 200,000 triangles:
-  // Testing/Python/TestHarmonicCut.py, too slow under valgrind).
+  // The default formulation is chosen by resolution: least squares where the mean edge is longer
+  // than 1/180 of the diagonal, so this coarse sphere's field is the least-squares one, bit for bit
+  // (point values on a fine sphere: Testing/Python/TestHarmonicCut.py, too slow under valgrind).
   ok &= KERF_CHECK(fresher->GetFormulation() == vtkHarmonicField::AUTOMATIC);
   vtkNew<vtkHarmonicField> squares;
   squares->SetInputData(0, sphere);

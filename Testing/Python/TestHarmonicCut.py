@@ -290,9 +290,11 @@ class HarmonicCutTest(unittest.TestCase):
         segments = vtk_to_numpy(best.GetLabelledSurface().GetCellData().GetArray("Segment"))
         self.assertEqual(len(numpy.unique(segments)), 2)
 
-    def test_automatic_formulation_takes_point_values_from_200000_triangles(self):
-        # A sphere of exactly 200,000 triangles: the default (automatic) field is the point-value
-        # one, bit for bit (below 200,000 the least-squares one: TestHarmonicFieldFilter.cxx).
+    def test_automatic_formulation_takes_point_values_on_fine_meshes(self):
+        # A sphere of 200,000 triangles, whose mean edge is far below 1/180 of its diagonal (the
+        # default stroke offset spans more than 0.9 edges): the default (automatic) field is the
+        # point-value one, bit for bit (on a coarse sphere the least-squares one:
+        # TestHarmonicFieldFilter.cxx).
         sphere = vtkSphereSource()
         sphere.SetThetaResolution(500)
         sphere.SetPhiResolution(202)

@@ -272,6 +272,13 @@ MethodOutput segmentWithHarmonicCuts(
   strokeOptions.offset = parameters.positive("offset", 0.005) * diagonal;
   strokeOptions.offsetLengthFraction = std::stod(parameters.text("offset-length", "0.05"));
   strokeOptions.maximumDistance = 0.05 * diagonal;
+  const std::string formulation = parameters.text("formulation", "least-squares");
+  if (formulation != "least-squares" && formulation != "point-values")
+  {
+    throw Error("the method parameter formulation is least-squares or point-values, not '" + formulation + "'");
+  }
+  fieldOptions.formulation = formulation == "point-values" ? SoftConstraintFormulation::PointValues
+                                                            : SoftConstraintFormulation::LeastSquares;
   const double spacing = parameters.positive("spacing", 0.03) * diagonal;
   const double support = parameters.positive("support", 3.0) * strokeOptions.offset;
 
@@ -542,7 +549,7 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       SegmentationMethod::Protocol::HumanBaseline, nullptr },
     { "harmonic-cuts",
       "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
-      { "weighting", "samples", "offset", "offset-length", "spacing", "weight", "support" }, SegmentationMethod::Protocol::Interactive,
+      { "weighting", "samples", "offset", "offset-length", "spacing", "weight", "support", "formulation" }, SegmentationMethod::Protocol::Interactive,
       segmentWithHarmonicCuts },
     { "convex-flooding",
       "convex patches flooded on the dual graph, small ones merged (Kouhestani 2013, section 3.1), down to k",

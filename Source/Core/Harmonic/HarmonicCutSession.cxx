@@ -24,6 +24,15 @@ HarmonicCutSession::HarmonicCutSession(std::shared_ptr<const Surface> surface)
   }
 }
 
+SoftConstraintFormulation HarmonicCutSession::automaticFormulation() const
+{
+  if (!this->Automatic)
+  {
+    this->Automatic = kerf::automaticFormulation(this->mesh());
+  }
+  return *this->Automatic;
+}
+
 void HarmonicCutSession::addHardValues(
   const std::vector<int>& vertices, const std::vector<double>& values, FieldConstraints& constraints) const
 {

@@ -8,6 +8,7 @@
 #include "Session/Surface.h"
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace kerf
@@ -73,6 +74,8 @@ public:
 
   const Surface& surface() const { return *this->SurfacePointer; }
   const TriangleMesh& mesh() const { return this->SurfacePointer->mesh(); }
+  /// kerf::automaticFormulation of the surface, computed on first use.
+  SoftConstraintFormulation automaticFormulation() const;
 
   /// Adds hard values for vertices; NaN values and vertices used by no triangle are skipped.
   void addHardValues(const std::vector<int>& vertices, const std::vector<double>& values,
@@ -115,6 +118,7 @@ public:
 private:
   std::shared_ptr<const Surface> SurfacePointer;
   HarmonicFieldSolver Solver;
+  mutable std::optional<SoftConstraintFormulation> Automatic;
 };
 
 } // namespace kerf

@@ -13,10 +13,13 @@
 namespace kerf
 {
 
-SoftConstraintFormulation automaticFormulation(long long triangleCount)
+SoftConstraintFormulation automaticFormulation(const TriangleMesh& mesh)
 {
-  return triangleCount >= PointValueTriangles ? SoftConstraintFormulation::PointValues
-                                              : SoftConstraintFormulation::LeastSquares;
+  const double diagonal = mesh.boundingBoxDiagonal();
+  const double edge = mesh.meanEdgeLength();
+  return diagonal > 0.0 && edge > 0.0 && edge <= PointValueEdgeFraction * diagonal
+    ? SoftConstraintFormulation::PointValues
+    : SoftConstraintFormulation::LeastSquares;
 }
 
 namespace

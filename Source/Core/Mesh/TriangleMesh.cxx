@@ -190,6 +190,16 @@ TriangleMesh TriangleMesh::withPoints(std::vector<Vector3> points) const
   return moved;
 }
 
+double TriangleMesh::meanEdgeLength() const
+{
+  double sum = 0.0;
+  for (const std::array<int, 2>& edge : this->EdgeVertices)
+  {
+    sum += (this->Points[edge[0]] - this->Points[edge[1]]).norm();
+  }
+  return this->EdgeVertices.empty() ? 0.0 : sum / static_cast<double>(this->EdgeVertices.size());
+}
+
 double TriangleMesh::boundingBoxDiagonal() const
 {
   Vector3 lo = Vector3::Constant(std::numeric_limits<double>::infinity());

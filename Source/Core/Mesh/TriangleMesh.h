@@ -122,6 +122,8 @@ public:
 
   /// Axis-aligned bounding box diagonal of the referenced vertices (0 for an empty mesh).
   double boundingBoxDiagonal() const;
+  /// Mean length of the edges (0 for a mesh without edges).
+  double meanEdgeLength() const;
 
 private:
   IndexRange row(const std::vector<int>& offsets, const std::vector<int>& list, int i) const

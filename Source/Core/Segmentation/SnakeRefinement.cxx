@@ -144,13 +144,7 @@ BoundarySnake::BoundarySnake(std::shared_ptr<const Surface> surface, const std::
     this->TotalCurvature[v] =
       scale * (std::abs(descriptors.minimumCurvature[v]) + std::abs(descriptors.maximumCurvature[v]));
   }
-  double sum = 0.0;
-  for (int e = 0; e < mesh.edgeCount(); ++e)
-  {
-    const auto [a, b] = mesh.edgeVertices(e);
-    sum += (mesh.point(a) - mesh.point(b)).norm();
-  }
-  this->MeanEdgeLength = mesh.edgeCount() > 0 ? sum / mesh.edgeCount() : 0.0;
+  this->MeanEdgeLength = mesh.meanEdgeLength();
 }
 
 bool BoundarySnake::isCut(int edge) const
