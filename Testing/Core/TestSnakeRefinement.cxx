@@ -312,6 +312,45 @@ TEST(SnakeRefinement, StaircaseOnAPlaneBecomesItsLine)
     EXPECT_LT(std::abs(p.position.x() - 0.4 - 0.3 * p.position.y()) / std::hypot(1.0, 0.3), 0.5 / 30) << p.position.transpose();
   }
   EXPECT_LE(farthestRing(grid, curves, ringsFrom(grid, jagged)), 2);
+
+  // A face the snake crosses takes the label holding the larger part of its area: measured here
+  // from the curve's points, the lone corner's triangle cut off by the chord between them.
+  const std::vector<int> faces = snake.faceLabels();
+  const std::vector<int>& vertices = snake.vertexLabels();
+  int checked = 0;
+  for (std::size_t i = 0; i + 1 < curves[0].points.size(); ++i)
+  {
+    const SnakePoint& p = curves[0].points[i];
+    const SnakePoint& q = curves[0].points[i + 1];
+    if (p.edge < 0 || q.edge < 0 || p.t < 1e-6 || p.t > 1.0 - 1e-6 || q.t < 1e-6 || q.t > 1.0 - 1e-6)
+    {
+      continue; // a vertex snaxel: its faces are not split by one chord
+    }
+    for (int f : grid.edgeFaces(p.edge))
+    {
+      if (f < 0 || (grid.faceEdge(f, 0) != q.edge && grid.faceEdge(f, 1) != q.edge && grid.faceEdge(f, 2) != q.edge))
+      {
+        continue;
+      }
+      const Triangle& t = grid.triangle(f);
+      int lone = -1;
+      for (int k = 0; k < 3; ++k)
+      {
+        lone = vertices[t[k]] != vertices[t[(k + 1) % 3]] && vertices[t[k]] != vertices[t[(k + 2) % 3]] ? k : lone;
+      }
+      ASSERT_GE(lone, 0);
+      const Vector3& corner = grid.point(t[lone]);
+      const double part = (p.position - corner).cross(q.position - corner).norm() /
+        (grid.point(t[1]) - grid.point(t[0])).cross(grid.point(t[2]) - grid.point(t[0])).norm();
+      if (std::abs(part - 0.5) < 1e-9)
+      {
+        continue;
+      }
+      EXPECT_EQ(faces[f], part > 0.5 ? vertices[t[lone]] : vertices[t[(lone + 1) % 3]]) << "face " << f << ", part " << part;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 30);
 }
 
 TEST(SnakeRefinement, ThreeLabelsKeepTheirMeetingPoints)
