@@ -35,13 +35,20 @@ def show(cut, view):
 
 
 def measure(cut):
-    """The faces of each label and the boundaries' count and total length."""
+    """The faces of each label, the boundaries' count and total length, and the height (y) range of
+    the face centres of label 1 and of the whole surface."""
     cut.UpdatePipeline()
-    segments = vtk_to_numpy(servermanager.Fetch(cut).GetCellData().GetArray("Segment"))
+    surface = servermanager.Fetch(cut)
+    segments = vtk_to_numpy(surface.GetCellData().GetArray("Segment"))
+    points = vtk_to_numpy(surface.GetPoints().GetData())
+    corners = vtk_to_numpy(surface.GetPolys().GetConnectivityArray()).reshape(-1, 3)
+    heights = points[corners, 1].mean(axis=1)
     boundary = servermanager.Fetch(cut, idx=1)
     lengths = vtk_to_numpy(boundary.GetCellData().GetArray("Length"))
     return {"segment_sizes": [int((segments == label).sum()) for label in sorted(set(segments.tolist()))],
-            "boundaries": int(boundary.GetNumberOfCells()), "boundary_length": float(lengths.sum())}
+            "boundaries": int(boundary.GetNumberOfCells()), "boundary_length": float(lengths.sum()),
+            "label_1_heights": [float(heights[segments == 1].min()), float(heights[segments == 1].max())],
+            "heights": [float(heights.min()), float(heights.max())]}
 
 
 def easy_mesh_cut(picture=None):

@@ -87,6 +87,12 @@ class ExamplesTest(unittest.TestCase):
         self.assertEqual(grown["segment_sizes"], [45678, 6322])
         self.assertAlmostEqual(grown["boundary_length"], 247.4, delta=0.5)
         self.assertLess(result["boundary_length"], 0.6 * grown["boundary_length"])
+        # Label 1 is the head: it holds the topmost face (an ear) and lies in the top 30% of the
+        # armadillo's height (face centres from 0.696 of it up, grown and refined).
+        for measures in (result, grown):
+            low, high = measures["heights"]
+            self.assertEqual(measures["label_1_heights"][1], high)
+            self.assertGreater(measures["label_1_heights"][0], low + 0.68 * (high - low))
 
     def load_state(self, name, mesh="camel.off"):
         """Loads states/<name>.pvsm from the test's own folder, its files found under Data;
