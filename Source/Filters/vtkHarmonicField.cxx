@@ -28,6 +28,10 @@ static_assert(static_cast<int>(kerf::LaplacianWeighting::Uniform) == vtkHarmonic
     static_cast<int>(kerf::LaplacianWeighting::SmoothConcavity) == vtkHarmonicField::SMOOTH_CONCAVITY &&
     static_cast<int>(kerf::LaplacianWeighting::IntrinsicDelaunay) == vtkHarmonicField::INTRINSIC_DELAUNAY,
   "vtkHarmonicField's Weightings follow kerf::LaplacianWeighting");
+// Its first two formulation codes are the Core enumeration's values (`kerf cut` relies on it).
+static_assert(static_cast<int>(kerf::SoftConstraintFormulation::PointValues) == vtkHarmonicField::POINT_VALUES &&
+    static_cast<int>(kerf::SoftConstraintFormulation::LeastSquares) == vtkHarmonicField::LEAST_SQUARES,
+  "vtkHarmonicField's Formulations follow kerf::SoftConstraintFormulation");
 
 struct vtkHarmonicField::Internals
 {

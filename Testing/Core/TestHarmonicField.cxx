@@ -220,6 +220,24 @@ TEST(HarmonicField, AutomaticFormulationTakesPointValuesWhereTheOffsetSpansAnEdg
   EXPECT_DOUBLE_EQ(PointValueEdgeFraction, 0.005 / 0.9);
 }
 
+TEST(HarmonicField, FormulationNamesParse)
+{
+  EXPECT_EQ(parseSoftConstraintFormulation("least-squares"), SoftConstraintFormulation::LeastSquares);
+  EXPECT_EQ(parseSoftConstraintFormulation("point-values"), SoftConstraintFormulation::PointValues);
+  for (const char* bad : { "", "auto", "Least-Squares", "point values" })
+  {
+    try
+    {
+      parseSoftConstraintFormulation(bad);
+      ADD_FAILURE() << "accepted '" << bad << "'";
+    }
+    catch (const Error& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("formulation must be least-squares or point-values"), std::string::npos);
+    }
+  }
+}
+
 TEST(HarmonicField, GridColumnsGiveLinearFieldWithCotangentWeights)
 {
   const double width = 2.0, height = 1.5;

@@ -180,7 +180,7 @@ class BenchmarkRunner(unittest.TestCase):
                                 "--parameters", "formulation=exact", "--no-pictures",
                                 "-o", os.path.join(self.folder, "bad")], capture_output=True, text=True, timeout=120)
         self.assertEqual(wrong.returncode, 1)
-        self.assertIn("formulation is least-squares or point-values", wrong.stderr)
+        self.assertIn("formulation must be least-squares or point-values", wrong.stderr)
 
     def test_errors_are_reported(self):
         for arguments, message in (

@@ -68,19 +68,12 @@ void CutPipeline::Run(vtkPolyData* mesh, vtkPolyData* stroke, const Arguments& a
   this->field->SetInputConnection(1, this->constraints->GetOutputPort());
   this->field->SetWeighting(weighting);
   const std::string formulation = args.get("formulation", "auto");
-  if (formulation == "least-squares")
+  try
   {
-    this->field->SetFormulation(vtkHarmonicField::LEAST_SQUARES);
+    this->field->SetFormulation(formulation == "auto" ? static_cast<int>(vtkHarmonicField::AUTOMATIC)
+                                                      : static_cast<int>(parseSoftConstraintFormulation(formulation)));
   }
-  else if (formulation == "point-values")
-  {
-    this->field->SetFormulation(vtkHarmonicField::POINT_VALUES);
-  }
-  else if (formulation == "auto")
-  {
-    this->field->SetFormulation(vtkHarmonicField::AUTOMATIC);
-  }
-  else
+  catch (const Error&)
   {
     throw CommandError{ "--formulation must be auto, least-squares or point-values, got '" + formulation + "'" };
   }

@@ -272,13 +272,7 @@ MethodOutput segmentWithHarmonicCuts(
   strokeOptions.offset = parameters.positive("offset", 0.005) * diagonal;
   strokeOptions.offsetLengthFraction = std::stod(parameters.text("offset-length", "0.05"));
   strokeOptions.maximumDistance = 0.05 * diagonal;
-  const std::string formulation = parameters.text("formulation", "least-squares");
-  if (formulation != "least-squares" && formulation != "point-values")
-  {
-    throw Error("the method parameter formulation is least-squares or point-values, not '" + formulation + "'");
-  }
-  fieldOptions.formulation = formulation == "point-values" ? SoftConstraintFormulation::PointValues
-                                                            : SoftConstraintFormulation::LeastSquares;
+  fieldOptions.formulation = parseSoftConstraintFormulation(parameters.text("formulation", "least-squares"));
   const double spacing = parameters.positive("spacing", 0.03) * diagonal;
   const double support = parameters.positive("support", 3.0) * strokeOptions.offset;
 

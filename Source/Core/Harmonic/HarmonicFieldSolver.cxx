@@ -22,6 +22,19 @@ SoftConstraintFormulation automaticFormulation(const TriangleMesh& mesh)
     : SoftConstraintFormulation::LeastSquares;
 }
 
+SoftConstraintFormulation parseSoftConstraintFormulation(const std::string& name)
+{
+  if (name == "least-squares")
+  {
+    return SoftConstraintFormulation::LeastSquares;
+  }
+  if (name == "point-values")
+  {
+    return SoftConstraintFormulation::PointValues;
+  }
+  throw Error("formulation must be least-squares or point-values, got '" + name + "'");
+}
+
 namespace
 {
 bool sameSoftLocations(const std::vector<SoftConstraint>& a, const std::vector<SoftConstraint>& b)

@@ -5,6 +5,7 @@
 #include "Mesh/TriangleMesh.h"
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace kerf
@@ -49,6 +50,9 @@ constexpr double PointValueEdgeFraction = 0.005 / 0.9;
 /// 0.07 stroke offsets apart on average. Least squares costs three times as much on a fresh mesh.
 /// Documentation/filters/HarmonicCuts.md, "Formulation".
 SoftConstraintFormulation automaticFormulation(const TriangleMesh& mesh);
+
+/// The formulation named "least-squares" or "point-values"; throws kerf::Error for another name.
+SoftConstraintFormulation parseSoftConstraintFormulation(const std::string& name);
 
 /// The constraints of one field: any combination of hard Dirichlet values on vertices and soft
 /// constraints inside faces with weight w.
