@@ -64,35 +64,16 @@ std::vector<SupernodalRoute> kerfRoutes()
 #ifdef KERF_HAVE_CHOLMOD
 using Complex = std::complex<double>;
 
-// A CHOLMOD view of the lower triangle `lower` (real or complex).
-template <typename Scalar>
-cholmod_sparse lowerView(const Eigen::SparseMatrix<Scalar>& lower)
-{
-  cholmod_sparse a{};
-  a.nrow = a.ncol = static_cast<std::size_t>(lower.rows());
-  a.nzmax = static_cast<std::size_t>(lower.nonZeros());
-  a.p = const_cast<int*>(lower.outerIndexPtr());
-  a.i = const_cast<int*>(lower.innerIndexPtr());
-  a.x = const_cast<Scalar*>(lower.valuePtr());
-  a.stype = -1;
-  a.itype = CHOLMOD_INT;
-  a.xtype = std::is_same<Scalar, double>::value ? CHOLMOD_REAL : CHOLMOD_COMPLEX;
-  a.dtype = CHOLMOD_DOUBLE;
-  a.sorted = 1;
-  a.packed = 1;
-  return a;
-}
-
 // CHOLMOD's supernodal analysis (AMD) of the lower triangle `lower`; freed with the object.
 struct Analysis
 {
   template <typename Scalar>
   explicit Analysis(const Eigen::SparseMatrix<Scalar>& lower)
   {
-    cholmod_start(&this->common);
+    startCholmod(&this->common);
     this->common.supernodal = CHOLMOD_SUPERNODAL;
     this->common.print = 0;
-    this->a = lowerView(lower);
+    this->a = cholmodView(lower, -1);
     this->factor = cholmod_analyze(&this->a, &this->common);
   }
   ~Analysis()
@@ -372,11 +353,11 @@ TEST(SupernodalFactorization, AnEntryOutsideTheAnalysedPatternIsRefusedByKerfsRo
     Eigen::SparseMatrix<double> B = A;
     B.coeffRef(outsideRow, outsideColumn) = -1e-3;
     B.makeCompressed();
-    cholmod_sparse b = lowerView(B);
+    cholmod_sparse b = cholmodView(B, -1);
     EXPECT_FALSE(factorizeSupernodal(&b, analysis.factor, &analysis.common, route)) << "route " << static_cast<int>(route);
     EXPECT_EQ(analysis.common.status, CHOLMOD_INVALID);
     // The same factor still takes the analysed matrix.
-    cholmod_sparse a = lowerView(A);
+    cholmod_sparse a = cholmodView(A, -1);
     EXPECT_TRUE(factorizeSupernodal(&a, analysis.factor, &analysis.common, route));
     EXPECT_EQ(analysis.factor->minor, analysis.factor->n);
   }

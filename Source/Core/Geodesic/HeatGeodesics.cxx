@@ -42,7 +42,7 @@ public:
     const SparseMatrix& lowerPattern, CholeskyOrdering ordering, int count, const std::vector<Vector3>& points)
   {
 #ifdef KERF_HAVE_CHOLMOD
-    cholmod_start(&this->Common);
+    startCholmod(&this->Common);
     if (ordering == CholeskyOrdering::Automatic)
     {
       ordering = lowerPattern.rows() >= GeometricOrderingRows ? CholeskyOrdering::Geometric : CholeskyOrdering::AMD;
@@ -52,7 +52,7 @@ public:
       : ordering == CholeskyOrdering::Geometric                          ? CHOLMOD_GIVEN
                                                                          : CHOLMOD_AMD;
     this->Common.postorder = 1;
-    cholmod_sparse view = this->view(lowerPattern);
+    cholmod_sparse view = cholmodView(lowerPattern, -1);
     std::vector<int> given;
     if (ordering == CholeskyOrdering::Geometric)
     {
@@ -99,7 +99,7 @@ public:
   void factor(int index, const SparseMatrix& lower)
   {
 #ifdef KERF_HAVE_CHOLMOD
-    cholmod_sparse view = this->view(lower);
+    cholmod_sparse view = cholmodView(lower, -1);
     cholmod_factor* factor = this->Factors[index];
     bool factored = false;
     {
@@ -152,25 +152,6 @@ public:
 
 private:
 #ifdef KERF_HAVE_CHOLMOD
-  cholmod_sparse view(const SparseMatrix& lower) const
-  {
-    cholmod_sparse s;
-    s.nrow = static_cast<size_t>(lower.rows());
-    s.ncol = static_cast<size_t>(lower.cols());
-    s.nzmax = static_cast<size_t>(lower.nonZeros());
-    s.p = const_cast<int*>(lower.outerIndexPtr());
-    s.i = const_cast<int*>(lower.innerIndexPtr());
-    s.nz = nullptr;
-    s.x = const_cast<double*>(lower.valuePtr());
-    s.z = nullptr;
-    s.stype = -1;
-    s.itype = CHOLMOD_INT;
-    s.xtype = CHOLMOD_REAL;
-    s.dtype = CHOLMOD_DOUBLE;
-    s.sorted = 1;
-    s.packed = 1;
-    return s;
-  }
   mutable cholmod_common Common;
   std::vector<cholmod_factor*> Factors;
   mutable std::vector<double> Work; // SupernodalSolve's workspace

@@ -45,25 +45,6 @@ void checkFinite(const Eigen::SparseMatrix<double>& U)
 
 namespace
 {
-// A cholmod_sparse view of a compressed column-major Eigen matrix (no copy).
-cholmod_sparse cholmodView(const Eigen::SparseMatrix<double>& A, int stype)
-{
-  cholmod_sparse s{};
-  s.nrow = static_cast<std::size_t>(A.rows());
-  s.ncol = static_cast<std::size_t>(A.cols());
-  s.nzmax = static_cast<std::size_t>(A.nonZeros());
-  s.p = const_cast<int*>(A.outerIndexPtr());
-  s.i = const_cast<int*>(A.innerIndexPtr());
-  s.x = const_cast<double*>(A.valuePtr());
-  s.stype = stype;
-  s.itype = CHOLMOD_INT;
-  s.xtype = CHOLMOD_REAL;
-  s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1;
-  s.packed = 1;
-  return s;
-}
-
 cholmod_dense cholmodView(const double* values, std::size_t n, std::size_t columns = 1)
 {
   cholmod_dense d{};
@@ -277,7 +258,7 @@ struct SparseCholesky::Implementation
 
   Implementation()
   {
-    cholmod_start(&this->common);
+    startCholmod(&this->common);
     this->common.print = 0;
     this->common.error_handler = nullptr;
   }

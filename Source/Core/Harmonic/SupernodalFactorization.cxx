@@ -2,6 +2,8 @@
 // processor's instruction-set level (Harmonic/SupernodalNumeric.cxx), or CHOLMOD's.
 #include "Harmonic/SupernodalFactorization.h"
 
+#include "HugePages.h"
+
 #include "Harmonic/SupernodalNumeric.h"
 
 #include <cstdlib>
@@ -87,6 +89,48 @@ SupernodalRoute automaticSupernodalRoute()
 }
 
 #ifdef KERF_HAVE_CHOLMOD
+namespace
+{
+// SuiteSparse's allocator while it is the C library's: large blocks aligned to 2 MiB and advised
+// for huge pages (HugePages.h), all freed by free().
+void* hugePageMalloc(std::size_t bytes)
+{
+  if (bytes < HugePageMinimumBytes)
+  {
+    return std::malloc(bytes);
+  }
+  try
+  {
+    return detail::allocateHugePageBytes(bytes);
+  }
+  catch (const std::bad_alloc&)
+  {
+    return nullptr;
+  }
+}
+} // namespace
+
+int startCholmod(cholmod_common* common)
+{
+  static const bool installed = [] {
+#if SUITESPARSE_MAIN_VERSION >= 7
+    if (SuiteSparse_config_malloc_func_get() == &std::malloc)
+    {
+      SuiteSparse_config_malloc_func_set(&hugePageMalloc);
+    }
+    return SuiteSparse_config_malloc_func_get() == &hugePageMalloc;
+#else
+    if (SuiteSparse_config.malloc_func == &std::malloc)
+    {
+      SuiteSparse_config.malloc_func = &hugePageMalloc;
+    }
+    return SuiteSparse_config.malloc_func == &hugePageMalloc;
+#endif
+  }();
+  (void)installed;
+  return cholmod_start(common);
+}
+
 bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common, SupernodalRoute route)
 {
   if (route == SupernodalRoute::Automatic)

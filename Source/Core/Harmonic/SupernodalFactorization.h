@@ -4,6 +4,11 @@
 
 #ifdef KERF_HAVE_CHOLMOD
 #include <cholmod.h>
+
+#include <Eigen/SparseCore>
+
+#include <complex>
+#include <type_traits>
 #endif
 
 namespace kerf
@@ -27,6 +32,37 @@ bool supernodalRouteAvailable(SupernodalRoute route);
 SupernodalRoute automaticSupernodalRoute();
 
 #ifdef KERF_HAVE_CHOLMOD
+/// A cholmod_sparse view (no copy) of a compressed column-major Eigen matrix of doubles or complex
+/// doubles: stype -1 reads its lower triangle, 0 the whole matrix.
+template <typename Scalar>
+cholmod_sparse cholmodView(const Eigen::SparseMatrix<Scalar, Eigen::ColMajor, int>& A, int stype)
+{
+  static_assert(std::is_same<Scalar, double>::value || std::is_same<Scalar, std::complex<double>>::value,
+    "CHOLMOD views hold doubles or complex doubles");
+  cholmod_sparse s{};
+  s.nrow = static_cast<std::size_t>(A.rows());
+  s.ncol = static_cast<std::size_t>(A.cols());
+  s.nzmax = static_cast<std::size_t>(A.nonZeros());
+  s.p = const_cast<int*>(A.outerIndexPtr());
+  s.i = const_cast<int*>(A.innerIndexPtr());
+  s.x = const_cast<Scalar*>(A.valuePtr());
+  s.stype = stype;
+  s.itype = CHOLMOD_INT;
+  s.xtype = std::is_same<Scalar, double>::value ? CHOLMOD_REAL : CHOLMOD_COMPLEX;
+  s.dtype = CHOLMOD_DOUBLE;
+  s.sorted = 1;
+  s.packed = 1;
+  return s;
+}
+
+/// cholmod_start(common), the way every Kerf CHOLMOD workspace starts. The first call also gives
+/// SuiteSparse an allocator whose blocks of HugePageMinimumBytes and more (factor values, the
+/// analysis's workspace) are aligned to 2 MiB and advised for transparent huge pages: fresh memory
+/// then faults in 2 MiB at a time, not 4 KiB (HugePages.h). It is installed only while
+/// SuiteSparse's allocator is still the C library's malloc, and its blocks are freed by free(), so
+/// other CHOLMOD users in the process are unaffected.
+int startCholmod(cholmod_common* common);
+
 /// Drop-in for cholmod_factorize(A, L, common): factors the real symmetric or complex Hermitian A
 /// (stype -1, lower triangle read; CHOLMOD_REAL or CHOLMOD_COMPLEX) into L, whose symbolic
 /// analysis (cholmod_analyze or cholmod_analyze_p) it must be. Kerf's route runs when L is

@@ -5,6 +5,7 @@
 // instantiations for one level never stand in for another's; Harmonic/SupernodalFactorization.cxx
 // calls the level the processor has.
 #include "Harmonic/SupernodalNumeric.h"
+#include "HugePages.h"
 
 #include <Eigen/Dense>
 
@@ -53,8 +54,8 @@ int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values
   {
     cp[j + 1] += cp[j];
   }
-  std::vector<int> ci(static_cast<std::size_t>(cp[n]));
-  std::vector<Scalar> cx(static_cast<std::size_t>(cp[n]));
+  kerf::HugePageVector<int> ci(static_cast<std::size_t>(cp[n]));
+  kerf::HugePageVector<Scalar> cx(static_cast<std::size_t>(cp[n]));
   {
     std::vector<int> next(cp.begin(), cp.end() - 1);
     for (int j = 0; j < n; ++j)
@@ -84,7 +85,7 @@ int factorize(const kerf::SupernodalProblem& p, const Scalar* ax, Scalar* values
   std::vector<int> map(static_cast<std::size_t>(n), -1);
   std::vector<int> head(static_cast<std::size_t>(supernodes), -1), next(static_cast<std::size_t>(supernodes), -1);
   std::vector<int> position(static_cast<std::size_t>(supernodes), 0);
-  std::vector<Scalar> update;
+  kerf::HugePageVector<Scalar> update;
   std::vector<Scalar, Eigen::aligned_allocator<Scalar>> aligned;
   for (int s = 0; s < supernodes; ++s)
   {

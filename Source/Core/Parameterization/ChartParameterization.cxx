@@ -213,7 +213,7 @@ class HermitianSolves
 public:
   HermitianSolves()
   {
-    cholmod_start(&this->Common);
+    startCholmod(&this->Common);
     this->Common.print = 0; // a failure is reported by the exception below, never printed
     // AMD alone: METIS' ordering costs more than its fill saves on these charts (the figures are
     // in Documentation/filters/ChartParameterization.md).
@@ -230,18 +230,7 @@ public:
 
   Eigen::VectorXcd solve(const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs)
   {
-    cholmod_sparse a{};
-    a.nrow = a.ncol = static_cast<std::size_t>(lower.rows());
-    a.nzmax = static_cast<std::size_t>(lower.nonZeros());
-    a.p = const_cast<int*>(lower.outerIndexPtr());
-    a.i = const_cast<int*>(lower.innerIndexPtr());
-    a.x = const_cast<Complex*>(lower.valuePtr());
-    a.stype = -1; // the lower triangle
-    a.itype = CHOLMOD_INT;
-    a.xtype = CHOLMOD_COMPLEX;
-    a.dtype = CHOLMOD_DOUBLE;
-    a.sorted = 1;
-    a.packed = 1;
+    cholmod_sparse a = cholmodView(lower, -1); // the lower triangle
     const SerialOpenMP serial;
     cholmod_factor* factor = cholmod_analyze(&a, &this->Common);
     if (factor == nullptr)

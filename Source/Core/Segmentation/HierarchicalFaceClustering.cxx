@@ -2,6 +2,7 @@
 #include "Segmentation/HierarchicalFaceClustering.h"
 
 #include "Error.h"
+#include "HugePages.h"
 #include "Session/Surface.h"
 
 #include <Eigen/Eigenvalues>
@@ -317,8 +318,8 @@ private:
     this->place(i, entry);
   }
 
-  std::vector<Entry> Entries;
-  std::vector<int> Position; // index in Entries of each pair, -1 when absent
+  HugePageVector<Entry> Entries;
+  HugePageVector<int> Position; // index in Entries of each pair, -1 when absent
 };
 
 // Union-find labels after the first `count` merges, numbered by first face.
@@ -380,7 +381,8 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   const double scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   const double lengthScale = scale;
 
-  std::vector<ClusterState> clusters(n);
+  // The work buffers take huge pages (HugePages.h): at a million faces they fault in about 500 MB.
+  HugePageVector<ClusterState> clusters(n);
   for (int f = 0; f < n; ++f)
   {
     ClusterState& s = clusters[f];
@@ -399,7 +401,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     s.area = w;
     s.perimeter = graph.perimeter(f) * lengthScale;
   }
-  std::vector<ClusterSummary> summaries(clusters.begin(), clusters.end());
+  HugePageVector<ClusterSummary> summaries(clusters.begin(), clusters.end());
 
   // One record per pair of adjacent clusters, made from a dual edge; when a cluster is absorbed its
   // records pass to the survivor, or fold into the survivor's record with the same neighbour.
@@ -411,7 +413,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     double smallestEigenvalue; // of the joined Z, once the cost is exact
     bool exact;
   };
-  std::vector<ClusterPair> pairs;
+  HugePageVector<ClusterPair> pairs;
   pairs.reserve(static_cast<std::size_t>(graph.edgeCount()));
   std::vector<std::vector<int>> adjacency(n); // the pairs of each cluster
   const auto other = [&pairs](int pair, int slot) { return pairs[pair].x == slot ? pairs[pair].y : pairs[pair].x; };
