@@ -41,10 +41,11 @@ namespace detail
 {
 void* allocateHugePageBytes(std::size_t bytes)
 {
-  if (bytes < HugePageMinimumBytes)
-  {
-    return ::operator new(bytes);
-  }
+  return bytes < HugePageMinimumBytes ? ::operator new(bytes) : allocateAlignedHugePages(bytes);
+}
+
+void* allocateAlignedHugePages(std::size_t bytes)
+{
   // aligned_alloc wants a multiple of the alignment; the rounding is address space, never touched.
   const std::size_t rounded = (bytes + HugePageBytes - 1) & ~(HugePageBytes - 1);
   if (rounded < bytes)

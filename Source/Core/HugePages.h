@@ -21,8 +21,11 @@ void adviseHugePages(void* data, std::size_t bytes) noexcept;
 
 namespace detail
 {
-/// Blocks of at least HugePageMinimumBytes: 2 MiB-aligned (aligned_alloc) and advised; smaller
-/// ones: operator new. Freed by the same rule, from the size the block was allocated with.
+/// A block from aligned_alloc, aligned to 2 MiB, its size rounded up to whole 2 MiB pages, and
+/// advised (adviseHugePages); free() releases it. Throws std::bad_alloc.
+void* allocateAlignedHugePages(std::size_t bytes);
+/// Blocks of at least HugePageMinimumBytes: allocateAlignedHugePages; smaller ones: operator new.
+/// Freed by the same rule, from the size the block was allocated with.
 void* allocateHugePageBytes(std::size_t bytes);
 void deallocateHugePageBytes(void* p, std::size_t bytes) noexcept;
 }
@@ -32,6 +35,7 @@ void deallocateHugePageBytes(void* p, std::size_t bytes) noexcept;
 template <class T>
 struct HugePageAllocator
 {
+  static_assert(alignof(T) <= __STDCPP_DEFAULT_NEW_ALIGNMENT__, "small blocks come from operator new");
   using value_type = T;
 
   HugePageAllocator() = default;

@@ -9,6 +9,7 @@
 
 #include <Eigen/SparseCore>
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
@@ -98,7 +99,7 @@ TEST(HugePages, LargeBlocksAreAlignedAdvisedAndHoldTheirValues)
   allocator.deallocate(block, n);
 }
 
-TEST(HugePages, SmallBlocksComeFromOperatorNew)
+TEST(HugePages, SmallBlocksAreUsableAndOversizedRequestsThrow)
 {
   HugePageAllocator<int> allocator;
   const std::size_t n = HugePageMinimumBytes / sizeof(int) - 1;

@@ -92,7 +92,7 @@ SupernodalRoute automaticSupernodalRoute()
 namespace
 {
 // SuiteSparse's allocator while it is the C library's: large blocks aligned to 2 MiB and advised
-// for huge pages (HugePages.h), all freed by free().
+// for huge pages (HugePages.h); every block is freed by free().
 void* hugePageMalloc(std::size_t bytes)
 {
   if (bytes < HugePageMinimumBytes)
@@ -101,7 +101,7 @@ void* hugePageMalloc(std::size_t bytes)
   }
   try
   {
-    return detail::allocateHugePageBytes(bytes);
+    return detail::allocateAlignedHugePages(bytes);
   }
   catch (const std::bad_alloc&)
   {
@@ -112,22 +112,22 @@ void* hugePageMalloc(std::size_t bytes)
 
 int startCholmod(cholmod_common* common)
 {
+  // Once per process, thread-safe among Kerf's callers (a function-local static).
   static const bool installed = [] {
 #if SUITESPARSE_MAIN_VERSION >= 7
     if (SuiteSparse_config_malloc_func_get() == &std::malloc)
     {
       SuiteSparse_config_malloc_func_set(&hugePageMalloc);
     }
-    return SuiteSparse_config_malloc_func_get() == &hugePageMalloc;
 #else
     if (SuiteSparse_config.malloc_func == &std::malloc)
     {
       SuiteSparse_config.malloc_func = &hugePageMalloc;
     }
-    return SuiteSparse_config.malloc_func == &hugePageMalloc;
 #endif
+    return true;
   }();
-  (void)installed;
+  static_cast<void>(installed);
   return cholmod_start(common);
 }
 

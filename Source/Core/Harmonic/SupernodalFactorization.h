@@ -59,8 +59,10 @@ cholmod_sparse cholmodView(const Eigen::SparseMatrix<Scalar, Eigen::ColMajor, in
 /// SuiteSparse an allocator whose blocks of HugePageMinimumBytes and more (factor values, the
 /// analysis's workspace) are aligned to 2 MiB and advised for transparent huge pages: fresh memory
 /// then faults in 2 MiB at a time, not 4 KiB (HugePages.h). It is installed only while
-/// SuiteSparse's allocator is still the C library's malloc, and its blocks are freed by free(), so
-/// other CHOLMOD users in the process are unaffected.
+/// SuiteSparse's allocator is still the C library's malloc, and its blocks are freed by free().
+/// SuiteSparse's allocator is process-wide: other SuiteSparse users in the process get the same
+/// blocks (correct, and with the same speed trade-off), the install is not synchronised with
+/// threads already inside SuiteSparse, and KerfCore must stay loaded while SuiteSparse allocates.
 int startCholmod(cholmod_common* common);
 
 /// Drop-in for cholmod_factorize(A, L, common): factors the real symmetric or complex Hermitian A
