@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -268,4 +269,101 @@ TEST(RoiScissor, ClickDistancesAreKeptPerClick)
   const RoiScissorResult cached = roiScissor(*surface, { top }, {}, RoiScissorOptions(), &distances);
   EXPECT_EQ(distances.computations(), 2);
   EXPECT_EQ(cached.faceLabels, roiScissor(*surface, { top }).faceLabels);
+}
+
+namespace
+{
+// The unit icosphere of 10,242 vertices, shared by the disc tests (its heat set-up is cached on it).
+std::shared_ptr<Surface> unitSphere()
+{
+  static const std::shared_ptr<Surface> surface = std::make_shared<Surface>(makeIcosphere(1.0, 5));
+  return surface;
+}
+
+double discArea(const TriangleMesh& mesh, const std::vector<char>& faces)
+{
+  double area = 0.0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    area += faces[f] ? faceArea(mesh, f) : 0.0;
+  }
+  return area;
+}
+
+double greatCircle(const Vector3& a, const Vector3& b)
+{
+  return std::atan2(a.normalized().cross(b.normalized()).norm(), a.normalized().dot(b.normalized()));
+}
+} // namespace
+
+// Spherical caps: a vertex is inside when its great-circle distance is below r (away from the
+// rim), and the faces' area is the cap's, 2 pi (1 - cos r); a union of two caps apart adds their
+// areas, a concentric difference leaves the ring 2 pi (cos r2 - cos r1).
+TEST(GeodesicDiscs, SphericalCapsMatchTheirAnalyticArea)
+{
+  const std::shared_ptr<Surface> surface = unitSphere();
+  const TriangleMesh& mesh = surface->mesh();
+  const Vector3 north(0.0, 0.0, 1.0), south(0.0, 0.0, -1.0);
+  const double r = 0.9, r2 = 0.5, pi = std::acos(-1.0);
+  const GeodesicDiscs cap = geodesicDiscs(*surface, { { north, r } }, {}, 1e-3);
+  int misplaced = 0, rim = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const double d = greatCircle(mesh.point(v), north);
+    EXPECT_NEAR(cap.nearestAdded[v], d, 0.01 * d + 0.005); // 0.7% at the antipode
+    if (std::abs(d - r) < 0.01)
+    {
+      ++rim;
+      continue;
+    }
+    misplaced += cap.vertices[v] != (d < r ? 1 : 0);
+  }
+  EXPECT_EQ(misplaced, 0);
+  std::cout << "cap of radius 0.9: area " << discArea(mesh, cap.faces) << " against " << 2 * pi * (1 - std::cos(r))
+            << "; " << rim << " vertices within 0.01 of the rim not checked\n";
+  EXPECT_NEAR(discArea(mesh, cap.faces) / (2 * pi * (1 - std::cos(r))), 1.0, 0.01);
+  EXPECT_NEAR(cap.area, discArea(mesh, cap.faces), 1e-12);
+  EXPECT_NEAR(cap.surfaceArea, 4 * pi, 0.01 * 4 * pi);
+
+  const GeodesicDiscs two = geodesicDiscs(*surface, { { north, r }, { south, r2 } }, {}, 1e-3);
+  EXPECT_NEAR(discArea(mesh, two.faces) / (2 * pi * (2 - std::cos(r) - std::cos(r2))), 1.0, 0.01);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    EXPECT_EQ(two.nearestAdded[v], std::min((*two.distances[0])[v], (*two.distances[1])[v]));
+    EXPECT_GE(two.vertices[v], cap.vertices[v]);
+  }
+  const GeodesicDiscs ring = geodesicDiscs(*surface, { { north, r } }, { { north, r2 } }, 1e-3);
+  EXPECT_NEAR(discArea(mesh, ring.faces) / (2 * pi * (std::cos(r2) - std::cos(r))), 1.0, 0.02);
+  EXPECT_EQ(ring.addedCount, 1u);
+  ASSERT_EQ(ring.clicks.size(), 2u);
+  // A subtracting click does not count as the nearest click: one at the south pole, whose disc
+  // lies outside the cap, leaves the cap and its distances as they were.
+  const GeodesicDiscs apart = geodesicDiscs(*surface, { { north, r } }, { { south, r2 } }, 1e-3);
+  EXPECT_EQ(apart.nearestAdded, cap.nearestAdded);
+  EXPECT_EQ(apart.vertices, cap.vertices);
+  // Half the sphere is nearer the south click: counting it would change those distances.
+  int nearerSouth = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    nearerSouth += (*apart.distances[1])[v] < apart.nearestAdded[v] ? 1 : 0;
+  }
+  EXPECT_GT(nearerSouth, mesh.vertexCount() / 3);
+}
+
+TEST(GeodesicDiscs, RefusesBadDiscs)
+{
+  const std::shared_ptr<Surface> surface = unitSphere();
+  const Vector3 north(0.0, 0.0, 1.0);
+  EXPECT_THROW(geodesicDiscs(*surface, {}, {}, 1e-3), Error);
+  EXPECT_THROW(geodesicDiscs(*surface, { { Vector3(0.0, 0.0, 1.5), 0.5 } }, {}, 1e-3), Error); // off the surface
+  EXPECT_THROW(geodesicDiscs(*surface, { { north, 0.0 } }, {}, 1e-3), Error);
+  EXPECT_THROW(geodesicDiscs(*surface, { { north, std::nan("") } }, {}, 1e-3), Error);
+  EXPECT_THROW(geodesicDiscs(*surface, { { north, 4.0 } }, {}, 1e-3), Error); // larger than the sphere (pi)
+  // A click between vertices with a radius below the edge length holds no vertex.
+  const TriangleMesh& mesh = surface->mesh();
+  const Triangle& t = mesh.triangle(0);
+  const Vector3 centre = ((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0).normalized();
+  EXPECT_THROW(geodesicDiscs(*surface, { { centre, 1e-3 } }, {}, 1e-3), Error);
+  // Every added click inside a subtracted disc.
+  EXPECT_THROW(geodesicDiscs(*surface, { { north, 0.3 } }, { { north, 0.6 } }, 1e-3), Error);
 }

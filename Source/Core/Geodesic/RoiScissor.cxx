@@ -164,87 +164,127 @@ std::shared_ptr<const std::vector<double>> ClickDistances::from(
   return distance;
 }
 
-GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options, ClickDistances* cache)
+GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat, ClickDistances* cache)
 {
   const TriangleMesh& mesh = surface.mesh();
   if (added.empty())
   {
-    throw Error("ROI Scissor needs at least one click that adds a region");
+    throw Error("geodesic discs need at least one click that adds a disc");
   }
-  if (!(options.innerFraction > 0.0 && options.innerFraction < 1.0))
-  {
-    throw Error("ROI Scissor's inner fraction must be in (0, 1)");
-  }
-  GeodesicDiscRegion region;
-  const int n = mesh.vertexCount();
-
-  // Section 4.1: the candidate region from geodesic discs.
-  std::vector<std::shared_ptr<const std::vector<double>>> distances;
-  std::vector<double> radii;
+  GeodesicDiscs discs;
+  discs.addedCount = added.size();
   int component = -1;
   for (const std::vector<RoiClick>* clicks : { &added, &subtracted })
   {
     for (const RoiClick& click : *clicks)
     {
       checkRadius(click.radius);
-      const SurfacePoint point = projectClick(surface, click.position, options.clickTolerance);
+      const SurfacePoint point = projectClick(surface, click.position, clickTolerance);
       const int c = mesh.faceComponent(point.face);
       if (component >= 0 && c != component)
       {
-        throw Error("ROI Scissor's clicks lie on different connected components of the mesh");
+        throw Error("the clicks lie on different connected components of the mesh");
       }
       component = c;
-      region.clicks.push_back(point);
-      radii.push_back(click.radius);
+      discs.clicks.push_back(point);
+      discs.radii.push_back(click.radius);
       if (cache)
       {
-        distances.push_back(cache->from(point, options.paths.heat));
+        discs.distances.push_back(cache->from(point, heat));
       }
       else
       {
         GeodesicSource source;
         source.points = { point };
-        distances.push_back(std::make_shared<const std::vector<double>>(
-          HeatGeodesics::of(surface, options.paths.heat).compute(source).distance));
+        discs.distances.push_back(
+          std::make_shared<const std::vector<double>>(HeatGeodesics::of(surface, heat).compute(source).distance));
       }
     }
   }
-  // Inside the union of the added discs and outside every subtracted one, at distances d.
-  const std::size_t addedCount = added.size();
+  // Zhuang et al. 2014, section 4.1: inside the union of the added discs and outside every
+  // subtracted one, at distances d.
   const auto inside = [&](const std::function<double(std::size_t)>& d) {
     bool in = false;
-    for (std::size_t i = 0; i < addedCount; ++i)
+    for (std::size_t i = 0; i < discs.addedCount; ++i)
     {
-      in = in || d(i) < radii[i];
+      in = in || d(i) < discs.radii[i];
     }
-    for (std::size_t j = addedCount; j < radii.size(); ++j)
+    for (std::size_t j = discs.addedCount; j < discs.radii.size(); ++j)
     {
-      in = in && !(d(j) < radii[j]);
+      in = in && !(d(j) < discs.radii[j]);
     }
     return in;
   };
-  region.candidate.assign(n, 0);
+  const int n = mesh.vertexCount();
+  discs.vertices.assign(n, 0);
+  discs.nearestAdded.assign(n, std::numeric_limits<double>::infinity());
+  bool any = false;
+  for (int v = 0; v < n; ++v)
+  {
+    discs.vertices[v] = inside([&](std::size_t i) { return (*discs.distances[i])[v]; }) ? 1 : 0;
+    any = any || discs.vertices[v];
+    for (std::size_t i = 0; i < discs.addedCount; ++i)
+    {
+      discs.nearestAdded[v] = std::min(discs.nearestAdded[v], (*discs.distances[i])[v]);
+    }
+  }
+  if (!any)
+  {
+    throw Error("the discs hold no vertex: the radius is smaller than the distance from the click to its nearest "
+                "vertex, or every added click lies inside a subtracted disc");
+  }
+  bool border = false;
+  for (int e = 0; e < mesh.edgeCount() && !border; ++e)
+  {
+    const std::array<int, 2>& ev = mesh.edgeVertices(e);
+    border = discs.vertices[ev[0]] != discs.vertices[ev[1]];
+  }
+  if (!border)
+  {
+    throw Error("the clicks' discs cover their whole component: the radius is larger than the mesh");
+  }
+  discs.faces.assign(mesh.faceCount(), 0);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    discs.faces[f] = inside([&](std::size_t i) {
+      const std::vector<double>& d = *discs.distances[i];
+      return (d[t[0]] + d[t[1]] + d[t[2]]) / 3.0;
+    }) ? 1 : 0;
+    const double area =
+      0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
+    discs.surfaceArea += area;
+    discs.area += discs.faces[f] ? area : 0.0;
+  }
+  return discs;
+}
+
+GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options, ClickDistances* cache)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  if (!(options.innerFraction > 0.0 && options.innerFraction < 1.0))
+  {
+    throw Error("ROI Scissor's inner fraction must be in (0, 1)");
+  }
+  const GeodesicDiscs discs = geodesicDiscs(surface, added, subtracted, options.clickTolerance, options.paths.heat, cache);
+  GeodesicDiscRegion region;
+  region.clicks = discs.clicks;
+  region.candidate = discs.vertices;
+  region.candidateFaces = discs.faces;
+  const int n = mesh.vertexCount();
+  const std::size_t addedCount = discs.addedCount;
   std::vector<char> one(n, 0), zero(n, 0);
   for (int v = 0; v < n; ++v)
   {
-    region.candidate[v] = inside([&](std::size_t i) { return (*distances[i])[v]; }) ? 1 : 0;
     for (std::size_t i = 0; i < addedCount; ++i)
     {
-      if ((*distances[i])[v] < options.innerFraction * radii[i])
+      if ((*discs.distances[i])[v] < options.innerFraction * discs.radii[i])
       {
         one[v] = 1;
       }
     }
-  }
-  region.candidateFaces.assign(mesh.faceCount(), 0);
-  for (int f = 0; f < mesh.faceCount(); ++f)
-  {
-    const Triangle& t = mesh.triangle(f);
-    region.candidateFaces[f] = inside([&](std::size_t i) {
-      const std::vector<double>& d = *distances[i];
-      return (d[t[0]] + d[t[1]] + d[t[2]]) / 3.0;
-    }) ? 1 : 0;
   }
   for (std::size_t i = 0; i < addedCount; ++i)
   {
@@ -280,10 +320,6 @@ GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<
     {
       region.zeroVertices.push_back(v);
     }
-  }
-  if (region.zeroVertices.empty())
-  {
-    throw Error("the clicks' discs cover their whole component: the radius is larger than the mesh");
   }
   if (region.oneVertices.empty())
   {

@@ -70,6 +70,33 @@ private:
   int Computations = 0;
 };
 
+/// The union of the geodesic discs of adding clicks, less the discs of subtracting clicks (ROI
+/// Scissor, section 4.1): what the geodesic disc filter shows and ROI Scissor's candidate region.
+struct GeodesicDiscs
+{
+  std::vector<SurfacePoint> clicks; ///< the clicks on the surface (added, then subtracted)
+  std::vector<double> radii;        ///< their radii
+  /// Per click, the geodesic distance from it per vertex (+infinity off its component).
+  std::vector<std::shared_ptr<const std::vector<double>>> distances;
+  std::vector<char> vertices;       ///< per vertex: inside an added disc and outside every subtracted one
+  std::vector<char> faces;          ///< per face: the same rule at its centroid (distances interpolated)
+  std::vector<double> nearestAdded; ///< per vertex: the distance to the nearest added click
+  std::size_t addedCount = 0;       ///< the first addedCount clicks add their discs
+  double area = 0.0;                ///< the area of the faces inside
+  double surfaceArea = 0.0;         ///< the area of the whole surface
+};
+
+/// The discs C(r) = {i | d_g(i, s) < r} (ROI Scissor, section 4.1) of `added` united, minus those
+/// of `subtracted`, with distances by the heat method (`heat`) from each click's surface point,
+/// through `distances` when given. Throws kerf::Error for no added click, a click farther than
+/// clickTolerance times the bounding-box diagonal from the surface, a radius that is not
+/// positive and finite, clicks on different connected components, a region holding no vertex
+/// (radius below the distance to the nearest vertex, or every added click inside a subtracted
+/// disc) and a region that covers its whole component (radius larger than the mesh).
+GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>& added,
+  const std::vector<RoiClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat = HeatGeodesicOptions(),
+  ClickDistances* distances = nullptr);
+
 /// ROI Scissor's candidate region (section 4.1) and its boundary constraints.
 struct GeodesicDiscRegion
 {
@@ -80,15 +107,12 @@ struct GeodesicDiscRegion
   std::vector<int> zeroVertices;     ///< constraints 0 (ends of edges crossing the region's border)
 };
 
-/// The union of the geodesic discs C(r) = {i | d_g(i, s) < r} of `added` minus those of
-/// `subtracted` (distances by the heat method from each click's surface point, through
-/// `distances` when given), and the constraints of section 4.1: vertices within innerFraction r
-/// of an added click get 1 (at least the corner nearest to it), both ends of every edge crossing
-/// the region's border get 0. Throws kerf::Error for no added click, a click farther than
-/// clickTolerance from the surface, a radius that is not positive and finite, clicks on
-/// different connected components, a region that covers its whole component (radius larger
-/// than the mesh), added clicks all inside subtracted discs, and inner vertices that meet the
-/// border (radius too small).
+/// The candidate region of geodesicDiscs (options.clickTolerance, options.paths.heat) and the
+/// constraints of section 4.1: vertices within innerFraction r of an added click get 1 (at least
+/// the corner nearest to it), both ends of every edge crossing the region's border get 0. Throws
+/// kerf::Error for geodesicDiscs' errors, an inner fraction outside (0, 1), inner vertices that
+/// meet the border (radius too small) and no inner vertex inside the region (every added click
+/// inside a subtracted disc).
 GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
   const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options = RoiScissorOptions(),
   ClickDistances* distances = nullptr);
