@@ -5,6 +5,7 @@
 #include "Geodesic/SurfaceLocation.h"
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
+#include "vtkDiscClickAlgorithm.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -186,6 +187,55 @@ double ProjectionLimit(double fraction, const Surface& surface, const char* para
 {
   const double limit = RelativeDistance(fraction, surface.mesh().boundingBoxDiagonal(), parameter);
   return limit > 0.0 ? limit : std::numeric_limits<double>::infinity();
+}
+
+DiscClicks ReadDiscClicks(const Surface& surface, vtkDiscClickAlgorithm* algorithm, vtkPointSet* input)
+{
+  const double diagonal = surface.mesh().boundingBoxDiagonal();
+  const double absoluteRadius = algorithm->GetAbsoluteRadius();
+  const double radius = Finite(absoluteRadius, "AbsoluteRadius") > 0.0
+    ? absoluteRadius
+    : RelativeDistance(algorithm->GetRadius(), diagonal, "Radius");
+  DiscClicks clicks;
+  const double maximumProjection = algorithm->GetMaximumProjectionDistance();
+  clicks.tolerance = Finite(maximumProjection, "MaximumProjectionDistance") > 0.0
+    ? maximumProjection
+    : std::numeric_limits<double>::infinity();
+  if (!input)
+  {
+    const double* p = algorithm->GetClickPoint();
+    const SurfacePoint click = PanelPointOnSurface(surface, Vector3(p[0], p[1], p[2]), "the click point");
+    clicks.added.push_back({ surfacePosition(surface.mesh(), click), radius });
+    return clicks;
+  }
+  const std::vector<Vector3> points = ReadPoints(input);
+  // Optional per-click arrays: read when the input has them.
+  const auto optional = [&](const char* name) {
+    return name && *name && input->GetPointData()->GetAbstractArray(name)
+      ? ReadNamedPointArray(input, name, "the clicks")
+      : std::vector<double>();
+  };
+  const std::vector<double> radii = optional(algorithm->GetClickRadiusArrayName());
+  const std::vector<double> subtract = optional(algorithm->GetClickSubtractArrayName());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    if (!radii.empty() && !(std::isfinite(radii[i]) && radii[i] > 0.0))
+    {
+      throw Error("click " + std::to_string(i) + " has the radius " + std::to_string(radii[i]) +
+        "; radii are positive fractions of the diagonal");
+    }
+    const double r = radii.empty() ? radius : radii[i] * diagonal;
+    (!subtract.empty() && subtract[i] != 0.0 ? clicks.subtracted : clicks.added).push_back({ points[i], r });
+  }
+  if (clicks.added.empty() && !clicks.subtracted.empty())
+  {
+    throw Error("every click subtracts its disc: at least one click must add one");
+  }
+  if (clicks.added.empty())
+  {
+    throw Error("the click input holds no point");
+  }
+  return clicks;
 }
 
 SurfacePoint PanelPointOnSurface(const Surface& surface, const Vector3& point, const std::string& what)

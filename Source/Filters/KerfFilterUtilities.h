@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Harmonic/HarmonicCutSession.h"
+#include "Geodesic/RoiScissor.h"
 #include "Geodesic/SurfacePoint.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "KerfSurfaceInput.h"
@@ -18,6 +19,7 @@
 class vtkAbstractArray;
 class vtkAlgorithm;
 class vtkDataArray;
+class vtkDiscClickAlgorithm;
 class vtkFieldData;
 class vtkInformation;
 class vtkInformationVector;
@@ -68,6 +70,25 @@ double ProjectionLimit(double fraction, const Surface& surface, const char* para
 /// bounds, not on the surface (pressing P puts them there). Throws naming `what` for NaN,
 /// infinite or huge coordinates.
 SurfacePoint PanelPointOnSurface(const Surface& surface, const Vector3& point, const std::string& what);
+
+/// The clicks of a filter with geodesic discs (vtkGeodesicDisc, vtkROIScissor) and how far from
+/// the surface they may be.
+struct DiscClicks
+{
+  std::vector<RoiClick> added;
+  std::vector<RoiClick> subtracted;
+  /// The farthest a click of the click input may be from the surface, as a fraction of the
+  /// bounding-box diagonal (infinity: no limit).
+  double tolerance = 0.0;
+};
+
+/// The clicks of a filter with geodesic discs (its properties, see vtkDiscClickAlgorithm): each
+/// point of `clickInput` (input 1), with its own radius (the point array ClickRadiusArrayName, a
+/// fraction of the diagonal) when the input has that array, and subtracting its disc where the
+/// point array ClickSubtractArrayName is non-zero; without a click input, ClickPoint moved to the
+/// nearest surface point. Throws naming the parameter or the click for NaN parameters, a radius
+/// that is not positive, no click and only subtracting clicks.
+DiscClicks ReadDiscClicks(const Surface& surface, vtkDiscClickAlgorithm* algorithm, vtkPointSet* clickInput);
 
 /// The points of a point set (input 1 of a filter) on the surface, each projected and refused
 /// beyond `maximumDistance` (projectOntoSurface), named "<noun> <i>" in errors.

@@ -3,14 +3,10 @@
  * @brief ROI Scissor: the feature region around a click, bounded where the surface is most
  * concave (ROI Scissor, sections 4.1-4.3).
  *
- * Input 0: the surface. Input 1 (optional): clicks, a vtkPointSet whose points each add a
- * geodesic disc, each moved to the nearest surface point and refused beyond
- * MaximumProjectionDistance; without it the click is ClickPoint, moved to the nearest surface
- * point whatever its distance (ParaView's handle starts at the input's bounds). A click's point
- * data may give its own radius (the array ClickRadiusArrayName, default "Radius", a fraction of
- * the diagonal like Radius) and make it subtract its disc instead of adding it (the array
- * ClickSubtractArrayName, default "Subtract": non-zero subtracts; ROI Scissor, section 5.2);
- * without these arrays every click adds a disc of radius Radius.
+ * Input 0: the surface. Input 1 (optional): the clicks, each adding a geodesic disc or, with a
+ * non-zero value in the point array ClickSubtractArrayName, subtracting it (ROI Scissor, section
+ * 5.2), each with the radius Radius or its own; without input 1, ClickPoint. The clicks' parameters and the rules that place
+ * them on the surface are vtkDiscClickAlgorithm's.
  *
  * The candidate region is the union of the added clicks' geodesic discs minus the subtracted ones'
  * (of radius Radius unless the clicks give theirs) around the clicks
@@ -31,46 +27,24 @@
  * cell arrays Length (under the metric), Closed and SelfCrossings.
  *
  * Errors (vtkErrorMacro, return 0): surfaces refused by validation, a click of input 1 farther
- * from the surface than MaximumProjectionDistance, clicks on several components, a disc covering its
- * whole component or too small to hold its inner vertices, a field without a closed isoline,
- * NaN parameters.
+ * from the surface than MaximumProjectionDistance, clicks on several components, discs covering
+ * their whole component, holding no vertex or too small to hold their inner vertices, every adding
+ * click inside a subtracted disc, a field without a closed isoline, NaN parameters.
  */
 #ifndef vtkROIScissor_h
 #define vtkROIScissor_h
 
 #include "KerfFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkDiscClickAlgorithm.h"
 
 #include <memory>
 
-class KERFFILTERS_EXPORT vtkROIScissor : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkROIScissor : public vtkDiscClickAlgorithm
 {
 public:
   static vtkROIScissor* New();
-  vtkTypeMacro(vtkROIScissor, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkROIScissor, vtkDiscClickAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The click when input 1 is not connected, moved to the nearest surface point whatever its
-  /// distance (in ParaView it starts at the input's bounds: point at the surface and press P).
-  /// Default (0, 0, 0).
-  vtkSetVector3Macro(ClickPoint, double);
-  vtkGetVector3Macro(ClickPoint, double);
-  ///@}
-
-  ///@{
-  /// Geodesic radius r of each click's disc, as a fraction of the bounding-box diagonal. Default 0.25.
-  vtkSetClampMacro(Radius, double, 1e-6, 10.0);
-  vtkGetMacro(Radius, double);
-  ///@}
-
-  ///@{
-  /// Geodesic radius of each click's disc in the input's units; when positive it replaces Radius
-  /// (clicks' own radii stay fractions of the diagonal). ParaView sets it with the sphere widget
-  /// centred on the click. Default 0 (Radius is used).
-  vtkSetClampMacro(AbsoluteRadius, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(AbsoluteRadius, double);
-  ///@}
 
   ///@{
   /// Vertices nearer than this fraction of r to a click get the value 1. Default 0.1.
@@ -99,22 +73,6 @@ public:
   ///@}
 
   ///@{
-  /// Clicks of input 1 farther from the surface than this fraction of the bounding-box diagonal are
-  /// refused; 0 means no limit. Default 0.05.
-  vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
-  vtkGetMacro(MaximumProjectionDistance, double);
-  ///@}
-
-  ///@{
-  /// Point arrays of input 1 read when present: each click's radius (fraction of the diagonal;
-  /// default name "Radius") and whether it subtracts its disc (non-zero; default name "Subtract").
-  vtkSetStringMacro(ClickRadiusArrayName);
-  vtkGetStringMacro(ClickRadiusArrayName);
-  vtkSetStringMacro(ClickSubtractArrayName);
-  vtkGetStringMacro(ClickSubtractArrayName);
-  ///@}
-
-  ///@{
   /// Name of the output cell array of the region. Default "RoiRegion".
   vtkSetStringMacro(RegionArrayName);
   vtkGetStringMacro(RegionArrayName);
@@ -127,21 +85,14 @@ protected:
   vtkROIScissor();
   ~vtkROIScissor() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  double ClickPoint[3] = { 0.0, 0.0, 0.0 };
-  double Radius = 0.25;
-  double AbsoluteRadius = 0.0;
   double InnerFraction = 0.1;
   int IsolineCount = 50;
   double SegmentFraction = 0.1;
   double Gamma = 1.0;
-  double MaximumProjectionDistance = 0.05;
   char* RegionArrayName = nullptr;
-  char* ClickRadiusArrayName = nullptr;
-  char* ClickSubtractArrayName = nullptr;
 
 private:
   vtkROIScissor(const vtkROIScissor&) = delete;

@@ -29,6 +29,11 @@
 //   BM_SeamRegrowth/<size>       a seam to a new target on the same field
 //   BM_RoiScissorClick/<size>    kerf::roiScissor with a disc covering 10% of the vertices, the
 //                                surface's heat set-up, curvature and weights already cached
+//   BM_GeodesicDiscClick/<size>  kerf::geodesicDiscs, the same click's disc alone (a new click:
+//                                one heat distance and the region), the heat set-up cached;
+//                                counter area_fraction
+//   BM_GeodesicDiscRadius/<size> the same disc with the click's distance kept (kerf::ClickDistances,
+//                                as the filters keep it): a new radius
 // and once:
 //   BM_SphereErrorKerf, BM_SphereErrorCGAL, BM_SphereErrorCGALIntrinsic: one source on the
 //   icosphere, with counters mean_error and max_error (relative, outside the source's one-ring).
@@ -281,6 +286,22 @@ void roiScissorClick(benchmark::State& state, const Scene& scene)
   state.counters["radius"] = scene.click.radius;
 }
 
+void geodesicDiscClick(benchmark::State& state, const Scene& scene, bool keepDistances)
+{
+  kerf::ClickDistances distances(scene.surface);
+  const auto disc = [&]() {
+    return kerf::geodesicDiscs(*scene.surface, { scene.click }, {}, 1e-3, kerf::HeatGeodesicOptions(),
+      keepDistances ? &distances : nullptr);
+  };
+  kerf::GeodesicDiscs discs = disc(); // the heat set-up, and the click's distance when kept
+  for (auto _ : state)
+  {
+    discs = disc();
+    benchmark::DoNotOptimize(discs.faces.data());
+  }
+  state.counters["area_fraction"] = discs.area / discs.surfaceArea;
+}
+
 #ifdef KERF_HAVE_CGAL
 using Kernel = CGAL::Simple_cartesian<double>;
 using CgalMesh = CGAL::Surface_mesh<Kernel::Point_3>;
@@ -383,6 +404,8 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
     { "BM_SeamNew", seamNew },
     { "BM_SeamRegrowth", seamRegrowth },
     { "BM_RoiScissorClick", roiScissorClick },
+    { "BM_GeodesicDiscClick", [](benchmark::State& s, const Scene& c) { geodesicDiscClick(s, c, false); } },
+    { "BM_GeodesicDiscRadius", [](benchmark::State& s, const Scene& c) { geodesicDiscClick(s, c, true); } },
   };
   for (const GeodesicSize& size : Sizes)
   {

@@ -152,7 +152,7 @@ class KerfPluginTest(unittest.TestCase):
 
     def test_point_filters_apply_at_once(self):
         """A first-time user adds Geodesic Distance, Geodesic Seam (on Stroke Cut's cut), ROI
-        Scissor or Geodesic Polyline to the camel and presses Apply: their points start at the input's
+        Scissor, Geodesic Polyline or Geodesic Disc to the camel and presses Apply: their points start at the input's
         bounds, off the surface, and are moved onto it, so each applies without an error."""
         camel = simple.OpenDataFile(CAMEL)
         camel.UpdatePipeline()
@@ -165,6 +165,7 @@ class KerfPluginTest(unittest.TestCase):
             (simple.GeodesicSeam(Input=camel, Cut=simple.OutputPort(cut, 1)), "TargetPoint", high),
             (simple.ROIScissor(Input=camel), "ClickPoint", high),
             (simple.GeodesicPolyline(Input=camel), "PathPoints", low + high),
+            (simple.GeodesicDisc(Input=camel), "ClickPoint", high),
         )
         for proxy, name, expected in cases:
             with self.subTest(proxy=proxy.SMProxy.GetXMLLabel()):
@@ -189,6 +190,9 @@ class KerfPluginTest(unittest.TestCase):
         chord = sum((a - b) ** 2 for a, b in zip(first, last)) ** 0.5
         self.assertGreater(path.GetFieldData().GetArray("TotalLength").GetValue(0), chord)
         self.assertTrue(first[0] > bounds[0] and last[0] < bounds[1])
+        # The disc of a quarter of the largest side around the high-x click: part of the camel.
+        disc = vtk_to_numpy(servermanager.Fetch(cases[4][0]).GetPointData().GetArray("GeodesicDisc"))
+        self.assertTrue(0 < disc.sum() < len(disc))
 
     def test_geodesic_path_loop(self):
         """Geodesic Polyline by its label: a closed loop through three points given as an input, closed
@@ -326,6 +330,29 @@ class KerfPluginTest(unittest.TestCase):
         self.assertTrue(0 < region.sum() < 0.1 * len(region))
         boundary = servermanager.Fetch(roi, idx=1)
         self.assertEqual(boundary.GetNumberOfLines(), 1)
+
+    def test_geodesic_disc_is_roi_scissors_candidate_region(self):
+        """The disc around the camel's front hoof is the candidate region ROI Scissor solves on
+        for the same click and radius, vertex for vertex."""
+        camel = simple.OpenDataFile(CAMEL)
+        camel.UpdatePipeline()
+        points = vtk_to_numpy(servermanager.Fetch(camel).GetPoints().GetData())
+        hoof = list(map(float, points[points[:, 1].argmin()]))
+        bounds = camel.GetDataInformation().GetBounds()
+        diagonal = sum((bounds[2 * i + 1] - bounds[2 * i]) ** 2 for i in range(3)) ** 0.5
+        disc = simple.GeodesicDisc(Input=camel, ClickPoint=hoof, DiscRadius=0.2 * diagonal)
+        roi = simple.ROIScissor(Input=camel, ClickPoint=hoof, DiscRadius=0.2 * diagonal)
+        disc.UpdatePipeline()
+        roi.UpdatePipeline()
+        output = servermanager.Fetch(disc)
+        inside = vtk_to_numpy(output.GetPointData().GetArray("GeodesicDisc"))
+        candidate = vtk_to_numpy(servermanager.Fetch(roi).GetPointData().GetArray("RoiCandidate"))
+        self.assertEqual(len(inside), 9770)
+        self.assertEqual(inside.tolist(), candidate.tolist())
+        fraction = output.GetFieldData().GetArray("RegionAreaFraction").GetValue(0)
+        self.assertTrue(0.0 < fraction < 0.1)
+        faces = vtk_to_numpy(output.GetCellData().GetArray("GeodesicDisc"))
+        self.assertEqual(len(faces), 19536)
 
     def test_easy_mesh_cut_cuts_off_a_hoof(self):
         """A foreground stroke on the camel's front hoof and a background stroke on its top, as in

@@ -1,4 +1,4 @@
-# kerf.vtkGeodesicDistance, kerf.vtkGeodesicSeam and kerf.vtkROIScissor from Python: great-circle distances, a seam's length, a hoof's region, errors.
+# kerf.vtkGeodesicDistance, kerf.vtkGeodesicSeam, kerf.vtkGeodesicDisc and kerf.vtkROIScissor from Python: great-circle distances, a seam's length, a cap's area, a hoof's region, errors.
 import math
 import os
 import unittest
@@ -145,6 +145,40 @@ class GeodesicSeamTest(unittest.TestCase):
         seam.SetInputData(1, polyline([(0.0, 0.0, 3.0), (0.0, 0.5, 3.0)]))
         seam.SetTargetPoint(0.0, 0.0, 1.0)
         assert_refused(self, seam)
+
+
+class GeodesicDiscTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.surface = sphere()
+
+    def disc(self, radius, click=(0.0, 0.0, 1.0)):
+        disc = kerf.vtkGeodesicDisc()
+        disc.SetInputData(0, self.surface)
+        disc.SetClickPoint(*click)
+        disc.SetAbsoluteRadius(radius)
+        return disc
+
+    def test_a_disc_on_the_sphere_is_its_cap(self):
+        """Radius 1.2 around the north pole: the cap z > cos 1.2, of area 2 pi (1 - cos 1.2)."""
+        disc = self.disc(1.2)
+        self.assertEqual(run(disc), (1, []))
+        output = disc.GetOutput()
+        self.assertEqual(output.GetPointData().GetScalars().GetName(), "GeodesicDisc")
+        inside = vtk_to_numpy(output.GetPointData().GetArray("GeodesicDisc"))
+        z = vtk_to_numpy(output.GetPoints().GetData())[:, 2]
+        away = numpy.abs(numpy.arccos(numpy.clip(z, -1.0, 1.0)) - 1.2) > 0.01
+        self.assertTrue(numpy.array_equal(inside[away], (z[away] > math.cos(1.2)).astype(inside.dtype)))
+        fields = output.GetFieldData()
+        area = fields.GetArray("RegionArea").GetValue(0)
+        self.assertAlmostEqual(area / (2.0 * math.pi * (1.0 - math.cos(1.2))), 1.0, delta=0.01)
+        self.assertAlmostEqual(fields.GetArray("RegionAreaFraction").GetValue(0), (1.0 - math.cos(1.2)) / 2.0,
+                               delta=0.005)
+        distance = vtk_to_numpy(output.GetPointData().GetArray("ClickDistance"))
+        self.assertLess(numpy.abs(distance - numpy.arccos(numpy.clip(z, -1.0, 1.0))).max(), 0.03)
+
+    def test_a_radius_larger_than_the_sphere_is_refused(self):
+        self.assertIn("whole component", assert_refused(self, self.disc(4.0)))
 
 
 class ROIScissorTest(unittest.TestCase):

@@ -37,7 +37,8 @@ def capture_update(algorithm):
 def kerf_classes():
     for name in sorted(dir(kerf)):
         cls = getattr(kerf, name)
-        if name.startswith("vtk") and inspect.isclass(cls):
+        # Abstract bases (vtkDiscClickAlgorithm) cannot be made; their setters are their subclasses'.
+        if name.startswith("vtk") and inspect.isclass(cls) and name != "vtkDiscClickAlgorithm":
             yield name, cls
 
 
