@@ -1,8 +1,9 @@
-// What Easy Mesh Cutting's filters share: labelled strokes read from polylines and vertices, boundaries written as polylines.
+// What Easy Mesh Cutting's filters share: labelled strokes read from polylines and vertices, the growing options, boundaries written as polylines.
 #include "KerfEasyMeshCutting.h"
 
 #include "Error.h"
 #include "KerfFilterUtilities.h"
+#include "vtkStrokeGrowingAlgorithm.h"
 
 #include <vtkCellData.h>
 #include <vtkPolyData.h>
@@ -50,14 +51,16 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
   return strokes;
 }
 
-IsophoticMetricOptions MetricOptions(double normalWeight, double curvatureWeight, int augmentation, bool perEdge)
+RegionGrowingOptions GrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal)
 {
-  IsophoticMetricOptions metric;
-  metric.normalWeight = Finite(normalWeight, "NormalWeight");
-  metric.curvatureWeight = Finite(curvatureWeight, "CurvatureWeight");
-  metric.augmentation = static_cast<CurvatureAugmentation>(augmentation);
-  metric.curvaturePerEdge = perEdge;
-  return metric;
+  RegionGrowingOptions growing;
+  growing.metric.normalWeight = Finite(algorithm->GetNormalWeight(), "NormalWeight");
+  growing.metric.curvatureWeight = Finite(algorithm->GetCurvatureWeight(), "CurvatureWeight");
+  growing.metric.augmentation = static_cast<CurvatureAugmentation>(algorithm->GetCurvatureAugmentation());
+  growing.metric.curvaturePerEdge = algorithm->GetCurvaturePerEdge();
+  growing.maximumDistance =
+    RelativeDistance(algorithm->GetMaximumProjectionDistance(), diagonal, "MaximumProjectionDistance");
+  return growing;
 }
 
 SnakeOptions SnakeOptionsFrom(int iterations, double convergence, double curvatureOffset, int slideSamples)

@@ -1,5 +1,5 @@
 // What Easy Mesh Cutting's filters (vtkEasyMeshCut, vtkRegionGrowing, vtkSnakeRefinement) share:
-// labelled strokes read from polylines, boundaries written as polylines.
+// labelled strokes read from polylines, the growing options, boundaries written as polylines.
 #pragma once
 
 #include "Segmentation/EasyMeshCut.h"
@@ -7,6 +7,7 @@
 #include <vector>
 
 class vtkPolyData;
+class vtkStrokeGrowingAlgorithm;
 
 namespace kerf
 {
@@ -17,8 +18,10 @@ namespace kerf
 /// negative or not an integer.
 std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* labelArray);
 
-/// The metric options from a filter's properties (w, w*, augmentation 0-2, per edge), NaN refused.
-IsophoticMetricOptions MetricOptions(double normalWeight, double curvatureWeight, int augmentation, bool perEdge);
+/// The growing options from a filter's properties: the metric (w, w*, augmentation 0-2, per edge)
+/// and the stroke points' farthest projection (MaximumProjectionDistance times `diagonal`), NaN
+/// refused.
+RegionGrowingOptions GrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal);
 
 /// The snake options from a filter's properties, NaN refused.
 SnakeOptions SnakeOptionsFrom(int iterations, double convergence, double curvatureOffset, int slideSamples);

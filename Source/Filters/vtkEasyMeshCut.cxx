@@ -33,15 +33,9 @@ vtkEasyMeshCut::vtkEasyMeshCut()
 {
   this->SetNumberOfInputPorts(3);
   this->SetNumberOfOutputPorts(2);
-  this->SetStrokeLabelArrayName("Label");
-  this->SetSegmentArrayName("Segment");
 }
 
-vtkEasyMeshCut::~vtkEasyMeshCut()
-{
-  this->SetStrokeLabelArrayName(nullptr);
-  this->SetSegmentArrayName(nullptr);
-}
+vtkEasyMeshCut::~vtkEasyMeshCut() = default;
 
 void vtkEasyMeshCut::SetNumberOfForegroundPoints(int count)
 {
@@ -113,10 +107,7 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     }
 
     kerf::EasyMeshCutOptions options;
-    options.growing.metric =
-      kerf::MetricOptions(this->NormalWeight, this->CurvatureWeight, this->CurvatureAugmentation, this->CurvaturePerEdge);
-    options.growing.maximumDistance = kerf::RelativeDistance(
-      this->MaximumProjectionDistance, surface.Mesh().boundingBoxDiagonal(), "MaximumProjectionDistance");
+    options.growing = kerf::GrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
     options.refine = this->Refine;
     options.snake = kerf::SnakeOptionsFrom(
       this->SnakeIterations, this->SnakeConvergence, this->SnakeCurvatureOffset, this->SnakeSlideSamples);
@@ -142,11 +133,6 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
 void vtkEasyMeshCut::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NormalWeight: " << this->NormalWeight << "\n";
-  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
-  os << indent << "CurvatureAugmentation: " << this->CurvatureAugmentation << "\n";
-  os << indent << "CurvaturePerEdge: " << this->CurvaturePerEdge << "\n";
-  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "Refine: " << this->Refine << "\n";
   os << indent << "SnakeIterations: " << this->SnakeIterations << "\n";
   os << indent << "SnakeConvergence: " << this->SnakeConvergence << "\n";
@@ -155,6 +141,4 @@ void vtkEasyMeshCut::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OverrideRadius: " << this->OverrideRadius << "\n";
   os << indent << "ForegroundPoints: " << this->State->foreground.Count() << "\n";
   os << indent << "BackgroundPoints: " << this->State->background.Count() << "\n";
-  os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
-  os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

@@ -27,51 +27,16 @@
 #define vtkEasyMeshCut_h
 
 #include "KerfFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkStrokeGrowingAlgorithm.h"
 
 #include <memory>
 
-class KERFFILTERS_EXPORT vtkEasyMeshCut : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkEasyMeshCut : public vtkStrokeGrowingAlgorithm
 {
 public:
   static vtkEasyMeshCut* New();
-  vtkTypeMacro(vtkEasyMeshCut, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkEasyMeshCut, vtkStrokeGrowingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// w, the metric's weight of the normal variation |n_p - n_q| (the mesh scaled into a unit
-  /// box). Default 5.
-  vtkSetClampMacro(NormalWeight, double, 0.0, 1e6);
-  vtkGetMacro(NormalWeight, double);
-  ///@}
-
-  ///@{
-  /// w*, the metric's weight of the curvature term f(k) per unit length. Default 5.
-  vtkSetClampMacro(CurvatureWeight, double, 0.0, 1e6);
-  vtkGetMacro(CurvatureWeight, double);
-  ///@}
-
-  ///@{
-  /// How concave curvature k < 0 is augmented: 0 exponential (e^|k| - 1, the paper's), 1 linear
-  /// (3 |k|), 2 square (k^2). Default 0.
-  vtkSetClampMacro(CurvatureAugmentation, int, 0, 2);
-  vtkGetMacro(CurvatureAugmentation, int);
-  ///@}
-
-  ///@{
-  /// The curvature term per edge, as printed in the paper's discrete formula, instead of per unit
-  /// length; parts leak into each other across oblique creases with it. Default off.
-  vtkSetMacro(CurvaturePerEdge, bool);
-  vtkGetMacro(CurvaturePerEdge, bool);
-  vtkBooleanMacro(CurvaturePerEdge, bool);
-  ///@}
-
-  ///@{
-  /// Stroke points farther from the surface than this fraction of the bounding-box diagonal are
-  /// refused; 0 means no limit. Default 0.05.
-  vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
-  vtkGetMacro(MaximumProjectionDistance, double);
-  ///@}
 
   ///@{
   /// Refine the grown boundaries as snakes (section 5.1). Default on.
@@ -126,19 +91,6 @@ public:
   vtkGetMacro(OverrideRadius, double);
   ///@}
 
-  ///@{
-  /// The cell array of input 1 holding each stroke's label (named, not selected: see
-  /// vtkHarmonicField). Default "Label".
-  vtkSetStringMacro(StrokeLabelArrayName);
-  vtkGetStringMacro(StrokeLabelArrayName);
-  ///@}
-
-  ///@{
-  /// Name of the output cell array of labels. Default "Segment".
-  vtkSetStringMacro(SegmentArrayName);
-  vtkGetStringMacro(SegmentArrayName);
-  ///@}
-
   /// The boundaries between labels (output 1).
   vtkPolyData* GetBoundary();
 
@@ -150,19 +102,12 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  double NormalWeight = 5.0;
-  double CurvatureWeight = 5.0;
-  int CurvatureAugmentation = 0;
-  bool CurvaturePerEdge = false;
-  double MaximumProjectionDistance = 0.05;
   bool Refine = true;
   int SnakeIterations = 100;
   double SnakeConvergence = 0.01;
   double SnakeCurvatureOffset = 1.0;
   int SnakeSlideSamples = 8;
   double OverrideRadius = 0.03;
-  char* StrokeLabelArrayName = nullptr;
-  char* SegmentArrayName = nullptr;
 
 private:
   vtkEasyMeshCut(const vtkEasyMeshCut&) = delete;

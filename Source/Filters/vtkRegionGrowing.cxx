@@ -27,15 +27,9 @@ vtkRegionGrowing::vtkRegionGrowing()
 {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
-  this->SetStrokeLabelArrayName("Label");
-  this->SetSegmentArrayName("Segment");
 }
 
-vtkRegionGrowing::~vtkRegionGrowing()
-{
-  this->SetStrokeLabelArrayName(nullptr);
-  this->SetSegmentArrayName(nullptr);
-}
+vtkRegionGrowing::~vtkRegionGrowing() = default;
 
 vtkPolyData* vtkRegionGrowing::GetBoundary()
 {
@@ -68,10 +62,7 @@ int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputV
     const std::vector<kerf::LabelledStroke> strokes = kerf::ReadLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
 
     kerf::EasyMeshCutOptions options;
-    options.growing.metric =
-      kerf::MetricOptions(this->NormalWeight, this->CurvatureWeight, this->CurvatureAugmentation, this->CurvaturePerEdge);
-    options.growing.maximumDistance = kerf::RelativeDistance(
-      this->MaximumProjectionDistance, surface.Mesh().boundingBoxDiagonal(), "MaximumProjectionDistance");
+    options.growing = kerf::GrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
     options.refine = false;
     this->UpdateProgress(0.1);
     const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes, options);
@@ -92,11 +83,4 @@ int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputV
 void vtkRegionGrowing::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "NormalWeight: " << this->NormalWeight << "\n";
-  os << indent << "CurvatureWeight: " << this->CurvatureWeight << "\n";
-  os << indent << "CurvatureAugmentation: " << this->CurvatureAugmentation << "\n";
-  os << indent << "CurvaturePerEdge: " << this->CurvaturePerEdge << "\n";
-  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
-  os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

@@ -18,6 +18,7 @@ SKIPPED = {"SetInputConnection", "SetInputData", "SetInputArrayToProcess", "SetE
            "SetGlobalWarningDisplay", "SetProgressText", "SetProgressShiftScale", "SetContainerAlgorithm",
            "SetAbortExecute", "SetAbortExecuteAndUpdateTime", "SetNoPriority", "SetReleaseDataFlag",
            "SetDefaultExecutivePrototype", "SetObjectName"}
+ABSTRACT_BASES = {"vtkDiscClickAlgorithm", "vtkStrokeGrowingAlgorithm"}
 
 
 def capture_update(algorithm):
@@ -37,8 +38,8 @@ def capture_update(algorithm):
 def kerf_classes():
     for name in sorted(dir(kerf)):
         cls = getattr(kerf, name)
-        # Abstract bases (vtkDiscClickAlgorithm) cannot be made; their setters are their subclasses'.
-        if name.startswith("vtk") and inspect.isclass(cls) and name != "vtkDiscClickAlgorithm":
+        # Abstract bases cannot be made; their setters are their subclasses'.
+        if name.startswith("vtk") and inspect.isclass(cls) and name not in ABSTRACT_BASES:
             yield name, cls
 
 

@@ -1,0 +1,91 @@
+/**
+ * @class vtkStrokeGrowingAlgorithm
+ * @brief The labelled strokes and the improved isophotic metric of the filters that grow parts
+ * from strokes (vtkRegionGrowing, vtkEasyMeshCut; Ji et al. 2006, sections 3 and 4.2). Abstract.
+ *
+ * Input 1 holds the strokes: polylines, or points of vertex cells (clicks), each with a label in
+ * the cell array named by StrokeLabelArrayName; their points are moved to the nearest surface
+ * points and refused beyond MaximumProjectionDistance. Every vertex takes the label of the
+ * stroke nearest to it under the metric, whose edge length grows with the change of the normal
+ * (NormalWeight) and, strongly, with concave curvature (CurvatureWeight, CurvatureAugmentation).
+ * The labels are written as SegmentArrayName. kerf::GrowingOptions reads the parameters.
+ */
+#ifndef vtkStrokeGrowingAlgorithm_h
+#define vtkStrokeGrowingAlgorithm_h
+
+#include "KerfFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class KERFFILTERS_EXPORT vtkStrokeGrowingAlgorithm : public vtkPolyDataAlgorithm
+{
+public:
+  vtkTypeMacro(vtkStrokeGrowingAlgorithm, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// w, the metric's weight of the normal variation |n_p - n_q| (the mesh scaled into a unit
+  /// box). Default 5.
+  vtkSetClampMacro(NormalWeight, double, 0.0, 1e6);
+  vtkGetMacro(NormalWeight, double);
+  ///@}
+
+  ///@{
+  /// w*, the metric's weight of the curvature term f(k) per unit length. Default 5.
+  vtkSetClampMacro(CurvatureWeight, double, 0.0, 1e6);
+  vtkGetMacro(CurvatureWeight, double);
+  ///@}
+
+  ///@{
+  /// How concave curvature k < 0 is augmented: 0 exponential (e^|k| - 1, the paper's), 1 linear
+  /// (3 |k|), 2 square (k^2). Default 0.
+  vtkSetClampMacro(CurvatureAugmentation, int, 0, 2);
+  vtkGetMacro(CurvatureAugmentation, int);
+  ///@}
+
+  ///@{
+  /// The curvature term per edge, as printed in the paper's discrete formula, instead of per unit
+  /// length; parts leak into each other across oblique creases with it. Default off.
+  vtkSetMacro(CurvaturePerEdge, bool);
+  vtkGetMacro(CurvaturePerEdge, bool);
+  vtkBooleanMacro(CurvaturePerEdge, bool);
+  ///@}
+
+  ///@{
+  /// Stroke points farther from the surface than this fraction of the bounding-box diagonal are
+  /// refused; 0 means no limit. Default 0.05.
+  vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
+  vtkGetMacro(MaximumProjectionDistance, double);
+  ///@}
+
+  ///@{
+  /// The cell array of input 1 holding each stroke's label (named, not selected: see
+  /// vtkHarmonicField). Default "Label".
+  vtkSetStringMacro(StrokeLabelArrayName);
+  vtkGetStringMacro(StrokeLabelArrayName);
+  ///@}
+
+  ///@{
+  /// Name of the output arrays of labels (per cell; vtkRegionGrowing writes a point array of
+  /// the same name too). Default "Segment".
+  vtkSetStringMacro(SegmentArrayName);
+  vtkGetStringMacro(SegmentArrayName);
+  ///@}
+
+protected:
+  vtkStrokeGrowingAlgorithm();
+  ~vtkStrokeGrowingAlgorithm() override;
+
+  double NormalWeight = 5.0;
+  double CurvatureWeight = 5.0;
+  int CurvatureAugmentation = 0;
+  bool CurvaturePerEdge = false;
+  double MaximumProjectionDistance = 0.05;
+  char* StrokeLabelArrayName = nullptr;
+  char* SegmentArrayName = nullptr;
+
+private:
+  vtkStrokeGrowingAlgorithm(const vtkStrokeGrowingAlgorithm&) = delete;
+  void operator=(const vtkStrokeGrowingAlgorithm&) = delete;
+};
+
+#endif
