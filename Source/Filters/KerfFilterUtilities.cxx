@@ -6,6 +6,7 @@
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
 #include "vtkDiscClickAlgorithm.h"
+#include "vtkStrokeConstraintAlgorithm.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -181,6 +182,17 @@ double RelativeDistance(double fraction, double diagonal, const char* parameter)
     throw Error(std::string(parameter) + " must be a number (0 for no limit)");
   }
   return fraction > 0.0 ? fraction * diagonal : 0.0;
+}
+
+StrokeOptions ReadStrokeOptions(vtkStrokeConstraintAlgorithm* algorithm, double diagonal)
+{
+  StrokeOptions options;
+  options.samplesPerSegment = algorithm->GetSamplesPerSegment();
+  options.offset = Finite(algorithm->GetOffset(), "Offset") * diagonal;
+  options.offsetLengthFraction = Finite(algorithm->GetOffsetLengthFraction(), "OffsetLengthFraction");
+  options.isoValue = algorithm->GetIsoValue();
+  options.maximumDistance = RelativeDistance(algorithm->GetMaximumProjectionDistance(), diagonal, "MaximumProjectionDistance");
+  return options;
 }
 
 double ProjectionLimit(double fraction, const Surface& surface, const char* parameter)

@@ -25,6 +25,7 @@ class vtkInformation;
 class vtkInformationVector;
 class vtkPointSet;
 class vtkPolyData;
+class vtkStrokeConstraintAlgorithm;
 
 namespace kerf
 {
@@ -151,6 +152,11 @@ std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Su
 /// throws when there is no stroke.
 std::vector<std::vector<Vector3>> ReadStrokes(
   vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface);
+
+/// The sampling of a vtkStrokeConstraintAlgorithm's strokes into constraints: samples per segment,
+/// offset (Offset times `diagonal`), its cap, the iso-value and the projection limit
+/// (MaximumProjectionDistance times `diagonal`); throws naming the parameter for NaN.
+StrokeOptions ReadStrokeOptions(vtkStrokeConstraintAlgorithm* algorithm, double diagonal);
 
 /// The coordinates of a point set's points.
 std::vector<Vector3> ReadPoints(vtkPointSet* points);

@@ -29,41 +29,14 @@ struct vtkStrokeConstraints::Internals
 {
   kerf::SurfaceInput surface;
   std::unique_ptr<kerf::HarmonicCutSession> session;
-  kerf::StrokePointList strokePoints;
 };
 
 vtkStrokeConstraints::vtkStrokeConstraints()
   : State(new Internals)
 {
-  this->SetNumberOfInputPorts(2);
 }
 
 vtkStrokeConstraints::~vtkStrokeConstraints() = default;
-
-void vtkStrokeConstraints::SetNumberOfStrokePoints(int count)
-{
-  kerf::SetPanelPointCount(this, this->State->strokePoints, count, "stroke");
-}
-
-int vtkStrokeConstraints::GetNumberOfStrokePoints() const
-{
-  return this->State->strokePoints.Count();
-}
-
-void vtkStrokeConstraints::SetStrokePoint(int index, double x, double y, double z)
-{
-  kerf::SetPanelPoint(this, this->State->strokePoints, index, kerf::Vector3(x, y, z), "stroke");
-}
-
-int vtkStrokeConstraints::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-  }
-  return 1;
-}
 
 int vtkStrokeConstraints::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -77,16 +50,9 @@ int vtkStrokeConstraints::RequestData(
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
 
-    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, this->State->strokePoints, session.surface());
+    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, *this->StrokePoints, session.surface());
 
-    kerf::StrokeOptions options;
-    options.samplesPerSegment = this->SamplesPerSegment;
-    options.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
-    options.offsetLengthFraction = kerf::Finite(this->OffsetLengthFraction, "OffsetLengthFraction");
-    options.isoValue = this->IsoValue;
-    options.maximumDistance =
-      kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
-    const kerf::StrokeConstraintSet set = session.strokeConstraints(strokes, options);
+    const kerf::StrokeConstraintSet set = session.strokeConstraints(strokes, kerf::ReadStrokeOptions(this, diagonal));
 
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -113,10 +79,4 @@ int vtkStrokeConstraints::RequestData(
 void vtkStrokeConstraints::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
-  os << indent << "Offset: " << this->Offset << "\n";
-  os << indent << "OffsetLengthFraction: " << this->OffsetLengthFraction << "\n";
-  os << indent << "IsoValue: " << this->IsoValue << "\n";
-  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";
 }

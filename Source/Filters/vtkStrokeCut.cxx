@@ -24,13 +24,11 @@ struct vtkStrokeCut::Internals
 {
   kerf::SurfaceInput surface;
   std::unique_ptr<kerf::HarmonicCutSession> session;
-  kerf::StrokePointList strokePoints;
 };
 
 vtkStrokeCut::vtkStrokeCut()
   : State(new Internals)
 {
-  this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(2);
 }
 
@@ -39,31 +37,6 @@ vtkStrokeCut::~vtkStrokeCut() = default;
 vtkPolyData* vtkStrokeCut::GetCut()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
-}
-
-void vtkStrokeCut::SetNumberOfStrokePoints(int count)
-{
-  kerf::SetPanelPointCount(this, this->State->strokePoints, count, "stroke");
-}
-
-int vtkStrokeCut::GetNumberOfStrokePoints() const
-{
-  return this->State->strokePoints.Count();
-}
-
-void vtkStrokeCut::SetStrokePoint(int index, double x, double y, double z)
-{
-  kerf::SetPanelPoint(this, this->State->strokePoints, index, kerf::Vector3(x, y, z), "stroke");
-}
-
-int vtkStrokeCut::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
-  }
-  return 1;
 }
 
 int vtkStrokeCut::RequestData(
@@ -80,18 +53,11 @@ int vtkStrokeCut::RequestData(
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
     const std::vector<std::vector<kerf::Vector3>> strokes =
-      kerf::ReadStrokes(vtkPolyData::GetData(inputVector[1], 0), this->State->strokePoints, session.surface());
+      kerf::ReadStrokes(vtkPolyData::GetData(inputVector[1], 0), *this->StrokePoints, session.surface());
     this->UpdateProgress(0.1);
 
-    kerf::StrokeOptions strokeOptions;
-    strokeOptions.samplesPerSegment = this->SamplesPerSegment;
-    strokeOptions.offset = kerf::Finite(this->Offset, "Offset") * diagonal;
-    strokeOptions.offsetLengthFraction = kerf::Finite(this->OffsetLengthFraction, "OffsetLengthFraction");
-    strokeOptions.isoValue = this->IsoValue;
-    strokeOptions.maximumDistance =
-      kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
     kerf::FieldConstraints constraints;
-    constraints.soft = session.strokeConstraints(strokes, strokeOptions).constraints;
+    constraints.soft = session.strokeConstraints(strokes, kerf::ReadStrokeOptions(this, diagonal)).constraints;
     kerf::HarmonicFieldOptions fieldOptions;
     fieldOptions.weights.weighting = static_cast<kerf::LaplacianWeighting>(this->Weighting);
     fieldOptions.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
@@ -122,10 +88,4 @@ void vtkStrokeCut::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Weighting: " << this->Weighting << "\n";
   os << indent << "Formulation: " << this->Formulation << "\n";
   os << indent << "SoftConstraintWeight: " << this->SoftConstraintWeight << "\n";
-  os << indent << "SamplesPerSegment: " << this->SamplesPerSegment << "\n";
-  os << indent << "Offset: " << this->Offset << "\n";
-  os << indent << "OffsetLengthFraction: " << this->OffsetLengthFraction << "\n";
-  os << indent << "IsoValue: " << this->IsoValue << "\n";
-  os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "StrokePoints: " << this->State->strokePoints.Count() << "\n";
 }

@@ -25,15 +25,15 @@
 #define vtkStrokeCut_h
 
 #include "KerfFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkStrokeConstraintAlgorithm.h"
 
 #include <memory>
 
-class KERFFILTERS_EXPORT vtkStrokeCut : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkStrokeCut : public vtkStrokeConstraintAlgorithm
 {
 public:
   static vtkStrokeCut* New();
-  vtkTypeMacro(vtkStrokeCut, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStrokeCut, vtkStrokeConstraintAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -56,46 +56,6 @@ public:
   vtkGetMacro(SoftConstraintWeight, double);
   ///@}
 
-  ///@{
-  /// Samples per stroke segment (N_S). Default 4.
-  vtkSetClampMacro(SamplesPerSegment, int, 1, 1000);
-  vtkGetMacro(SamplesPerSegment, int);
-  ///@}
-
-  ///@{
-  /// Offset of the constraint points from the stroke (eps_C), a fraction of the bounding-box
-  /// diagonal. Default 0.005.
-  vtkSetClampMacro(Offset, double, 1e-6, 0.5);
-  vtkGetMacro(Offset, double);
-  ///@}
-
-  ///@{
-  /// A stroke's offset is at most this fraction of its length (0: no cap), so that the
-  /// constraints of a short stroke (a loop round a small part) stay beside it. Default 0.05.
-  vtkSetClampMacro(OffsetLengthFraction, double, 0.0, 1.0);
-  vtkGetMacro(OffsetLengthFraction, double);
-  ///@}
-
-  ///@{
-  /// The iso-value of the cut; the constraints are IsoValue +- 1. Default 0.
-  vtkSetMacro(IsoValue, double);
-  vtkGetMacro(IsoValue, double);
-  ///@}
-
-  ///@{
-  /// Stroke points farther from the surface than this fraction of the diagonal are refused; 0
-  /// means no limit. Default 0.05.
-  vtkSetClampMacro(MaximumProjectionDistance, double, 0.0, 1.0);
-  vtkGetMacro(MaximumProjectionDistance, double);
-  ///@}
-
-  ///@{
-  /// The stroke's points when input 1 is not connected (one stroke).
-  void SetNumberOfStrokePoints(int count);
-  int GetNumberOfStrokePoints() const;
-  void SetStrokePoint(int index, double x, double y, double z);
-  ///@}
-
   /// The cut polylines (output 1).
   vtkPolyData* GetCut();
 
@@ -103,18 +63,12 @@ protected:
   vtkStrokeCut();
   ~vtkStrokeCut() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
   int Weighting = 1;
   int Formulation = 2;
   double SoftConstraintWeight = 1.0;
-  int SamplesPerSegment = 4;
-  double Offset = 0.005;
-  double OffsetLengthFraction = 0.05;
-  double IsoValue = 0.0;
-  double MaximumProjectionDistance = 0.05;
 
 private:
   vtkStrokeCut(const vtkStrokeCut&) = delete;

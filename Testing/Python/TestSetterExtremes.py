@@ -18,7 +18,7 @@ SKIPPED = {"SetInputConnection", "SetInputData", "SetInputArrayToProcess", "SetE
            "SetGlobalWarningDisplay", "SetProgressText", "SetProgressShiftScale", "SetContainerAlgorithm",
            "SetAbortExecute", "SetAbortExecuteAndUpdateTime", "SetNoPriority", "SetReleaseDataFlag",
            "SetDefaultExecutivePrototype", "SetObjectName"}
-ABSTRACT_BASES = {"vtkDiscClickAlgorithm", "vtkStrokeGrowingAlgorithm"}
+ABSTRACT_BASES = {"vtkDiscClickAlgorithm", "vtkStrokeConstraintAlgorithm", "vtkStrokeGrowingAlgorithm"}
 
 
 def capture_update(algorithm):
