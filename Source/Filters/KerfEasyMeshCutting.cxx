@@ -51,7 +51,7 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
   return strokes;
 }
 
-RegionGrowingOptions GrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal)
+RegionGrowingOptions ReadGrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal)
 {
   RegionGrowingOptions growing;
   growing.metric.normalWeight = Finite(algorithm->GetNormalWeight(), "NormalWeight");

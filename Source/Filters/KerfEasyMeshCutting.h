@@ -21,7 +21,7 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
 /// The growing options from a filter's properties: the metric (w, w*, augmentation 0-2, per edge)
 /// and the stroke points' farthest projection (MaximumProjectionDistance times `diagonal`), NaN
 /// refused.
-RegionGrowingOptions GrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal);
+RegionGrowingOptions ReadGrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal);
 
 /// The snake options from a filter's properties, NaN refused.
 SnakeOptions SnakeOptionsFrom(int iterations, double convergence, double curvatureOffset, int slideSamples);

@@ -107,7 +107,7 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     }
 
     kerf::EasyMeshCutOptions options;
-    options.growing = kerf::GrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
+    options.growing = kerf::ReadGrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
     options.refine = this->Refine;
     options.snake = kerf::SnakeOptionsFrom(
       this->SnakeIterations, this->SnakeConvergence, this->SnakeCurvatureOffset, this->SnakeSlideSamples);

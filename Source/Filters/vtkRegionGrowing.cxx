@@ -62,7 +62,7 @@ int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputV
     const std::vector<kerf::LabelledStroke> strokes = kerf::ReadLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
 
     kerf::EasyMeshCutOptions options;
-    options.growing = kerf::GrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
+    options.growing = kerf::ReadGrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
     options.refine = false;
     this->UpdateProgress(0.1);
     const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes, options);

@@ -10,7 +10,6 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>

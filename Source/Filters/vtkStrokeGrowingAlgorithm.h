@@ -5,10 +5,11 @@
  *
  * Input 1 holds the strokes: polylines, or points of vertex cells (clicks), each with a label in
  * the cell array named by StrokeLabelArrayName; their points are moved to the nearest surface
- * points and refused beyond MaximumProjectionDistance. Every vertex takes the label of the
+ * points and refused beyond MaximumProjectionDistance (vtkEasyMeshCut also takes strokes drawn
+ * in its panel when input 1 is not connected). Every vertex takes the label of the
  * stroke nearest to it under the metric, whose edge length grows with the change of the normal
  * (NormalWeight) and, strongly, with concave curvature (CurvatureWeight, CurvatureAugmentation).
- * The labels are written as SegmentArrayName. kerf::GrowingOptions reads the parameters.
+ * The labels are written as SegmentArrayName. kerf::ReadGrowingOptions reads the parameters.
  */
 #ifndef vtkStrokeGrowingAlgorithm_h
 #define vtkStrokeGrowingAlgorithm_h

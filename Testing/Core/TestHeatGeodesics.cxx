@@ -196,7 +196,8 @@ TEST(HeatGeodesics, PlanarGridMatchesEuclideanDistance)
     options.boundary = boundary;
     const HeatGeodesics heat(grid, options);
     const GeodesicDistance result = heat.compute(from);
-    // Beyond five cells: nearer, the grid's one diagonal direction skews the heat flow.
+    // Beyond five cells: nearer, the one-cell heat step and the triangles' one diagonal direction
+    // skew the flow most (PlanarGridBiasShrinksWithTheTimeStepNotTheCells measures the bias beyond).
     const ErrorStatistics e = relativeErrors(grid, result.distance, [&](const Vector3& p) { return (p - c).norm(); },
       [&](int v) { return (grid.point(v) - c).norm() > 5.0 / cells; });
     RecordProperty("MeanRelativeError" + std::to_string(static_cast<int>(boundary)), std::to_string(e.mean));
@@ -215,10 +216,11 @@ TEST(HeatGeodesics, PlanarGridMatchesEuclideanDistance)
 
 // The grid's bias is the lattice's, not the refinement's: with t = h^2 the heat step's kernel
 // spans about one cell, where the 5-point stencil (the cotangent Laplacian of a grid of right
-// isosceles triangles) is anisotropic, so distances along the axes come out short by the same
-// fraction at every resolution. A longer step spans more cells and the bias falls: ring 0.25 to
-// 0.35 from the centre, mean relative error along the axes (within 0.1 rad), measured at 100 and
-// 200 cells alike: -2.4%, -0.66%, -0.20%, -0.07% for time factors 1, 4, 16, 64.
+// isosceles triangles) is anisotropic, so distances along the axes come out short by nearly the
+// same fraction at every resolution. A longer step spans more cells and the bias falls. Ring 0.25
+// to 0.35 from the centre, mean relative error along the axes (within 0.1 rad), measured here:
+// -2.5% at 60 cells and -2.4% at 120 (t = h^2), -0.65% and -0.19% at 120 for time factors 4 and
+// 16 (Geodesics.md has 100 and 200 cells and factor 64).
 TEST(HeatGeodesics, PlanarGridBiasShrinksWithTheTimeStepNotTheCells)
 {
   const auto axialBias = [](int cells, double timeFactor) {
