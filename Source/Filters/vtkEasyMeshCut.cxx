@@ -10,7 +10,6 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -31,8 +30,7 @@ struct vtkEasyMeshCut::Internals
 vtkEasyMeshCut::vtkEasyMeshCut()
   : State(new Internals)
 {
-  this->SetNumberOfInputPorts(3);
-  this->SetNumberOfOutputPorts(2);
+  this->SetNumberOfInputPorts(3); // input 2: override strokes
 }
 
 vtkEasyMeshCut::~vtkEasyMeshCut() = default;
@@ -65,21 +63,6 @@ int vtkEasyMeshCut::GetNumberOfBackgroundPoints() const
 void vtkEasyMeshCut::SetBackgroundPoint(int index, double x, double y, double z)
 {
   kerf::SetPanelPoint(this, this->State->background, index, kerf::Vector3(x, y, z), "background");
-}
-
-vtkPolyData* vtkEasyMeshCut::GetBoundary()
-{
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
-}
-
-int vtkEasyMeshCut::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port >= 1)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // so that a missing stroke input is an error of ours
-  }
-  return 1;
 }
 
 int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)

@@ -91,14 +91,10 @@ public:
   vtkGetMacro(OverrideRadius, double);
   ///@}
 
-  /// The boundaries between labels (output 1).
-  vtkPolyData* GetBoundary();
-
 protected:
   vtkEasyMeshCut();
   ~vtkEasyMeshCut() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

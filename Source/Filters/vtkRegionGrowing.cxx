@@ -9,7 +9,6 @@
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
-#include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
@@ -25,26 +24,9 @@ struct vtkRegionGrowing::Internals
 vtkRegionGrowing::vtkRegionGrowing()
   : State(new Internals)
 {
-  this->SetNumberOfInputPorts(2);
-  this->SetNumberOfOutputPorts(2);
 }
 
 vtkRegionGrowing::~vtkRegionGrowing() = default;
-
-vtkPolyData* vtkRegionGrowing::GetBoundary()
-{
-  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
-}
-
-int vtkRegionGrowing::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  if (port == 1)
-  {
-    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1); // so that a missing stroke input is an error of ours
-  }
-  return 1;
-}
 
 int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

@@ -38,14 +38,10 @@ public:
   vtkTypeMacro(vtkRegionGrowing, vtkStrokeGrowingAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// The boundaries between labels (output 1).
-  vtkPolyData* GetBoundary();
-
 protected:
   vtkRegionGrowing();
   ~vtkRegionGrowing() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 

@@ -1,8 +1,13 @@
 // vtkStrokeGrowingAlgorithm: the stroke and metric parameters shared by the filters that grow parts from labelled strokes.
 #include "vtkStrokeGrowingAlgorithm.h"
 
+#include <vtkInformation.h>
+#include <vtkPolyData.h>
+
 vtkStrokeGrowingAlgorithm::vtkStrokeGrowingAlgorithm()
 {
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(2);
   this->SetStrokeLabelArrayName("Label");
   this->SetSegmentArrayName("Segment");
 }
@@ -11,6 +16,21 @@ vtkStrokeGrowingAlgorithm::~vtkStrokeGrowingAlgorithm()
 {
   this->SetStrokeLabelArrayName(nullptr);
   this->SetSegmentArrayName(nullptr);
+}
+
+vtkPolyData* vtkStrokeGrowingAlgorithm::GetBoundary()
+{
+  return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
+}
+
+int vtkStrokeGrowingAlgorithm::FillInputPortInformation(int port, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  if (port >= 1)
+  {
+    info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  }
+  return 1;
 }
 
 void vtkStrokeGrowingAlgorithm::PrintSelf(ostream& os, vtkIndent indent)

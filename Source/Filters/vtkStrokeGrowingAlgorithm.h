@@ -9,7 +9,8 @@
  * in its panel when input 1 is not connected). Every vertex takes the label of the
  * stroke nearest to it under the metric, whose edge length grows with the change of the normal
  * (NormalWeight) and, strongly, with concave curvature (CurvatureWeight, CurvatureAugmentation).
- * The labels are written as SegmentArrayName. kerf::ReadGrowingOptions reads the parameters.
+ * The labels are written as SegmentArrayName; output 1 holds the boundaries between labels.
+ * kerf::ReadGrowingOptions reads the parameters.
  */
 #ifndef vtkStrokeGrowingAlgorithm_h
 #define vtkStrokeGrowingAlgorithm_h
@@ -72,9 +73,16 @@ public:
   vtkGetStringMacro(SegmentArrayName);
   ///@}
 
+  /// The boundaries between labels (output 1).
+  vtkPolyData* GetBoundary();
+
 protected:
   vtkStrokeGrowingAlgorithm();
   ~vtkStrokeGrowingAlgorithm() override;
+
+  /// Input 0 a surface, inputs 1 and up optional polydata (strokes), so that a missing stroke
+  /// input is reported by the filter itself.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
 
   double NormalWeight = 5.0;
   double CurvatureWeight = 5.0;
