@@ -1,4 +1,4 @@
-// vtkStrokeGrowingAlgorithm: the stroke and metric parameters shared by the filters that grow parts from labelled strokes.
+// vtkStrokeGrowingAlgorithm: the stroke and metric parameters, ports and boundary output shared by the filters that grow parts from labelled strokes.
 #include "vtkStrokeGrowingAlgorithm.h"
 
 #include <vtkInformation.h>

@@ -80,8 +80,8 @@ protected:
   vtkStrokeGrowingAlgorithm();
   ~vtkStrokeGrowingAlgorithm() override;
 
-  /// Input 0 a surface, inputs 1 and up optional polydata (strokes), so that a missing stroke
-  /// input is reported by the filter itself.
+  /// Input 0 a surface, inputs 1 and up optional polydata (strokes), so that each filter decides
+  /// what a missing one means (an error, the panel's strokes, no overrides).
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   double NormalWeight = 5.0;
