@@ -60,6 +60,7 @@ RegionGrowingOptions ReadGrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, do
   growing.metric.curvaturePerEdge = algorithm->GetCurvaturePerEdge();
   growing.maximumDistance =
     RelativeDistance(algorithm->GetMaximumProjectionDistance(), diagonal, "MaximumProjectionDistance");
+  growing.cutPlacement.band = Finite(algorithm->GetCutBand(), "CutBand");
   return growing;
 }
 

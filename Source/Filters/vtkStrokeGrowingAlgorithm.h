@@ -9,6 +9,8 @@
  * in its panel when input 1 is not connected). Every vertex takes the label of the
  * stroke nearest to it under the metric, whose edge length grows with the change of the normal
  * (NormalWeight) and, strongly, with concave curvature (CurvatureWeight, CurvatureAugmentation).
+ * Where the fronts of two labels meet, a minimum cut moves the boundary onto the shortest and
+ * most concave way through the band around it (CutBand; kerf::placeCuts).
  * The labels are written as SegmentArrayName; output 1 holds the boundaries between labels.
  * kerf::ReadGrowingOptions reads the parameters.
  */
@@ -60,6 +62,14 @@ public:
   ///@}
 
   ///@{
+  /// Cut placement: the band between two labels in which a minimum cut places their boundary, as
+  /// the ratio of a vertex's metric distance to its nearest label over that to the second
+  /// nearest; 0 keeps the boundary where the fronts meet (the paper's rule). Default 0.3.
+  vtkSetClampMacro(CutBand, double, 0.0, 0.99);
+  vtkGetMacro(CutBand, double);
+  ///@}
+
+  ///@{
   /// The cell array of input 1 holding each stroke's label (named, not selected: see
   /// vtkHarmonicField). Default "Label".
   vtkSetStringMacro(StrokeLabelArrayName);
@@ -89,6 +99,7 @@ protected:
   int CurvatureAugmentation = 0;
   bool CurvaturePerEdge = false;
   double MaximumProjectionDistance = 0.05;
+  double CutBand = 0.3;
   char* StrokeLabelArrayName = nullptr;
   char* SegmentArrayName = nullptr;
 

@@ -7,8 +7,11 @@
 // computed once per size outside the timed loops, as the filter caches them on its surface.
 //   BM_RegionGrowing/<size>          kerf::growFromSeeds: every vertex labelled by its nearest
 //                                    stroke under the metric (the growing the goals name)
+//   BM_GrowingWithCuts/<size>        the growing with cut placement (the default, band 0.3), as
+//                                    kerf::growRegions runs it: kerf::nearestTwoLabels, then
+//                                    kerf::placeCuts
 //   BM_RegionGrowingFirstRun/<size>  kerf::growRegions on a new surface: descriptors, metric,
-//                                    stroke snapping and growing (up to 100k)
+//                                    stroke snapping, growing and cut placement (up to 100k)
 //   BM_VTKEdgeConnectivity/<size>    vtkPolyDataEdgeConnectivityFilter labelling all regions of
 //                                    the same mesh with the grown boundary's edges as barriers
 //                                    (the same two regions): the reference for labelling speed
@@ -135,6 +138,26 @@ void growing(benchmark::State& state, GrowingScene& scene)
   checkTwoLabels(state, labels);
 }
 
+void growingWithCuts(benchmark::State& state, GrowingScene& scene)
+{
+  const kerf::TriangleMesh& mesh = scene.surface->mesh();
+  std::vector<int> labels;
+  std::vector<double> distances;
+  for (auto _ : state)
+  {
+    const kerf::NearestLabels nearest = kerf::nearestTwoLabels(mesh, scene.edgeLengths, scene.seeds);
+    labels.assign(static_cast<std::size_t>(mesh.vertexCount()), -1);
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      labels[v] = nearest.first[v] >= 0 ? nearest.labels[nearest.first[v]] : -1;
+    }
+    distances = nearest.firstDistance;
+    kerf::placeCuts(mesh, nearest, kerf::CutPlacementOptions(), labels, distances);
+    benchmark::DoNotOptimize(labels.data());
+  }
+  checkTwoLabels(state, labels);
+}
+
 void firstRun(benchmark::State& state, GrowingScene& scene)
 {
   kerf::RegionGrowingResult result;
@@ -210,8 +233,9 @@ namespace benchmarks
 
 void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes)
 {
-  const std::array<std::pair<const char*, Body>, 4> cases = { {
+  const std::array<std::pair<const char*, Body>, 5> cases = { {
     { "BM_RegionGrowing", growing },
+    { "BM_GrowingWithCuts", growingWithCuts },
     { "BM_RegionGrowingFirstRun", firstRun },
     { "BM_VTKEdgeConnectivity", vtkEdgeConnectivity },
     { "BM_SnakeRefinement", snakeRefinement },

@@ -1,4 +1,4 @@
-// Region growing from labelled strokes: the neck of a two-lobe shape, three fingers, the nearest-stroke property, boundaries and errors.
+// Region growing from labelled strokes: the neck of a two-lobe shape, three fingers, the nearest-stroke property, cut placement, boundaries and errors.
 #include "Error.h"
 #include "Geodesic/GraphDistance.h"
 #include "Geometry/ClosestPoint.h"
@@ -163,6 +163,151 @@ TEST(RegionGrowing, EveryVertexTakesItsNearestStroke)
     }
     EXPECT_NEAR(distances[v], nearest, 1e-12 * (1.0 + nearest));
     EXPECT_NEAR(perLabel[labels[v]][v], nearest, 1e-12 * (1.0 + nearest)) << "vertex " << v;
+  }
+}
+
+namespace
+{
+std::vector<double> euclideanLengths(const TriangleMesh& mesh)
+{
+  std::vector<double> lengths(static_cast<std::size_t>(mesh.edgeCount()));
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const auto [a, b] = mesh.edgeVertices(e);
+    lengths[e] = (mesh.point(a) - mesh.point(b)).norm();
+  }
+  return lengths;
+}
+} // namespace
+
+TEST(RegionGrowing, NearestTwoLabelsAgreeWithADijkstraPerLabel)
+{
+  const ProtrusionsWithStrokes shape(3);
+  const Surface surface(shape.mesh);
+  const StrokeSeeds seeds = snapStrokes(shape.mesh, surface.locator(), shape.strokes, 0.0);
+  const NearestLabels nearest = nearestTwoLabels(shape.mesh, euclideanLengths(shape.mesh), seeds);
+  ASSERT_EQ(nearest.labels, (std::vector<int>{ 0, 1, 2, 3 }));
+  std::vector<std::vector<double>> perLabel;
+  for (int label = 0; label < 4; ++label)
+  {
+    std::vector<int> sources;
+    for (std::size_t i = 0; i < seeds.vertices.size(); ++i)
+    {
+      if (seeds.labels[i] == label)
+      {
+        sources.push_back(seeds.vertices[i]);
+      }
+    }
+    perLabel.push_back(edgeGraphDistances(shape.mesh, sources));
+  }
+  for (int v = 0; v < shape.mesh.vertexCount(); ++v)
+  {
+    std::vector<double> sorted;
+    for (const std::vector<double>& d : perLabel)
+    {
+      sorted.push_back(d[v]);
+    }
+    std::sort(sorted.begin(), sorted.end());
+    ASSERT_GE(nearest.first[v], 0);
+    ASSERT_GE(nearest.second[v], 0);
+    EXPECT_NE(nearest.first[v], nearest.second[v]);
+    EXPECT_NEAR(nearest.firstDistance[v], sorted[0], 1e-12 * (1.0 + sorted[0])) << "vertex " << v;
+    EXPECT_NEAR(nearest.secondDistance[v], sorted[1], 1e-12 * (1.0 + sorted[1])) << "vertex " << v;
+    EXPECT_NEAR(perLabel[nearest.first[v]][v], nearest.firstDistance[v], 1e-12 * (1.0 + sorted[0]));
+    EXPECT_NEAR(perLabel[nearest.second[v]][v], nearest.secondDistance[v], 1e-12 * (1.0 + sorted[1]));
+  }
+}
+
+TEST(RegionGrowing, CutPlacementMovesTheBoundaryIntoTheNeck)
+{
+  // Under plain edge lengths the fronts of the two strokes meet halfway, in the larger lobe,
+  // 0.3 or more below the neck; the minimum cut through the band finds the narrowest ring.
+  const DumbbellWithStrokes shape(5);
+  const Surface surface(shape.mesh);
+  const std::vector<double> lengths = euclideanLengths(shape.mesh);
+  const StrokeSeeds seeds = snapStrokes(shape.mesh, surface.locator(), shape.strokes, 0.0);
+  auto boundaryOf = [&](double band, double& nearestToNeck, double& farthestFromNeck, double& length) {
+    std::vector<int> labels;
+    std::vector<double> distances;
+    growFromSeeds(shape.mesh, lengths, seeds, labels, distances);
+    const std::vector<int> grown = labels;
+    if (band > 0.0)
+    {
+      CutPlacementOptions placement;
+      placement.band = band;
+      placeCuts(shape.mesh, nearestTwoLabels(shape.mesh, lengths, seeds), placement, labels, distances);
+    }
+    for (int v = 0; v < shape.mesh.vertexCount(); ++v)
+    {
+      // A relabelled vertex carries the distance to its new label's stroke.
+      if (labels[v] != grown[v])
+      {
+        EXPECT_GT(distances[v], 0.0);
+      }
+    }
+    const std::vector<int> faces = faceLabelsFromVertices(shape.mesh, labels, distances);
+    const std::vector<LabelBoundary> boundaries = labelBoundaries(shape.mesh, faces);
+    EXPECT_EQ(boundaries.size(), 1u);
+    nearestToNeck = 1e300;
+    farthestFromNeck = 0.0;
+    length = 0.0;
+    for (const LabelBoundary& boundary : boundaries)
+    {
+      EXPECT_TRUE(boundary.closed);
+      for (std::size_t i = 0; i < boundary.vertices.size(); ++i)
+      {
+        const Vector3& p = shape.mesh.point(boundary.vertices[i]);
+        nearestToNeck = std::min(nearestToNeck, std::abs(p.z() - shape.neckZ));
+        farthestFromNeck = std::max(farthestFromNeck, std::abs(p.z() - shape.neckZ));
+        length += (shape.mesh.point(boundary.vertices[(i + 1) % boundary.vertices.size()]) - p).norm();
+      }
+    }
+    return labels;
+  };
+  double nearest = 0.0, farthest = 0.0, length = 0.0;
+  boundaryOf(0.0, nearest, farthest, length);
+  EXPECT_GT(nearest, 0.25);
+  const double frontsLength = length;
+  for (double band : { 0.2, 0.3, 0.5 })
+  {
+    const std::vector<int> labels = boundaryOf(band, nearest, farthest, length);
+    // On the two vertex rings either side of the neck (0.084 above it and 0.099 below), and
+    // shorter than the fronts' boundary (the stretched icosphere's edges zigzag: 23.1 there).
+    EXPECT_LT(farthest, 0.1 * DumbbellWithStrokes::Radii[0]) << "band " << band;
+    EXPECT_LT(length, frontsLength * 0.75) << "band " << band;
+    EXPECT_EQ(boundaryOf(band, nearest, farthest, length), labels) << "not deterministic";
+  }
+}
+
+TEST(RegionGrowing, CutBandIsCheckedAndZeroKeepsTheFronts)
+{
+  const DumbbellWithStrokes shape(4);
+  const Surface surface(shape.mesh);
+  RegionGrowingOptions options;
+  options.cutPlacement.band = 0.0;
+  const RegionGrowingResult fronts = growRegions(surface, shape.strokes, options);
+  std::vector<int> labels;
+  std::vector<double> distances;
+  growFromSeeds(shape.mesh, surfaceIsophoticEdgeLengths(surface, options.metric), fronts.seeds, labels, distances);
+  EXPECT_EQ(fronts.vertexLabels, labels);
+  for (double bad : { -0.1, 1.0, std::numeric_limits<double>::quiet_NaN() })
+  {
+    options.cutPlacement.band = bad;
+    EXPECT_THROW(growRegions(surface, shape.strokes, options), Error) << bad;
+    CutPlacementOptions placement;
+    placement.band = bad;
+    const NearestLabels nearest =
+      nearestTwoLabels(shape.mesh, surfaceIsophoticEdgeLengths(surface, options.metric), fronts.seeds);
+    EXPECT_THROW(placeCuts(shape.mesh, nearest, placement, labels, distances), Error);
+    if (bad != 1.0)
+    {
+      placement.band = 0.3;
+      placement.dataWeight = bad;
+      EXPECT_THROW(growRegions(surface, shape.strokes, { options.metric, 0.0, placement }), Error) << bad;
+      placement.dataWeight = 0.1;
+      placement.convexWeight = bad;
+      EXPECT_THROW(growRegions(surface, shape.strokes, { options.metric, 0.0, placement }), Error) << bad;
+    }
   }
 }
 

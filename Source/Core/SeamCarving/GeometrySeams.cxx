@@ -6,13 +6,8 @@
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
 #include "Harmonic/LaplacianWeights.h"
+#include "Mesh/MinimumCut.h"
 #include "Mesh/Submesh.h"
-
-// Boost 1.74's edge iterators trip GCC 12's -Wmaybe-uninitialized inside the max-flow code.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -224,64 +219,18 @@ SeamContour vertexContour(
   return contour;
 }
 
-// Boost's max-flow graph: the region's vertices, then the source and the sink.
-using FlowTraits = boost::adjacency_list_traits<boost::vecS, boost::vecS, boost::directedS>;
-using FlowGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::directedS,
-  boost::property<boost::vertex_color_t, boost::default_color_type,
-    boost::property<boost::vertex_distance_t, long,
-      boost::property<boost::vertex_predecessor_t, FlowTraits::edge_descriptor>>>,
-  boost::property<boost::edge_capacity_t, double,
-    boost::property<boost::edge_residual_capacity_t, double,
-      boost::property<boost::edge_reverse_t, FlowTraits::edge_descriptor>>>>;
-
-struct MinCut
-{
-  double flow = 0.0;
-  std::vector<char> sourceSide; // per region vertex
-};
-
-// A minimum cut of the region's edge graph with the given capacities (Boykov and Kolmogorov
-// 2004); `sources` and `sinks` are tied to the terminals with capacity `terminal`.
-MinCut minimumCut(const TriangleMesh& mesh, const std::vector<double>& capacity, const std::vector<int>& sources,
+// A minimum cut of the region's edge graph with the given capacities (kerf::minimumCut);
+// `sources` and `sinks` are tied to the terminals with capacity `terminal`.
+MinimumCut minimumCut(const TriangleMesh& mesh, const std::vector<double>& capacity, const std::vector<int>& sources,
   const std::vector<int>& sinks, double terminal)
 {
-  const int n = mesh.vertexCount();
-  FlowGraph graph(static_cast<std::size_t>(n) + 2);
-  auto cap = boost::get(boost::edge_capacity, graph);
-  auto reverse = boost::get(boost::edge_reverse, graph);
-  auto addPair = [&](int a, int b, double forward, double backward) {
-    const auto e1 = boost::add_edge(a, b, graph).first;
-    const auto e2 = boost::add_edge(b, a, graph).first;
-    cap[e1] = forward;
-    cap[e2] = backward;
-    reverse[e1] = e2;
-    reverse[e2] = e1;
-  };
+  std::vector<std::array<int, 2>> edges(static_cast<std::size_t>(mesh.edgeCount()));
   for (int e = 0; e < mesh.edgeCount(); ++e)
   {
-    addPair(mesh.edgeVertices(e)[0], mesh.edgeVertices(e)[1], capacity[e], capacity[e]);
+    edges[e] = mesh.edgeVertices(e);
   }
-  for (int v : sources)
-  {
-    addPair(n, v, terminal, 0.0);
-  }
-  for (int v : sinks)
-  {
-    addPair(v, n + 1, terminal, 0.0);
-  }
-  MinCut cut;
-  cut.flow = boost::boykov_kolmogorov_max_flow(graph, n, n + 1);
-  auto color = boost::get(boost::vertex_color, graph);
-  cut.sourceSide.resize(n);
-  for (int v = 0; v < n; ++v)
-  {
-    // The source side: the vertices the residual graph reaches from the source.
-    cut.sourceSide[v] = color[v] == boost::color_traits<boost::default_color_type>::black() ? 1 : 0;
-  }
-  return cut;
+  return kerf::minimumCut(mesh.vertexCount(), edges, capacity, sources, sinks, terminal);
 }
-
-#pragma GCC diagnostic pop
 
 // The sector contours (Dekkers and Kobbelt 2014, 3.2.1): from equally spaced points of the
 // handle boundary, the shortest edge path to the next iso-contour's vertices, iso-contour after
@@ -638,7 +587,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
     pathEdges.push_back(edgeBetween(r, path[i], path[i + 1]));
   }
   result.ring.assign(mesh.faceCount(), -1);
-  auto crossesOnce = [&](const MinCut& cut) {
+  auto crossesOnce = [&](const MinimumCut& cut) {
     int changes = 0;
     for (std::size_t i = 0; i + 1 < path.size(); ++i)
     {
@@ -648,12 +597,12 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   };
   for (int k = 0; k < options.ringCount; ++k)
   {
-    MinCut best;
+    MinimumCut best;
     best.flow = infinite;
     bool found = false;
     if (options.search == RingCandidateSearch::GlobalCutFirst)
     {
-      MinCut global = minimumCut(r, capacity, modeling.handleLoop, modeling.fixedLoop, infinite);
+      MinimumCut global = minimumCut(r, capacity, modeling.handleLoop, modeling.fixedLoop, infinite);
       ++result.maxFlowCount;
       if (global.flow < 0.5 * infinite && crossesOnce(global))
       {
@@ -672,7 +621,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
         std::vector<int> sources = modeling.handleLoop, sinks = modeling.fixedLoop;
         sources.insert(sources.end(), path.begin(), path.begin() + static_cast<std::ptrdiff_t>(i) + 1);
         sinks.insert(sinks.end(), path.begin() + static_cast<std::ptrdiff_t>(i) + 1, path.end());
-        MinCut candidate = minimumCut(r, capacity, sources, sinks, infinite);
+        MinimumCut candidate = minimumCut(r, capacity, sources, sinks, infinite);
         ++result.maxFlowCount;
         if (candidate.flow < 0.5 * infinite && candidate.flow < best.flow)
         {

@@ -4,15 +4,18 @@
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
+#include "Mesh/MinimumCut.h"
 #include "Session/Surface.h"
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <queue>
 #include <set>
 #include <sstream>
+#include <cstdint>
 #include <unordered_map>
 #include <utility>
 
@@ -37,6 +40,19 @@ std::string numberText(double value)
   std::ostringstream text;
   text << value;
   return text.str();
+}
+
+void checkCutPlacementOptions(const CutPlacementOptions& options)
+{
+  if (!(options.band >= 0.0 && options.band < 1.0))
+  {
+    throw Error("the cut band must lie in [0, 1), not " + numberText(options.band));
+  }
+  if (!(options.convexWeight >= 0.0 && options.dataWeight >= 0.0) || !std::isfinite(options.convexWeight) ||
+    !std::isfinite(options.dataWeight))
+  {
+    throw Error("the cut placement's weights must be finite and not negative");
+  }
 }
 } // namespace
 
@@ -199,6 +215,280 @@ void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLeng
   }
 }
 
+NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds)
+{
+  if (static_cast<int>(edgeLengths.size()) != mesh.edgeCount())
+  {
+    throw Error("the edge lengths do not belong to this mesh");
+  }
+  const double infinity = std::numeric_limits<double>::infinity();
+  const std::size_t n = static_cast<std::size_t>(mesh.vertexCount());
+  NearestLabels nearest;
+  const std::set<int> distinct(seeds.labels.begin(), seeds.labels.end());
+  nearest.labels.assign(distinct.begin(), distinct.end());
+  nearest.first.assign(n, -1);
+  nearest.second.assign(n, -1);
+  nearest.firstDistance.assign(n, infinity);
+  nearest.secondDistance.assign(n, infinity);
+  // Entries (distance, label index << 32 | vertex); an entry is current while it matches its
+  // vertex's first or second label and distance.
+  using Entry = std::pair<double, std::uint64_t>;
+  std::vector<Entry> heapStorage;
+  heapStorage.reserve(2 * n);
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(std::greater<Entry>(), std::move(heapStorage));
+  auto push = [&queue](double d, int v, int l) {
+    queue.emplace(d, static_cast<std::uint64_t>(l) << 32 | static_cast<std::uint32_t>(v));
+  };
+  // Offers label l at distance d to vertex w; true when it enters w's two nearest.
+  // The search keeps each vertex's two labels together, one cache line for the four numbers.
+  struct Slot
+  {
+    double d1, d2;
+    int first, second;
+  };
+  std::vector<Slot> slots(n, Slot{ infinity, infinity, -1, -1 });
+  auto offer = [&slots](int w, int l, double d) {
+    Slot& slot = slots[static_cast<std::size_t>(w)];
+    int& first = slot.first;
+    int& second = slot.second;
+    double& d1 = slot.d1;
+    double& d2 = slot.d2;
+    if (l == first)
+    {
+      if (d < d1)
+      {
+        d1 = d;
+        return true;
+      }
+      return false;
+    }
+    if (d < d1)
+    {
+      second = first; // the old first is second now, whatever the old second was
+      d2 = d1;
+      first = l;
+      d1 = d;
+      return true;
+    }
+    if (d < d2)
+    {
+      second = l;
+      d2 = d;
+      return true;
+    }
+    return false;
+  };
+  for (std::size_t i = 0; i < seeds.vertices.size(); ++i)
+  {
+    const int v = seeds.vertices[i];
+    if (v < 0 || v >= mesh.vertexCount())
+    {
+      throw Error("seed vertex " + std::to_string(v) + " is not a vertex of the mesh");
+    }
+    const int l = static_cast<int>(
+      std::lower_bound(nearest.labels.begin(), nearest.labels.end(), seeds.labels[i]) - nearest.labels.begin());
+    if (offer(v, l, 0.0))
+    {
+      push(0.0, v, l);
+    }
+  }
+  while (!queue.empty())
+  {
+    const auto [d, key] = queue.top();
+    queue.pop();
+    const int v = static_cast<int>(key & 0xffffffffu);
+    const int l = static_cast<int>(key >> 32);
+    const Slot& slot = slots[static_cast<std::size_t>(v)];
+    const bool current = (l == slot.first && d == slot.d1) || (l == slot.second && d == slot.d2);
+    if (!current)
+    {
+      continue; // stale: v was reached by a shorter path, or l left its two nearest
+    }
+    const IndexRange neighbors = mesh.vertexNeighbors(v);
+    const IndexRange edges = mesh.vertexEdges(v);
+    for (std::size_t i = 0; i < neighbors.size(); ++i)
+    {
+      const double candidate = d + edgeLengths[static_cast<std::size_t>(edges[i])];
+      if (offer(neighbors[i], l, candidate))
+      {
+        push(candidate, neighbors[i], l);
+      }
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    nearest.first[v] = slots[v].first;
+    nearest.second[v] = slots[v].second;
+    nearest.firstDistance[v] = slots[v].d1;
+    nearest.secondDistance[v] = slots[v].d2;
+  }
+  return nearest;
+}
+
+void placeCuts(const TriangleMesh& mesh, const NearestLabels& nearest, const CutPlacementOptions& options,
+  std::vector<int>& labels, std::vector<double>& distances)
+{
+  checkCutPlacementOptions(options);
+  const double band = options.band;
+  const int n = mesh.vertexCount();
+  if (static_cast<int>(labels.size()) != n || static_cast<int>(distances.size()) != n ||
+    static_cast<int>(nearest.first.size()) != n || static_cast<int>(nearest.second.size()) != n ||
+    static_cast<int>(nearest.firstDistance.size()) != n || static_cast<int>(nearest.secondDistance.size()) != n)
+  {
+    throw Error("the labels, distances and nearest labels do not belong to this mesh");
+  }
+  // The freed vertices of each pair of labels (label indices, smaller first).
+  std::map<std::pair<int, int>, std::vector<int>> freed;
+  for (int v = 0; v < n; ++v)
+  {
+    const double d1 = nearest.firstDistance[v], d2 = nearest.secondDistance[v];
+    if (nearest.second[v] >= 0 && d1 > band * d2)
+    {
+      const int a = nearest.first[v], b = nearest.second[v];
+      freed[{ std::min(a, b), std::max(a, b) }].push_back(v);
+    }
+  }
+  if (freed.empty())
+  {
+    return;
+  }
+  // Capacities: the dual edge's length over 1 + the dihedral term's share of its mean (Katz and
+  // Tal 2003, section 4.2), so concave edges are cheap to cut. Computed where the cuts need them,
+  // with only the means over the whole mesh, so that a narrow band costs little on a large mesh.
+  auto centroidOf = [&mesh](int f) {
+    const Triangle& t = mesh.triangle(f);
+    return Vector3((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0);
+  };
+  auto normalOf = [&mesh](int f) {
+    const Triangle& t = mesh.triangle(f);
+    const Vector3 c = (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0]));
+    const double length = c.norm();
+    return length > 0.0 && std::isfinite(length) ? Vector3(c / length) : Vector3(0.0, 0.0, 0.0);
+  };
+  auto dihedralOf = [&](int e) {
+    if (mesh.edgeFaceCount(e) != 2)
+    {
+      return 0.0;
+    }
+    const auto& faces = mesh.edgeFaces(e);
+    const Vector3 n1 = normalOf(faces[0]);
+    const bool concave = n1.dot(centroidOf(faces[1]) - centroidOf(faces[0])) > 0.0;
+    return (concave ? 1.0 : options.convexWeight) * std::max(0.0, 1.0 - n1.dot(normalOf(faces[1])));
+  };
+  double dihedralSum = 0.0, lengthSum = 0.0, areaSum = 0.0;
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const auto [a, b] = mesh.edgeVertices(e);
+    dihedralSum += dihedralOf(e);
+    lengthSum += (mesh.point(a) - mesh.point(b)).norm();
+  }
+  auto areaOf = [&mesh](int f) {
+    const Triangle& t = mesh.triangle(f);
+    const double area = (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm() / 2.0;
+    return std::isfinite(area) ? area : 0.0;
+  };
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    areaSum += areaOf(f);
+  }
+  const double dihedralMean = mesh.edgeCount() > 0 ? dihedralSum / mesh.edgeCount() : 0.0;
+  const double lengthMean = mesh.edgeCount() > 0 && lengthSum > 0.0 ? lengthSum / mesh.edgeCount() : 1.0;
+  // Areas: a third of each corner's faces, over the mean (3 * area / vertices).
+  const double areaMean = n > 0 && areaSum > 0.0 ? areaSum / n : 1.0;
+  auto capacityOf = [&](int e) {
+    const auto [a, b] = mesh.edgeVertices(e);
+    const Vector3 middle = (mesh.point(a) + mesh.point(b)) / 2.0;
+    const auto& faces = mesh.edgeFaces(e);
+    double dual = 0.0;
+    for (int j = 0; j < std::min(mesh.edgeFaceCount(e), 2); ++j)
+    {
+      dual += (centroidOf(faces[j]) - middle).norm();
+    }
+    return dual / lengthMean / (dihedralMean > 0.0 ? 1.0 + dihedralOf(e) / dihedralMean : 1.0);
+  };
+  auto vertexArea = [&](int v) {
+    double sum = 0.0;
+    for (int f : mesh.vertexFaces(v))
+    {
+      sum += areaOf(f) / 3.0;
+    }
+    return sum / areaMean;
+  };
+  const double infinite = std::numeric_limits<double>::max() / 4.0;
+  std::vector<int> node(static_cast<std::size_t>(n), -1);
+  std::vector<char> isFreed(static_cast<std::size_t>(n), 0);
+  for (const auto& [pair, vertices] : freed)
+  {
+    const int labelA = nearest.labels[pair.first], labelB = nearest.labels[pair.second];
+    std::vector<int> nodes = vertices;
+    std::vector<double> sourceCapacity, sinkCapacity;
+    std::vector<std::array<int, 2>> edges;
+    std::vector<double> edgeCapacity;
+    bool anySource = false, anySink = false;
+    for (std::size_t i = 0; i < vertices.size(); ++i)
+    {
+      const int v = vertices[i];
+      node[v] = static_cast<int>(i);
+      isFreed[v] = 1;
+      // The data term: what giving v the farther label costs, its distances' relative difference.
+      const double da = nearest.first[v] == pair.first ? nearest.firstDistance[v] : nearest.secondDistance[v];
+      const double db = nearest.first[v] == pair.first ? nearest.secondDistance[v] : nearest.firstDistance[v];
+      const double cost = options.dataWeight * vertexArea(v) * std::abs(da - db) / (da + db);
+      sourceCapacity.push_back(da < db ? cost : 0.0);
+      sinkCapacity.push_back(da < db ? 0.0 : cost);
+    }
+    for (int v : vertices)
+    {
+      const IndexRange neighbors = mesh.vertexNeighbors(v);
+      const IndexRange vertexEdges = mesh.vertexEdges(v);
+      for (std::size_t j = 0; j < neighbors.size(); ++j)
+      {
+        const int w = neighbors[j];
+        if (isFreed[w] && w < v)
+        {
+          continue; // the edge is added from its smaller end
+        }
+        if (!isFreed[w])
+        {
+          if (labels[w] != labelA && labels[w] != labelB)
+          {
+            continue; // a third label's vertex: no terminal for this pair
+          }
+          if (node[w] < 0)
+          {
+            node[w] = static_cast<int>(nodes.size());
+            nodes.push_back(w);
+            const bool isA = labels[w] == labelA;
+            sourceCapacity.push_back(isA ? infinite : 0.0);
+            sinkCapacity.push_back(isA ? 0.0 : infinite);
+            anySource = anySource || isA;
+            anySink = anySink || !isA;
+          }
+        }
+        edges.push_back({ node[v], node[w] });
+        edgeCapacity.push_back(capacityOf(vertexEdges[j]));
+      }
+    }
+    if (anySource && anySink)
+    {
+      const MinimumCut cut =
+        minimumCut(static_cast<int>(nodes.size()), edges, edgeCapacity, sourceCapacity, sinkCapacity);
+      for (std::size_t i = 0; i < vertices.size(); ++i)
+      {
+        const int v = vertices[i];
+        const int chosen = cut.sourceSide[i] ? pair.first : pair.second;
+        labels[v] = nearest.labels[chosen];
+        distances[v] = chosen == nearest.first[v] ? nearest.firstDistance[v] : nearest.secondDistance[v];
+      }
+    }
+    for (int v : nodes)
+    {
+      node[v] = -1;
+      isFreed[v] = 0;
+    }
+  }
+}
+
 std::vector<int> faceLabelsFromVertices(
   const TriangleMesh& mesh, const std::vector<int>& vertexLabels, const std::vector<double>& distances)
 {
@@ -239,6 +529,7 @@ RegionGrowingResult growRegions(
   {
     throw Error("the maximum distance of stroke points must be a non-negative number");
   }
+  checkCutPlacementOptions(options.cutPlacement);
   const TriangleMesh& mesh = surface.mesh();
   RegionGrowingResult result;
   result.seeds = snapStrokes(mesh, surface.locator(), strokes, options.maximumDistance);
@@ -249,8 +540,24 @@ RegionGrowingResult growRegions(
     throw Error("every stroke has the label " + std::to_string(result.labels.front()) +
       "; region growing needs strokes of at least two labels");
   }
-  growFromSeeds(mesh, surfaceIsophoticEdgeLengths(surface, options.metric), result.seeds, result.vertexLabels,
-    result.distances);
+  const std::vector<double>& edgeLengths = surfaceIsophoticEdgeLengths(surface, options.metric);
+  if (options.cutPlacement.band > 0.0)
+  {
+    // The nearest label of the two-label search is the growing's (up to which of two labels at
+    // exactly equal distance reached a vertex first).
+    const NearestLabels nearest = nearestTwoLabels(mesh, edgeLengths, result.seeds);
+    result.vertexLabels.assign(static_cast<std::size_t>(mesh.vertexCount()), -1);
+    result.distances = nearest.firstDistance;
+    for (int v = 0; v < mesh.vertexCount(); ++v)
+    {
+      result.vertexLabels[v] = nearest.first[v] >= 0 ? nearest.labels[nearest.first[v]] : -1;
+    }
+    placeCuts(mesh, nearest, options.cutPlacement, result.vertexLabels, result.distances);
+  }
+  else
+  {
+    growFromSeeds(mesh, edgeLengths, result.seeds, result.vertexLabels, result.distances);
+  }
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
     if (result.vertexLabels[v] < 0)

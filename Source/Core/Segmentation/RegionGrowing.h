@@ -40,12 +40,29 @@ struct StrokeSeeds
 StrokeSeeds snapStrokes(const TriangleMesh& mesh, const ClosestPointLocator& locator,
   const std::vector<LabelledStroke>& strokes, double maximumDistance);
 
+/// Parameters of cut placement (kerf::placeCuts).
+struct CutPlacementOptions
+{
+  /// The band between two labels in which a minimum cut places their boundary, as the ratio of a
+  /// vertex's distance to its nearest label over its distance to the second nearest (in [0, 1);
+  /// 0 keeps the boundary where the fronts meet, the paper's rule).
+  double band = 0.3;
+  /// The dihedral term's factor on convex edges (concave ones count whole).
+  double convexWeight = 0.05;
+  /// The weight of the data term (what giving a vertex its farther label costs) against the
+  /// boundary's length; without it a short stroke's part can lose all but a rim-bounded piece
+  /// (the armadillo's face without the rest of its head).
+  double dataWeight = 0.1;
+};
+
 /// Parameters of region growing.
 struct RegionGrowingOptions
 {
   IsophoticMetricOptions metric;
   /// Stroke points farther than this from the surface are refused (length units; 0: no limit).
   double maximumDistance = 0.0;
+  /// Cut placement after the growing; a band of 0 turns it off.
+  CutPlacementOptions cutPlacement;
 };
 
 /// A grown segmentation.
@@ -73,13 +90,45 @@ struct RegionGrowingResult
 void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds,
   std::vector<int>& labels, std::vector<double>& distances);
 
+/// The two nearest labels of every vertex under edge lengths (a Dijkstra search that settles each
+/// vertex once per label, at most twice): `first`/`second` are indices into `labels` (-1 where
+/// fewer labels reach), `firstDistance`/`secondDistance` their distances (infinity where none).
+struct NearestLabels
+{
+  std::vector<int> labels; ///< the distinct seed labels, ascending
+  std::vector<int> first, second;
+  std::vector<double> firstDistance, secondDistance;
+};
+NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds);
+
+/// Cut placement, an addition to the paper's growing: where the fronts of two labels meet, the
+/// boundary lies halfway between their strokes whatever the shape. Every vertex whose distance to
+/// its nearest label is more than `band` times its distance to the second nearest is freed, and
+/// the freed vertices of each pair of labels are given to one or the other by a minimum cut
+/// (Boykov and Kolmogorov 2004) of an energy with two terms, each made dimensionless:
+/// - the boundary: per edge cut, the length of its dual (centroid to edge midpoint to centroid)
+///   over the mean edge length, divided by 1 + its dihedral term over the mesh's mean (Katz and
+///   Tal 2003: 1 - cos of the dihedral angle, times `convexWeight` where the edge is convex), so
+///   the boundary takes the shortest and most concave way through the band;
+/// - the data: per freed vertex given its farther label, `dataWeight` times its area over the
+///   mean vertex area times |d_a - d_b| / (d_a + d_b), so the cut does not stray from the
+///   fronts for a small saving of length.
+/// Vertices outside the band keep their labels and are the cut's terminals. `nearest` is
+/// nearestTwoLabels of the strokes' seeds; `labels` and `distances` are the growing's
+/// (growFromSeeds, or `nearest`'s first labels); a relabelled vertex takes the distance to its
+/// new label. Throws kerf::Error for a band outside [0, 1), negative weights or arrays of
+/// another mesh.
+void placeCuts(const TriangleMesh& mesh, const NearestLabels& nearest, const CutPlacementOptions& options,
+  std::vector<int>& labels, std::vector<double>& distances);
+
 /// Face labels from vertex labels: the label two or three corners share; a face whose three
 /// corners differ takes the label of the corner nearest to its stroke (smallest distance, then
 /// smallest label).
 std::vector<int> faceLabelsFromVertices(
   const TriangleMesh& mesh, const std::vector<int>& vertexLabels, const std::vector<double>& distances);
 
-/// Region growing on a surface (its descriptors and metric lengths are cached there). Throws
+/// Region growing on a surface (its descriptors and metric lengths are cached there), then, with
+/// a band above 0, cut placement (kerf::placeCuts). Throws
 /// kerf::Error for the stroke problems of snapStrokes and for strokes of fewer than two labels.
 RegionGrowingResult growRegions(
   const Surface& surface, const std::vector<LabelledStroke>& strokes, const RegionGrowingOptions& options);
