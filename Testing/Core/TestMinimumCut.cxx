@@ -71,6 +71,8 @@ TEST(MinimumCut, RefusesBadGraphs)
 {
   const std::vector<std::array<int, 2>> edges{ { { 0, 1 } } };
   EXPECT_THROW(minimumCut(2, edges, {}, std::vector<int>{ 0 }, std::vector<int>{ 1 }, 1.0), Error);
+  EXPECT_THROW(minimumCut(2, edges, { -1.0 }, std::vector<int>{ 0 }, std::vector<int>{ 1 }, 1.0), Error);
+  EXPECT_THROW(minimumCut(-1, {}, {}, std::vector<int>{}, std::vector<int>{}, 1.0), Error);
   EXPECT_THROW(minimumCut(2, { { { 0, 2 } } }, { 1.0 }, std::vector<int>{ 0 }, std::vector<int>{ 1 }, 1.0), Error);
   EXPECT_THROW(minimumCut(2, edges, { 1.0 }, std::vector<int>{ 5 }, std::vector<int>{ 1 }, 1.0), Error);
   EXPECT_THROW(minimumCut(2, edges, { 1.0 }, std::vector<double>{ 1.0 }, std::vector<double>{ 0.0, 1.0 }), Error);

@@ -21,6 +21,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <exception>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -378,6 +379,31 @@ int wholeNumber(const MethodParameters& parameters, const std::string& name, int
     : throw Error("the method parameter '" + name + "' must be a whole number below 1000, not '" + text + "'");
 }
 
+// A method parameter in [0, 1): the whole text a number.
+double fraction(const MethodParameters& parameters, const std::string& name, double fallback)
+{
+  const std::string text = parameters.text(name, "");
+  if (text.empty())
+  {
+    return fallback;
+  }
+  std::size_t used = 0;
+  double value = -1.0;
+  try
+  {
+    value = std::stod(text, &used);
+  }
+  catch (const std::exception&)
+  {
+    used = 0;
+  }
+  if (used != text.size() || !(value >= 0.0 && value < 1.0))
+  {
+    throw Error("the method parameter '" + name + "' must be a number in [0, 1), not '" + text + "'");
+  }
+  return value;
+}
+
 // Easy Mesh Cutting (Ji et al. 2006) with a simulated user: one stroke per segment of the input
 // human along its innermost faces, then `corrections` rounds in which a stroke is added inside
 // the wrongly labelled faces of each segment (through their innermost ones), as a user corrects
@@ -392,8 +418,7 @@ MethodOutput segmentWithRegionGrowing(
   metric.curvatureWeight = parameters.positive("curvature-weight", metric.curvatureWeight);
   metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
   metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
-  options.growing.cutPlacement.band =
-    std::stod(parameters.text("cut-band", std::to_string(options.growing.cutPlacement.band)));
+  options.growing.cutPlacement.band = fraction(parameters, "cut-band", options.growing.cutPlacement.band);
   const double depth = parameters.positive("depth", 0.2);
   const int corrections = wholeNumber(parameters, "corrections", 3);
   const TriangleMesh& mesh = c.surface->mesh();

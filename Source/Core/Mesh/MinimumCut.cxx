@@ -32,9 +32,16 @@ MinimumCut cutWithTerminalArcs(int nodeCount, const std::vector<std::array<int, 
   const std::vector<double>& capacity, const std::vector<std::pair<int, double>>& sourceArcs,
   const std::vector<std::pair<int, double>>& sinkArcs)
 {
-  if (capacity.size() != edges.size())
+  if (capacity.size() != edges.size() || nodeCount < 0)
   {
-    throw Error("a minimum cut needs one capacity per edge");
+    throw Error("a minimum cut needs a node count that is not negative and one capacity per edge");
+  }
+  for (double c : capacity)
+  {
+    if (!(c >= 0.0))
+    {
+      throw Error("an edge capacity of the minimum cut's graph is negative or not a number");
+    }
   }
   const int n = nodeCount;
   FlowGraph graph(static_cast<std::size_t>(n) + 2);

@@ -113,7 +113,10 @@ NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<doubl
 /// - the data: per freed vertex given its farther label, `dataWeight` times its area over the
 ///   mean vertex area times |d_a - d_b| / (d_a + d_b), so the cut does not stray from the
 ///   fronts for a small saving of length.
-/// Vertices outside the band keep their labels and are the cut's terminals. `nearest` is
+/// Vertices outside the band keep their labels and are the cut's terminals; the pairs are taken
+/// in label order, and a vertex freed for another pair is a terminal with its label at that
+/// moment (grown, or placed by an earlier pair's cut); a freed vertex the cut leaves undecided
+/// (no flow reaches it) takes the larger label of its pair. `nearest` is
 /// nearestTwoLabels of the strokes' seeds; `labels` and `distances` are the growing's
 /// (growFromSeeds, or `nearest`'s first labels); a relabelled vertex takes the distance to its
 /// new label. Throws kerf::Error for a band outside [0, 1), negative weights or arrays of
