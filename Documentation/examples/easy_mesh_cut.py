@@ -1,8 +1,9 @@
 # Cut the armadillo's head from its body with Easy Mesh Cut, in pvpython or pvbatch:
 #   PV_PLUGIN_PATH=build/lib/paraview-5.11/plugins/Kerf pvpython Documentation/examples/easy_mesh_cut.py [OUT.png]
-# The strokes of Data/armadillo-head-strokes.vtk: label 1 along the face, label 0 down the chest
-# and down the shell's back. Prints the faces of each part and the boundary's length, grown and
-# refined as a snake; with OUT.png, saves a picture of the parts, the strokes and the boundary.
+# The strokes of Data/armadillo-head-strokes.vtk: label 1 along the face and over the crown,
+# label 0 down the chest and down the shell's back. Prints the faces of each part and the
+# boundary's length, grown and refined as a snake; with OUT.png, saves a picture of the parts, the
+# strokes and the boundary.
 import os
 import sys
 

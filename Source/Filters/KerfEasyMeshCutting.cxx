@@ -60,6 +60,17 @@ RegionGrowingOptions ReadGrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, do
   growing.metric.curvaturePerEdge = algorithm->GetCurvaturePerEdge();
   growing.maximumDistance =
     RelativeDistance(algorithm->GetMaximumProjectionDistance(), diagonal, "MaximumProjectionDistance");
+  switch (algorithm->GetBoundaryPlacement())
+  {
+    case vtkStrokeGrowingAlgorithm::BOUNDARY_FRONTS:
+      growing.placement = BoundaryPlacement::Fronts;
+      break;
+    case vtkStrokeGrowingAlgorithm::BOUNDARY_MINIMUM_CUT:
+      growing.placement = BoundaryPlacement::MinimumCut;
+      break;
+    default:
+      growing.placement = BoundaryPlacement::RandomWalks;
+  }
   growing.cutPlacement.band = Finite(algorithm->GetCutBand(), "CutBand");
   return growing;
 }

@@ -107,6 +107,11 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     output->GetCellData()->AddArray(kerf::MakeIntArray(this->SegmentArrayName, result.faceLabels));
     output->GetCellData()->SetActiveScalars(this->SegmentArrayName);
     output->GetPointData()->AddArray(kerf::MakeArray("IsophoticDistance", surface.ToInputPoints(result.distances)));
+    if (!result.growing.probabilities.empty())
+    {
+      output->GetPointData()->AddArray(
+        kerf::MakeArray("Probability", surface.ToInputPoints(result.growing.probabilities)));
+    }
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SnakeSweeps", static_cast<double>(result.snake.sweeps)));
 
     kerf::WriteLabelBoundaries(result.boundaries, vtkPolyData::GetData(outputVector, 1));

@@ -56,6 +56,11 @@ int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputV
     output->GetPointData()->AddArray(
       kerf::MakeIntArray(this->SegmentArrayName, surface.ToInputPoints(result.growing.vertexLabels)));
     output->GetPointData()->AddArray(kerf::MakeArray("IsophoticDistance", surface.ToInputPoints(result.distances)));
+    if (!result.growing.probabilities.empty())
+    {
+      output->GetPointData()->AddArray(
+        kerf::MakeArray("Probability", surface.ToInputPoints(result.growing.probabilities)));
+    }
     output->GetFieldData()->AddArray(
       kerf::MakeFieldValue("UnreachableVertices", static_cast<double>(result.growing.unreachableVertices)));
     kerf::WriteLabelBoundaries(result.boundaries, vtkPolyData::GetData(outputVector, 1));

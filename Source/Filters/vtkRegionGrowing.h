@@ -5,15 +5,19 @@
  * The first half of Easy Mesh Cut, for pipelines that refine or inspect the grown parts on their
  * own (vtkRegionGrowing -> vtkSnakeRefinement gives what vtkEasyMeshCut gives in one step). Each
  * stroke (a polyline of input 1, or a point of a vertex cell: a click) carries a label in the cell array
- * named by StrokeLabelArrayName. Every vertex takes the label of the stroke nearest to it under
- * the improved isophotic metric (sections 3 and 4.2), a length that grows with the change of the
- * normal and, strongly, with concave curvature, so parts meet along concave creases. A triangle
- * takes the label two or three of its corners share; one whose three corners differ takes the
- * label of the corner nearest to its stroke.
+ * named by StrokeLabelArrayName. The fronts grow from the strokes under the improved isophotic
+ * metric (sections 3 and 4.2), a length that grows with the change of the normal and, strongly,
+ * with concave curvature. By default (BoundaryPlacement random walks) each vertex then takes the
+ * label a random walk from it on the concavity-aware Laplacian most likely reaches first, and each
+ * triangle the label of largest probability summed over its corners. With the paper's rule
+ * (fronts) every vertex takes the label of its nearest stroke, a triangle the label two or three
+ * of its corners share, and one whose three corners differ the label of the corner nearest to its
+ * stroke.
  *
  * Output 0: the surface with the point and cell arrays SegmentArrayName (the label of each vertex
- * and triangle, -1 where no stroke reaches: a component without strokes) and the point array
- * "IsophoticDistance" (the metric distance to the nearest stroke, -1 where none reaches), field
+ * and triangle, -1 where no stroke reaches: a component without strokes), the point array
+ * "IsophoticDistance" (the metric distance to the nearest stroke, -1 where none reaches) and, with
+ * random walks, "Probability" (the probability of each point's label), field
  * data "UnreachableVertices". Output 1: the boundaries between labels along mesh edges, as
  * polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller label on
  * the left seen from outside).

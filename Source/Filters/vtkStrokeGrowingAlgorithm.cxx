@@ -41,6 +41,7 @@ void vtkStrokeGrowingAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CurvatureAugmentation: " << this->CurvatureAugmentation << "\n";
   os << indent << "CurvaturePerEdge: " << this->CurvaturePerEdge << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
+  os << indent << "BoundaryPlacement: " << this->BoundaryPlacement << "\n";
   os << indent << "CutBand: " << this->CutBand << "\n";
   os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";

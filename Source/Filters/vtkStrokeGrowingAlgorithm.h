@@ -9,8 +9,11 @@
  * in its panel when input 1 is not connected). Every vertex takes the label of the
  * stroke nearest to it under the metric, whose edge length grows with the change of the normal
  * (NormalWeight) and, strongly, with concave curvature (CurvatureWeight, CurvatureAugmentation).
- * Where the fronts of two labels meet, a minimum cut moves the boundary onto the shortest and
- * most concave way through the band around it (CutBand; kerf::placeCuts).
+ * BoundaryPlacement says where the boundaries between labels go: by default each vertex and
+ * face takes the label that a random walk from it, on the concavity-aware Laplacian, most likely
+ * reaches first (kerf::randomWalkLabels), so parts end at concave creases rather than halfway
+ * between strokes; or where the fronts meet (the paper's rule); or where the fronts meet moved by
+ * a minimum cut through the band around them (CutBand; kerf::placeCuts).
  * The labels are written as SegmentArrayName; output 1 holds the boundaries between labels.
  * kerf::ReadGrowingOptions reads the parameters.
  */
@@ -61,8 +64,30 @@ public:
   vtkGetMacro(MaximumProjectionDistance, double);
   ///@}
 
+  /// Where the boundaries between labels go (BoundaryPlacement).
+  enum BoundaryPlacements
+  {
+    /// Where the fronts meet under the metric (the paper's rule).
+    BOUNDARY_FRONTS = 0,
+    /// The fronts, moved by a minimum cut through the band where they meet (CutBand).
+    BOUNDARY_MINIMUM_CUT = 1,
+    /// Random walks from the strokes on the concavity-aware Laplacian.
+    BOUNDARY_RANDOM_WALKS = 2
+  };
+
   ///@{
-  /// Cut placement: the band between two labels in which a minimum cut places their boundary, as
+  /// Where the boundaries between labels go: BOUNDARY_FRONTS, BOUNDARY_MINIMUM_CUT or
+  /// BOUNDARY_RANDOM_WALKS. Default BOUNDARY_RANDOM_WALKS. With random walks the output gets a
+  /// point array "Probability", the probability of each point's label.
+  vtkSetClampMacro(BoundaryPlacement, int, BOUNDARY_FRONTS, BOUNDARY_RANDOM_WALKS);
+  vtkGetMacro(BoundaryPlacement, int);
+  void SetBoundaryPlacementToFronts() { this->SetBoundaryPlacement(BOUNDARY_FRONTS); }
+  void SetBoundaryPlacementToMinimumCut() { this->SetBoundaryPlacement(BOUNDARY_MINIMUM_CUT); }
+  void SetBoundaryPlacementToRandomWalks() { this->SetBoundaryPlacement(BOUNDARY_RANDOM_WALKS); }
+  ///@}
+
+  ///@{
+  /// Cut placement (BOUNDARY_MINIMUM_CUT): the band between two labels in which a minimum cut places their boundary, as
   /// the ratio of a vertex's metric distance to its nearest label over that to the second
   /// nearest; 0 keeps the boundary where the fronts meet (the paper's rule). Default 0.3.
   vtkSetClampMacro(CutBand, double, 0.0, 0.99);
@@ -99,6 +124,7 @@ protected:
   int CurvatureAugmentation = 0;
   bool CurvaturePerEdge = false;
   double MaximumProjectionDistance = 0.05;
+  int BoundaryPlacement = BOUNDARY_RANDOM_WALKS;
   double CutBand = 0.3;
   char* StrokeLabelArrayName = nullptr;
   char* SegmentArrayName = nullptr;

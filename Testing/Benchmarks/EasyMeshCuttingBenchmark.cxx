@@ -7,11 +7,15 @@
 // computed once per size outside the timed loops, as the filter caches them on its surface.
 //   BM_RegionGrowing/<size>          kerf::growFromSeeds: every vertex labelled by its nearest
 //                                    stroke under the metric (the growing the goals name)
-//   BM_GrowingWithCuts/<size>        the growing with cut placement (the default, band 0.3), as
+//   BM_GrowingWithCuts/<size>        the growing with cut placement (band 0.3), as
 //                                    kerf::growRegions runs it: kerf::nearestTwoLabels, then
 //                                    kerf::placeCuts
+//   BM_GrowingWithRandomWalks/<size> the growing, then the random walks (the default placement),
+//                                    as kerf::growRegions runs them: kerf::growFromSeeds, then
+//                                    kerf::randomWalkLabels on the surface's cached
+//                                    concavity-aware weights (one factorization, two solves)
 //   BM_RegionGrowingFirstRun/<size>  kerf::growRegions on a new surface: descriptors, metric,
-//                                    stroke snapping, growing and cut placement (up to 100k)
+//                                    stroke snapping, growing and the random walks (up to 100k)
 //   BM_VTKEdgeConnectivity/<size>    vtkPolyDataEdgeConnectivityFilter labelling all regions of
 //                                    the same mesh with the grown boundary's edges as barriers
 //                                    (the same two regions): the reference for labelling speed
@@ -23,6 +27,7 @@
 #include "KerfBenchmarks.h"
 
 #include "Segmentation/IsophoticMetric.h"
+#include "Segmentation/RandomWalk.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Segmentation/SnakeRefinement.h"
 #include "Session/Surface.h"
@@ -158,6 +163,22 @@ void growingWithCuts(benchmark::State& state, GrowingScene& scene)
   checkTwoLabels(state, labels);
 }
 
+void growingWithRandomWalks(benchmark::State& state, GrowingScene& scene)
+{
+  const kerf::TriangleMesh& mesh = scene.surface->mesh();
+  const std::vector<double>& weights = scene.surface->laplacianWeights(kerf::RegionGrowingOptions().walkWeights).weights;
+  std::vector<int> labels;
+  std::vector<double> distances;
+  kerf::RandomWalkLabelling walks;
+  for (auto _ : state)
+  {
+    kerf::growFromSeeds(mesh, scene.edgeLengths, scene.seeds, labels, distances);
+    walks = kerf::randomWalkLabels(mesh, weights, scene.seeds.vertices, scene.seeds.labels);
+    benchmark::DoNotOptimize(walks.vertexLabels.data());
+  }
+  checkTwoLabels(state, walks.vertexLabels);
+}
+
 void firstRun(benchmark::State& state, GrowingScene& scene)
 {
   kerf::RegionGrowingResult result;
@@ -233,9 +254,10 @@ namespace benchmarks
 
 void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes)
 {
-  const std::array<std::pair<const char*, Body>, 5> cases = { {
+  const std::array<std::pair<const char*, Body>, 6> cases = { {
     { "BM_RegionGrowing", growing },
     { "BM_GrowingWithCuts", growingWithCuts },
+    { "BM_GrowingWithRandomWalks", growingWithRandomWalks },
     { "BM_RegionGrowingFirstRun", firstRun },
     { "BM_VTKEdgeConnectivity", vtkEdgeConnectivity },
     { "BM_SnakeRefinement", snakeRefinement },

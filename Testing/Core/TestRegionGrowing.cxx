@@ -20,83 +20,104 @@ using namespace kerf;
 using kerf::test::DumbbellWithStrokes;
 using kerf::test::ProtrusionsWithStrokes;
 
+namespace
+{
+const BoundaryPlacement Placements[] = { BoundaryPlacement::Fronts, BoundaryPlacement::MinimumCut,
+  BoundaryPlacement::RandomWalks };
+
+RegionGrowingOptions placedBy(BoundaryPlacement placement)
+{
+  RegionGrowingOptions options;
+  options.placement = placement;
+  return options;
+}
+} // namespace
+
 TEST(RegionGrowing, TwoStrokesMeetInTheNeck)
 {
   const DumbbellWithStrokes shape(5);
   const Surface surface(shape.mesh);
-  const RegionGrowingResult result = growRegions(surface, shape.strokes, {});
-  EXPECT_EQ(result.unreachableVertices, 0);
-  EXPECT_EQ(result.labels, (std::vector<int>{ 1, 2 }));
-  // Every face labelled, each lobe with its own stroke's label.
-  for (int f = 0; f < shape.mesh.faceCount(); ++f)
+  for (BoundaryPlacement placement : Placements)
   {
-    const Triangle& t = shape.mesh.triangle(f);
-    const double z = (shape.mesh.point(t[0]).z() + shape.mesh.point(t[1]).z() + shape.mesh.point(t[2]).z()) / 3.0;
-    ASSERT_TRUE(result.faceLabels[f] == 1 || result.faceLabels[f] == 2) << "face " << f;
-    if (std::abs(z - shape.neckZ) > 0.1)
+    SCOPED_TRACE(boundaryPlacementName(placement));
+    const RegionGrowingResult result = growRegions(surface, shape.strokes, placedBy(placement));
+    EXPECT_EQ(result.unreachableVertices, 0);
+    EXPECT_EQ(result.labels, (std::vector<int>{ 1, 2 }));
+    // Every face labelled, each lobe with its own stroke's label.
+    for (int f = 0; f < shape.mesh.faceCount(); ++f)
     {
-      EXPECT_EQ(result.faceLabels[f], z < shape.neckZ ? 1 : 2) << "face " << f << " at z = " << z;
+      const Triangle& t = shape.mesh.triangle(f);
+      const double z = (shape.mesh.point(t[0]).z() + shape.mesh.point(t[1]).z() + shape.mesh.point(t[2]).z()) / 3.0;
+      ASSERT_TRUE(result.faceLabels[f] == 1 || result.faceLabels[f] == 2) << "face " << f;
+      if (std::abs(z - shape.neckZ) > 0.1)
+      {
+        EXPECT_EQ(result.faceLabels[f], z < shape.neckZ ? 1 : 2) << "face " << f << " at z = " << z;
+      }
     }
+    // One closed boundary, all of it within 10% of the lobe radius (0.08) of the narrowest ring.
+    const std::vector<LabelBoundary> boundaries = labelBoundaries(shape.mesh, result.faceLabels);
+    ASSERT_EQ(boundaries.size(), 1u);
+    EXPECT_TRUE(boundaries[0].closed);
+    EXPECT_EQ(boundaries[0].leftLabel, 1);
+    EXPECT_EQ(boundaries[0].rightLabel, 2);
+    double farthest = 0.0;
+    for (int v : boundaries[0].vertices)
+    {
+      farthest = std::max(farthest, std::abs(shape.mesh.point(v).z() - shape.neckZ));
+    }
+    EXPECT_LT(farthest, 0.1 * DumbbellWithStrokes::Radii[1]);
+    // Distances: 0 on the strokes, positive elsewhere.
+    for (int v : result.seeds.vertices)
+    {
+      EXPECT_EQ(result.distances[v], 0.0);
+    }
+    EXPECT_GT(*std::max_element(result.distances.begin(), result.distances.end()), 0.0);
   }
-  // One closed boundary, all of it within 10% of the lobe radius (0.08) of the narrowest ring.
-  const std::vector<LabelBoundary> boundaries = labelBoundaries(shape.mesh, result.faceLabels);
-  ASSERT_EQ(boundaries.size(), 1u);
-  EXPECT_TRUE(boundaries[0].closed);
-  EXPECT_EQ(boundaries[0].leftLabel, 1);
-  EXPECT_EQ(boundaries[0].rightLabel, 2);
-  double farthest = 0.0;
-  for (int v : boundaries[0].vertices)
-  {
-    farthest = std::max(farthest, std::abs(shape.mesh.point(v).z() - shape.neckZ));
-  }
-  EXPECT_LT(farthest, 0.1 * DumbbellWithStrokes::Radii[1]);
-  // Distances: 0 on the strokes, positive elsewhere.
-  for (int v : result.seeds.vertices)
-  {
-    EXPECT_EQ(result.distances[v], 0.0);
-  }
-  EXPECT_GT(*std::max_element(result.distances.begin(), result.distances.end()), 0.0);
 }
 
 TEST(RegionGrowing, EachFingerGetsItsOwnLabel)
 {
   const ProtrusionsWithStrokes shape(5);
   const Surface surface(shape.mesh);
-  const RegionGrowingResult result = growRegions(surface, shape.strokes, {});
-  EXPECT_EQ(result.labels, (std::vector<int>{ 0, 1, 2, 3 }));
-  std::map<int, int> fingerFaces, rightFingerFaces;
-  int bodyFaces = 0, rightBodyFaces = 0;
-  for (int f = 0; f < shape.mesh.faceCount(); ++f)
+  for (BoundaryPlacement placement : Placements)
   {
-    const Triangle& t = shape.mesh.triangle(f);
-    const Vector3 centroid = (shape.mesh.point(t[0]) + shape.mesh.point(t[1]) + shape.mesh.point(t[2])) / 3.0;
-    double angle = 0.0;
-    const int finger = ProtrusionsWithStrokes::nearestFinger(centroid, angle);
-    if (centroid.norm() > 1.5)
+    SCOPED_TRACE(boundaryPlacementName(placement));
+    const RegionGrowingResult result = growRegions(surface, shape.strokes, placedBy(placement));
+    EXPECT_EQ(result.labels, (std::vector<int>{ 0, 1, 2, 3 }));
+    std::map<int, int> fingerFaces, rightFingerFaces;
+    int bodyFaces = 0, rightBodyFaces = 0;
+    for (int f = 0; f < shape.mesh.faceCount(); ++f)
     {
-      ++fingerFaces[finger];
-      rightFingerFaces[finger] += result.faceLabels[f] == finger + 1 ? 1 : 0;
+      const Triangle& t = shape.mesh.triangle(f);
+      const Vector3 centroid = (shape.mesh.point(t[0]) + shape.mesh.point(t[1]) + shape.mesh.point(t[2])) / 3.0;
+      double angle = 0.0;
+      const int finger = ProtrusionsWithStrokes::nearestFinger(centroid, angle);
+      if (centroid.norm() > 1.5)
+      {
+        ++fingerFaces[finger];
+        rightFingerFaces[finger] += result.faceLabels[f] == finger + 1 ? 1 : 0;
+      }
+      else if (angle > 2.0 * ProtrusionsWithStrokes::Width)
+      {
+        ++bodyFaces;
+        rightBodyFaces += result.faceLabels[f] == 0 ? 1 : 0;
+      }
     }
-    else if (angle > 2.0 * ProtrusionsWithStrokes::Width)
+    for (int finger = 0; finger < ProtrusionsWithStrokes::Count; ++finger)
     {
-      ++bodyFaces;
-      rightBodyFaces += result.faceLabels[f] == 0 ? 1 : 0;
+      ASSERT_GT(fingerFaces[finger], 100);
+      EXPECT_EQ(rightFingerFaces[finger], fingerFaces[finger]) << "finger " << finger;
     }
+    EXPECT_EQ(rightBodyFaces, bodyFaces);
+    // Each finger is cut off by one closed loop between the body's label and its own.
+    const std::vector<LabelBoundary> boundaries = labelBoundaries(shape.mesh, result.faceLabels);
+    std::set<std::pair<int, int>> pairs;
+    for (const LabelBoundary& b : boundaries)
+    {
+      pairs.emplace(b.leftLabel, b.rightLabel);
+    }
+    EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 0, 1 }, { 0, 2 }, { 0, 3 } }));
   }
-  for (int finger = 0; finger < ProtrusionsWithStrokes::Count; ++finger)
-  {
-    ASSERT_GT(fingerFaces[finger], 100);
-    EXPECT_EQ(rightFingerFaces[finger], fingerFaces[finger]) << "finger " << finger;
-  }
-  EXPECT_EQ(rightBodyFaces, bodyFaces);
-  // Each finger is cut off by one closed loop between the body's label and its own.
-  const std::vector<LabelBoundary> boundaries = labelBoundaries(shape.mesh, result.faceLabels);
-  std::set<std::pair<int, int>> pairs;
-  for (const LabelBoundary& b : boundaries)
-  {
-    pairs.emplace(b.leftLabel, b.rightLabel);
-  }
-  EXPECT_EQ(pairs, (std::set<std::pair<int, int>>{ { 0, 1 }, { 0, 2 }, { 0, 3 } }));
 }
 
 TEST(RegionGrowing, PerEdgeCurvatureTermLetsFingersLeak)
@@ -108,6 +129,7 @@ TEST(RegionGrowing, PerEdgeCurvatureTermLetsFingersLeak)
   const ProtrusionsWithStrokes shape(5);
   const Surface surface(shape.mesh);
   RegionGrowingOptions options;
+  options.placement = BoundaryPlacement::Fronts; // the metric alone decides
   options.metric.curvaturePerEdge = true;
   const RegionGrowingResult result = growRegions(surface, shape.strokes, options);
   int bodyFaces = 0, rightBodyFaces = 0;
@@ -355,6 +377,7 @@ TEST(RegionGrowing, CutBandIsCheckedAndZeroKeepsTheFronts)
   const DumbbellWithStrokes shape(4);
   const Surface surface(shape.mesh);
   RegionGrowingOptions options;
+  options.placement = BoundaryPlacement::MinimumCut;
   options.cutPlacement.band = 0.0;
   const RegionGrowingResult fronts = growRegions(surface, shape.strokes, options);
   std::vector<int> labels;
@@ -372,12 +395,13 @@ TEST(RegionGrowing, CutBandIsCheckedAndZeroKeepsTheFronts)
     EXPECT_THROW(placeCuts(shape.mesh, nearest, placement, labels, distances), Error);
     if (bad != 1.0)
     {
-      placement.band = 0.3;
-      placement.dataWeight = bad;
-      EXPECT_THROW(growRegions(surface, shape.strokes, { options.metric, 0.0, placement }), Error) << bad;
-      placement.dataWeight = 0.1;
-      placement.convexWeight = bad;
-      EXPECT_THROW(growRegions(surface, shape.strokes, { options.metric, 0.0, placement }), Error) << bad;
+      RegionGrowingOptions weights = options;
+      weights.cutPlacement.band = 0.3;
+      weights.cutPlacement.dataWeight = bad;
+      EXPECT_THROW(growRegions(surface, shape.strokes, weights), Error) << bad;
+      weights.cutPlacement.dataWeight = 0.1;
+      weights.cutPlacement.convexWeight = bad;
+      EXPECT_THROW(growRegions(surface, shape.strokes, weights), Error) << bad;
     }
   }
 }

@@ -151,9 +151,10 @@ int TestEasyMeshCutFilter(int, char*[])
     const std::vector<int> labels = segmentsOf(cut->GetOutput());
     const kerf::SegmentationScores scores = kerf::compareSegmentations(mesh, labels, known);
     std::cout << (refine ? "refined" : "grown") << ": Rand index error " << scores.randIndexError << std::endl;
-    // Measured at 20,480 triangles: 0.0047 grown, 0.0068 refined (the snake settles beside the
-    // narrowest ring, where |k_min| + |k_max| is largest).
-    ok &= KERF_CHECK(scores.randIndexError < (refine ? 0.009 : 0.006));
+    // Measured at 20,480 triangles with the random walks: 0.0021 grown, 0.0099 refined (the
+    // snake settles beside the narrowest ring, where |k_min| + |k_max| is largest, not on the
+    // crease).
+    ok &= KERF_CHECK(scores.randIndexError < (refine ? 0.012 : 0.004));
     vtkPolyData* boundary = cut->GetBoundary();
     ok &= KERF_CHECK(boundary->GetNumberOfCells() == 1);
     vtkDataArray* left = boundary->GetCellData()->GetArray("LeftLabel");
@@ -182,6 +183,30 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(segmentsOf(again->GetOutput()) == labels);
     ok &= KERF_CHECK(coordinatesOf(again->GetBoundary()) == coordinatesOf(boundary));
   }
+  // The paper's rule, the fronts' meeting (measured 0.0047), and the random walks' probability
+  // array, present only with the walks.
+  {
+    vtkNew<vtkEasyMeshCut> fronts;
+    fronts->SetInputData(0, dumbbell);
+    fronts->SetInputData(1, twoStrokes);
+    fronts->SetRefine(false);
+    fronts->SetBoundaryPlacementToFronts();
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(fronts).empty());
+    const double error = kerf::compareSegmentations(mesh, segmentsOf(fronts->GetOutput()), known).randIndexError;
+    std::cout << "fronts: Rand index error " << error << std::endl;
+    ok &= KERF_CHECK(error < 0.006);
+    ok &= KERF_CHECK(fronts->GetOutput()->GetPointData()->GetArray("Probability") == nullptr);
+    fronts->SetBoundaryPlacementToRandomWalks();
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(fronts).empty());
+    vtkDataArray* probability = fronts->GetOutput()->GetPointData()->GetArray("Probability");
+    ok &= KERF_CHECK(probability && probability->GetNumberOfTuples() == dumbbell->GetNumberOfPoints());
+    if (probability)
+    {
+      double range[2];
+      probability->GetRange(range);
+      ok &= KERF_CHECK(range[0] >= 0.5 && range[1] == 1.0); // two labels: the winner has at least 1/2
+    }
+  }
   // Strokes as points: vertex cells (a vertex and a poly-vertex) label like lines, and a line's
   // label follows the vertex cells' in the cell data.
   {
@@ -197,7 +222,7 @@ int TestEasyMeshCutFilter(int, char*[])
     std::replace(labels.begin(), labels.end(), 2, 0); // the two labels of the larger lobe as one
     const double error = kerf::compareSegmentations(mesh, labels, known).randIndexError;
     std::cout << "vertex strokes: Rand index error " << error << std::endl;
-    ok &= KERF_CHECK(error < 0.006);
+    ok &= KERF_CHECK(error < 0.011); // measured 0.0084
   }
   // Strokes drawn in the panel (no input 1): a foreground and a background click give the same
   // cut as the same clicks given as labelled one-point polylines.
@@ -215,7 +240,9 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(clicks).empty());
     const std::vector<int> fromPanel = segmentsOf(panel->GetOutput());
     ok &= KERF_CHECK(fromPanel == segmentsOf(clicks->GetOutput()));
-    ok &= KERF_CHECK(kerf::compareSegmentations(mesh, fromPanel, known).randIndexError < 0.009);
+    const double panelError = kerf::compareSegmentations(mesh, fromPanel, known).randIndexError;
+    std::cout << "panel clicks: Rand index error " << panelError << std::endl;
+    ok &= KERF_CHECK(panelError < 0.012); // measured 0.0099, refined as above
     panel->SetNumberOfBackgroundPoints(0);
     int succeeded = 1;
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("place foreground and background") !=

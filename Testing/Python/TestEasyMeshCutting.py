@@ -33,10 +33,10 @@ class EasyMeshCuttingTest(unittest.TestCase):
         cut.SetInputConnection(0, self.armadillo.GetOutputPort())
         cut.SetInputConnection(1, self.strokes.GetOutputPort())
         cut.Update()
-        # The head with its ears: 5,622 faces grown, 5,559 after the snake (as the example).
-        self.assertEqual(int((segments(growing) == 1).sum()), 5622)
+        # The head with its ears: 6,567 faces grown, 6,457 after the snake (as the example).
+        self.assertEqual(int((segments(growing) == 1).sum()), 6567)
         refined = segments(snake)
-        self.assertEqual(int((refined == 1).sum()), 5559)
+        self.assertEqual(int((refined == 1).sum()), 6457)
         numpy.testing.assert_array_equal(refined, segments(cut))
         boundary = snake.GetBoundary()
         self.assertEqual(boundary.GetNumberOfCells(), 1)
@@ -50,22 +50,36 @@ class EasyMeshCuttingTest(unittest.TestCase):
         self.assertEqual(sorted(set(labels.tolist())), [0, 1])
         distance = vtk_to_numpy(grown.GetPointData().GetArray("IsophoticDistance"))
         self.assertTrue((distance >= 0).all())
-        self.assertLess(int((distance == 0).sum()), 200)
+        self.assertEqual(int((distance == 0).sum()), 96)  # the strokes' vertices
+        # The random walks' probabilities: 1 on the strokes, at least 1/2 elsewhere (two labels).
+        probability = vtk_to_numpy(grown.GetPointData().GetArray("Probability"))
+        self.assertTrue((probability[distance == 0] == 1).all())
+        self.assertGreaterEqual(float(probability.min()), 0.5)
 
-    def test_cut_band_zero_keeps_the_fronts(self):
-        """CutBand 0 turns cut placement off: the head as the fronts meet, ragged (four chains)."""
+    def test_boundary_placements(self):
+        """The three placements on the same strokes: the fronts take the most of the neck, the
+        minimum cut through their band the least; CutBand 0 keeps the fronts."""
         growing = kerf.vtkRegionGrowing()
         growing.SetInputConnection(0, self.armadillo.GetOutputPort())
         growing.SetInputConnection(1, self.strokes.GetOutputPort())
+        self.assertEqual(growing.GetBoundaryPlacement(), kerf.vtkRegionGrowing.BOUNDARY_RANDOM_WALKS)
         self.assertEqual(growing.GetCutBand(), 0.3)
+        expected = {kerf.vtkRegionGrowing.BOUNDARY_FRONTS: 7606,
+                    kerf.vtkRegionGrowing.BOUNDARY_MINIMUM_CUT: 5852,
+                    kerf.vtkRegionGrowing.BOUNDARY_RANDOM_WALKS: 6567}
+        for placement, faces in expected.items():
+            growing.SetBoundaryPlacement(placement)
+            growing.Update()
+            self.assertEqual(int((segments(growing) == 1).sum()), faces, placement)
+            self.assertEqual(growing.GetBoundary().GetNumberOfCells(), 1, placement)
+            probability = growing.GetOutput().GetPointData().GetArray("Probability")
+            self.assertEqual(probability is not None, placement == kerf.vtkRegionGrowing.BOUNDARY_RANDOM_WALKS)
+        growing.SetBoundaryPlacementToMinimumCut()
         growing.SetCutBand(0.0)
         growing.Update()
-        self.assertEqual(int((segments(growing) == 1).sum()), 6322)
-        self.assertEqual(growing.GetBoundary().GetNumberOfCells(), 4)
-        growing.SetCutBand(0.3)
-        growing.Update()
-        self.assertEqual(int((segments(growing) == 1).sum()), 5622)
-        self.assertEqual(growing.GetBoundary().GetNumberOfCells(), 1)
+        self.assertEqual(int((segments(growing) == 1).sum()), 7606)
+        growing.SetBoundaryPlacement(7)  # clamped to the last placement
+        self.assertEqual(growing.GetBoundaryPlacement(), kerf.vtkRegionGrowing.BOUNDARY_RANDOM_WALKS)
 
     def test_snake_refines_another_array(self):
         """Snake Refinement refines whichever cell array it is given and replaces it."""
@@ -78,7 +92,7 @@ class EasyMeshCuttingTest(unittest.TestCase):
         snake.SetInputArrayToProcess(0, 0, 0, 1, "Part")  # 1: cells
         snake.Update()
         part = vtk_to_numpy(snake.GetOutput().GetCellData().GetArray("Part"))
-        self.assertEqual(int((part == 1).sum()), 5559)
+        self.assertEqual(int((part == 1).sum()), 6457)
         self.assertIsNone(snake.GetOutput().GetCellData().GetArray("Segment"))
 
 

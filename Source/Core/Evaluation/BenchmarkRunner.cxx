@@ -418,6 +418,8 @@ MethodOutput segmentWithRegionGrowing(
   metric.curvatureWeight = parameters.positive("curvature-weight", metric.curvatureWeight);
   metric.augmentation = parseCurvatureAugmentation(parameters.text("augmentation", "exponential"));
   metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
+  options.growing.placement =
+    parseBoundaryPlacement(parameters.text("placement", boundaryPlacementName(options.growing.placement)));
   options.growing.cutPlacement.band = fraction(parameters, "cut-band", options.growing.cutPlacement.band);
   const double depth = parameters.positive("depth", 0.2);
   const int corrections = wholeNumber(parameters, "corrections", 3);
@@ -589,14 +591,16 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "cut-band", "depth", "corrections",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "placement", "cut-band", "depth",
+        "corrections",
         "overrides", "override-radius", "spacing" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, false);
       } },
     { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
-      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "cut-band", "depth", "corrections",
+      { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "placement", "cut-band", "depth",
+        "corrections",
         "overrides", "override-radius", "spacing" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {

@@ -5,6 +5,7 @@
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/MinimumCut.h"
+#include "Segmentation/RandomWalk.h"
 #include "Session/Surface.h"
 
 #include <algorithm>
@@ -55,6 +56,33 @@ void checkCutPlacementOptions(const CutPlacementOptions& options)
   }
 }
 } // namespace
+
+std::string boundaryPlacementName(BoundaryPlacement placement)
+{
+  switch (placement)
+  {
+    case BoundaryPlacement::Fronts:
+      return "fronts";
+    case BoundaryPlacement::MinimumCut:
+      return "minimum-cut";
+    case BoundaryPlacement::RandomWalks:
+      return "random-walks";
+  }
+  return "random-walks";
+}
+
+BoundaryPlacement parseBoundaryPlacement(const std::string& name)
+{
+  for (BoundaryPlacement placement :
+    { BoundaryPlacement::Fronts, BoundaryPlacement::MinimumCut, BoundaryPlacement::RandomWalks })
+  {
+    if (name == boundaryPlacementName(placement))
+    {
+      return placement;
+    }
+  }
+  throw Error("unknown boundary placement \"" + name + "\" (fronts, minimum-cut or random-walks)");
+}
 
 StrokeSeeds snapStrokes(const TriangleMesh& mesh, const ClosestPointLocator& locator,
   const std::vector<LabelledStroke>& strokes, double maximumDistance)
@@ -549,7 +577,7 @@ RegionGrowingResult growRegions(
       "; region growing needs strokes of at least two labels");
   }
   const std::vector<double>& edgeLengths = surfaceIsophoticEdgeLengths(surface, options.metric);
-  if (options.cutPlacement.band > 0.0)
+  if (options.placement == BoundaryPlacement::MinimumCut && options.cutPlacement.band > 0.0)
   {
     // The nearest label of the two-label search is the growing's (up to which of two labels at
     // exactly equal distance reached a vertex first).
@@ -573,6 +601,16 @@ RegionGrowingResult growRegions(
       result.distances[v] = -1.0;
       result.unreachableVertices += mesh.vertexComponent(v) >= 0 ? 1 : 0;
     }
+  }
+  if (options.placement == BoundaryPlacement::RandomWalks)
+  {
+    // The walks reach exactly the components the fronts do (those with a stroke).
+    RandomWalkLabelling walks = randomWalkLabels(
+      mesh, surface.laplacianWeights(options.walkWeights).weights, result.seeds.vertices, result.seeds.labels);
+    result.vertexLabels = std::move(walks.vertexLabels);
+    result.probabilities = std::move(walks.vertexProbabilities);
+    result.faceLabels = std::move(walks.faceLabels);
+    return result;
   }
   result.faceLabels = faceLabelsFromVertices(mesh, result.vertexLabels, result.distances);
   return result;

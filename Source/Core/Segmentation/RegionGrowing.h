@@ -1,9 +1,11 @@
 // Region growing from labelled strokes under the improved isophotic metric (Easy Mesh Cutting, section 4.2).
 #pragma once
 
+#include "Harmonic/LaplacianWeights.h"
 #include "Mesh/TriangleMesh.h"
 #include "Segmentation/IsophoticMetric.h"
 
+#include <string>
 #include <vector>
 
 namespace kerf
@@ -55,14 +57,43 @@ struct CutPlacementOptions
   double dataWeight = 0.1;
 };
 
+/// Where region growing puts the boundaries between labels.
+enum class BoundaryPlacement
+{
+  /// Where the fronts of the labels meet under the metric: the paper's rule (Ji et al. 2006,
+  /// section 4.2).
+  Fronts,
+  /// The fronts, then a minimum cut through the band where they meet (kerf::placeCuts; a band
+  /// of 0 keeps the fronts).
+  MinimumCut,
+  /// Random walks from the strokes on the concavity-aware Laplacian (kerf::randomWalkLabels; Lai
+  /// et al. 2009 with the weights of Au et al. 2011): every vertex and face takes the label a walk
+  /// from it most likely reaches first, and walks rarely cross concave creases. An addition to
+  /// the paper: a part is not bounded halfway between strokes but where the surface bends inwards,
+  /// even when another stroke is nearer.
+  RandomWalks
+};
+
+/// The placement's name as the benchmark runner spells it: "fronts", "minimum-cut",
+/// "random-walks".
+std::string boundaryPlacementName(BoundaryPlacement placement);
+/// The placement a name spells; throws kerf::Error listing the names for any other text.
+BoundaryPlacement parseBoundaryPlacement(const std::string& name);
+
 /// Parameters of region growing.
 struct RegionGrowingOptions
 {
   IsophoticMetricOptions metric;
   /// Stroke points farther than this from the surface are refused (length units; 0: no limit).
   double maximumDistance = 0.0;
-  /// Cut placement after the growing; a band of 0 turns it off.
+  /// Where the boundaries go (the fronts are grown in every case: they give the distances and
+  /// the vertices no stroke reaches).
+  BoundaryPlacement placement = BoundaryPlacement::RandomWalks;
+  /// MinimumCut's parameters.
   CutPlacementOptions cutPlacement;
+  /// RandomWalks' edge weights: the concavity-aware weights with the paper's values (Au et al.
+  /// 2011, beta = 0.01 at concave vertices).
+  LaplacianWeightOptions walkWeights = { LaplacianWeighting::ConcavityAware };
 };
 
 /// A grown segmentation.
@@ -71,9 +102,14 @@ struct RegionGrowingResult
   /// The label of the nearest stroke under the metric; -1 where no stroke reaches (a component
   /// without strokes, or a point no triangle uses).
   std::vector<int> vertexLabels;
-  /// The metric distance to the nearest stroke (input units); -1 where no stroke reaches.
+  /// The metric distance to the nearest stroke (input units); -1 where no stroke reaches. With
+  /// random walks, the distance to the nearest stroke of any label.
   std::vector<double> distances;
-  /// Per face, from its corners (faceLabelsFromVertices).
+  /// With random walks, the probability of each vertex's label (kerf::RandomWalkLabelling);
+  /// empty with the other placements.
+  std::vector<double> probabilities;
+  /// Per face: from its corners (faceLabelsFromVertices), or with random walks the label of
+  /// largest corner probabilities.
   std::vector<int> faceLabels;
   StrokeSeeds seeds;
   /// Vertices used by triangles that no stroke reaches (labelled -1).
@@ -130,8 +166,8 @@ void placeCuts(const TriangleMesh& mesh, const NearestLabels& nearest, const Cut
 std::vector<int> faceLabelsFromVertices(
   const TriangleMesh& mesh, const std::vector<int>& vertexLabels, const std::vector<double>& distances);
 
-/// Region growing on a surface (its descriptors and metric lengths are cached there), then, with
-/// a band above 0, cut placement (kerf::placeCuts). Throws
+/// Region growing on a surface (its descriptors, metric lengths and Laplacian weights are cached
+/// there), its boundaries placed as `options.placement` says. Throws
 /// kerf::Error for the stroke problems of snapStrokes and for strokes of fewer than two labels.
 RegionGrowingResult growRegions(
   const Surface& surface, const std::vector<LabelledStroke>& strokes, const RegionGrowingOptions& options);

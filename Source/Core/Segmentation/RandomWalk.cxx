@@ -1,0 +1,115 @@
+// Multi-label random walks: one harmonic field per label, the largest probability kept per vertex and face.
+#include "Segmentation/RandomWalk.h"
+
+#include "Error.h"
+#include "Harmonic/HarmonicFieldSolver.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace kerf
+{
+
+RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector<double>& edgeWeights,
+  const std::vector<int>& seedVertices, const std::vector<int>& seedLabels)
+{
+  const int n = mesh.vertexCount();
+  if (seedVertices.size() != seedLabels.size())
+  {
+    throw Error("the random walks have " + std::to_string(seedVertices.size()) + " seed vertices but " +
+      std::to_string(seedLabels.size()) + " labels");
+  }
+  if (seedVertices.empty())
+  {
+    throw Error("the random walks need at least one seed");
+  }
+  if (static_cast<int>(edgeWeights.size()) != mesh.edgeCount())
+  {
+    throw Error("the random walks' edge weights do not belong to this mesh");
+  }
+  // A vertex's seed label, -1 if it is no seed.
+  std::vector<int> seedLabel(static_cast<std::size_t>(n), -1);
+  std::vector<char> seededComponent(static_cast<std::size_t>(mesh.componentCount()), 0);
+  for (std::size_t i = 0; i < seedVertices.size(); ++i)
+  {
+    const int v = seedVertices[i];
+    if (v < 0 || v >= n || mesh.vertexComponent(v) < 0)
+    {
+      throw Error("random-walk seed " + std::to_string(v) + " is not a vertex of the mesh's triangles");
+    }
+    if (seedLabels[i] < 0)
+    {
+      throw Error("random-walk seed " + std::to_string(v) + " has the negative label " + std::to_string(seedLabels[i]));
+    }
+    if (seedLabel[v] >= 0 && seedLabel[v] != seedLabels[i])
+    {
+      throw Error("random-walk seed " + std::to_string(v) + " is given two labels");
+    }
+    seedLabel[v] = seedLabels[i];
+    seededComponent[mesh.vertexComponent(v)] = 1;
+  }
+  RandomWalkLabelling result;
+  result.labels = seedLabels;
+  std::sort(result.labels.begin(), result.labels.end());
+  result.labels.erase(std::unique(result.labels.begin(), result.labels.end()), result.labels.end());
+
+  // The hard set: the seeds, and every vertex of a component without seeds (held at 0).
+  FieldConstraints constraints;
+  for (int v = 0; v < n; ++v)
+  {
+    const int component = mesh.vertexComponent(v);
+    if (seedLabel[v] >= 0 || (component >= 0 && !seededComponent[component]))
+    {
+      constraints.dirichletVertices.push_back(v);
+    }
+  }
+  constraints.dirichletValues.assign(constraints.dirichletVertices.size(), 0.0);
+
+  result.vertexLabels.assign(static_cast<std::size_t>(n), -1);
+  result.vertexProbabilities.assign(static_cast<std::size_t>(n), 0.0);
+  result.faceLabels.assign(static_cast<std::size_t>(mesh.faceCount()), -1);
+  std::vector<double> faceBest(static_cast<std::size_t>(mesh.faceCount()), -1.0);
+  HarmonicFieldSolver solver;
+  for (const int label : result.labels)
+  {
+    for (std::size_t i = 0; i < constraints.dirichletVertices.size(); ++i)
+    {
+      constraints.dirichletValues[i] = seedLabel[constraints.dirichletVertices[i]] == label ? 1.0 : 0.0;
+    }
+    // The same hard set every time: the first label factors, the others back-substitute.
+    const std::vector<double> field = solver.solve(mesh, edgeWeights, constraints).field;
+    for (int v = 0; v < n; ++v)
+    {
+      const int component = mesh.vertexComponent(v);
+      if (component < 0 || !seededComponent[component])
+      {
+        continue;
+      }
+      const double p = std::min(1.0, std::max(0.0, field[v])); // the maximum principle, up to rounding
+      if (result.vertexLabels[v] < 0 || p > result.vertexProbabilities[v])
+      {
+        result.vertexLabels[v] = label;
+        result.vertexProbabilities[v] = p;
+      }
+    }
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      const Triangle& t = mesh.triangle(f);
+      if (!seededComponent[mesh.vertexComponent(t[0])])
+      {
+        continue;
+      }
+      const double sum = std::min(1.0, std::max(0.0, field[t[0]])) + std::min(1.0, std::max(0.0, field[t[1]])) +
+        std::min(1.0, std::max(0.0, field[t[2]]));
+      if (sum > faceBest[f])
+      {
+        faceBest[f] = sum;
+        result.faceLabels[f] = label;
+      }
+    }
+  }
+  return result;
+}
+
+} // namespace kerf

@@ -1,0 +1,205 @@
+// Multi-label random walks: linear probabilities across a grid, unseeded components, ties, the neck of a two-lobe shape, errors and repeatability.
+#include "Error.h"
+#include "Harmonic/LaplacianWeights.h"
+#include "Mesh/MeshGenerators.h"
+#include "Segmentation/RandomWalk.h"
+#include "Segmentation/RegionGrowing.h"
+#include "Session/Surface.h"
+#include "StrokeShapes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace kerf;
+using kerf::test::DumbbellWithStrokes;
+
+namespace
+{
+std::vector<double> cotangentWeights(const TriangleMesh& mesh)
+{
+  return computeLaplacianWeights(mesh, LaplacianWeightOptions{ LaplacianWeighting::Cotangent });
+}
+
+// The grid's left column seeded with label 3 and its right column with label 7.
+void seedColumns(int columns, int rows, std::vector<int>& vertices, std::vector<int>& labels)
+{
+  for (int j = 0; j <= rows; ++j)
+  {
+    vertices.push_back(j * (columns + 1));
+    labels.push_back(3);
+    vertices.push_back(j * (columns + 1) + columns);
+    labels.push_back(7);
+  }
+}
+
+// A planar strip of unit width walked from its two short sides (seedColumns), cotangent weights.
+struct StripWalk
+{
+  TriangleMesh mesh;
+  RandomWalkLabelling walks;
+  StripWalk(double height, int columns, int rows)
+    : mesh(makeGrid(1.0, height, columns, rows))
+  {
+    std::vector<int> vertices, labels;
+    seedColumns(columns, rows, vertices, labels);
+    this->walks = randomWalkLabels(this->mesh, cotangentWeights(this->mesh), vertices, labels);
+  }
+};
+} // namespace
+
+TEST(RandomWalk, ProbabilitiesAreLinearAcrossAGrid)
+{
+  // Seeds on the two short sides of a planar strip: the harmonic field of each label is linear in
+  // x (the cotangent Laplacian is linearly precise on this grid), so a vertex's probability is
+  // max(x, 1 - x), the left half is 3 and the right half 7.
+  const StripWalk strip(0.3, 20, 6);
+  const TriangleMesh& mesh = strip.mesh;
+  const RandomWalkLabelling& walks = strip.walks;
+  EXPECT_EQ(walks.labels, (std::vector<int>{ 3, 7 }));
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const double x = mesh.point(v).x();
+    EXPECT_NEAR(walks.vertexProbabilities[v], std::max(x, 1.0 - x), 1e-9) << "vertex " << v;
+    if (std::abs(x - 0.5) > 1e-9)
+    {
+      EXPECT_EQ(walks.vertexLabels[v], x < 0.5 ? 3 : 7) << "vertex " << v;
+    }
+  }
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    const double x = (mesh.point(t[0]).x() + mesh.point(t[1]).x() + mesh.point(t[2]).x()) / 3.0;
+    EXPECT_EQ(walks.faceLabels[f], x < 0.5 ? 3 : 7) << "face " << f;
+  }
+}
+
+TEST(RandomWalk, TiesGoToTheSmallerLabel)
+{
+  // Two columns of cells: the middle vertex column is as far from either seed column, so each of
+  // its vertices has probability 1/2 for both labels, and takes the smaller.
+  const int columns = 2, rows = 1;
+  const StripWalk strip(1.0, columns, rows);
+  for (int j = 0; j <= rows; ++j)
+  {
+    const int middle = j * (columns + 1) + 1;
+    EXPECT_NEAR(strip.walks.vertexProbabilities[middle], 0.5, 1e-12);
+    EXPECT_EQ(strip.walks.vertexLabels[middle], 3);
+  }
+}
+
+TEST(RandomWalk, ComponentsWithoutSeedsAreLeftOut)
+{
+  // Two strips side by side, only the first seeded: the second is labelled -1 with probability 0
+  // and changes nothing in the first (the same numbers as the first strip alone).
+  const int columns = 10, rows = 4;
+  const TriangleMesh strip = makeGrid(1.0, 0.4, columns, rows);
+  std::vector<Vector3> points;
+  std::vector<Triangle> triangles;
+  for (int copy = 0; copy < 2; ++copy)
+  {
+    const int offset = static_cast<int>(points.size());
+    for (int v = 0; v < strip.vertexCount(); ++v)
+    {
+      points.push_back(strip.point(v) + Vector3(0.0, copy * 1.0, 0.0));
+    }
+    for (int f = 0; f < strip.faceCount(); ++f)
+    {
+      const Triangle& t = strip.triangle(f);
+      triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+  }
+  const TriangleMesh mesh(points, triangles);
+  std::vector<int> vertices, labels;
+  seedColumns(columns, rows, vertices, labels);
+  const RandomWalkLabelling both = randomWalkLabels(mesh, cotangentWeights(mesh), vertices, labels);
+  const RandomWalkLabelling alone = randomWalkLabels(strip, cotangentWeights(strip), vertices, labels);
+  for (int v = 0; v < strip.vertexCount(); ++v)
+  {
+    EXPECT_EQ(both.vertexLabels[v], alone.vertexLabels[v]);
+    EXPECT_NEAR(both.vertexProbabilities[v], alone.vertexProbabilities[v], 1e-12);
+    EXPECT_EQ(both.vertexLabels[v + strip.vertexCount()], -1);
+    EXPECT_EQ(both.vertexProbabilities[v + strip.vertexCount()], 0.0);
+  }
+  for (int f = 0; f < strip.faceCount(); ++f)
+  {
+    EXPECT_EQ(both.faceLabels[f], alone.faceLabels[f]);
+    EXPECT_EQ(both.faceLabels[f + strip.faceCount()], -1);
+  }
+}
+
+TEST(RandomWalk, ConcavityAwareWalksStopAtTheNeckWhateverTheStrokes)
+{
+  // One stroke on the larger lobe's far end, the other moved towards the neck: halfway between
+  // them (the fronts under plain lengths) lies 0.3 or more inside the larger lobe, but walks
+  // rarely cross the concave neck, so the boundary stays on the rings round it.
+  const DumbbellWithStrokes shape(5);
+  const Surface surface(shape.mesh);
+  for (double above : { 0.4, 0.8 })
+  {
+    std::vector<LabelledStroke> strokes = shape.strokes;
+    for (Vector3& p : strokes[1].points)
+    {
+      const double z = p.z() - 1.5 + shape.neckZ + above;
+      p = Vector3(dumbbellRadius(z, DumbbellWithStrokes::HalfLength, DumbbellWithStrokes::Radii,
+                    DumbbellWithStrokes::NeckHeight, DumbbellWithStrokes::Depth),
+        0.0, z);
+    }
+    const RegionGrowingResult result = growRegions(surface, strokes, RegionGrowingOptions());
+    ASSERT_EQ(result.probabilities.size(), static_cast<std::size_t>(shape.mesh.vertexCount()));
+    const std::vector<LabelBoundary> boundaries = labelBoundaries(shape.mesh, result.faceLabels);
+    ASSERT_EQ(boundaries.size(), 1u) << "stroke " << above << " above the neck";
+    EXPECT_TRUE(boundaries[0].closed);
+    double farthest = 0.0;
+    for (int v : boundaries[0].vertices)
+    {
+      farthest = std::max(farthest, std::abs(shape.mesh.point(v).z() - shape.neckZ));
+    }
+    EXPECT_LT(farthest, 0.1 * DumbbellWithStrokes::Radii[0]) << "stroke " << above << " above the neck";
+    // The seeds are certain; every other vertex's label has probability at least 1/2 (two labels).
+    for (int v : result.seeds.vertices)
+    {
+      EXPECT_EQ(result.probabilities[v], 1.0);
+    }
+    EXPECT_GE(*std::min_element(result.probabilities.begin(), result.probabilities.end()), 0.5);
+  }
+}
+
+TEST(RandomWalk, SameLabelsRunAfterRun)
+{
+  const DumbbellWithStrokes shape(4);
+  const Surface first(shape.mesh), second(shape.mesh);
+  const RegionGrowingResult a = growRegions(first, shape.strokes, RegionGrowingOptions());
+  const RegionGrowingResult b = growRegions(second, shape.strokes, RegionGrowingOptions());
+  EXPECT_EQ(a.faceLabels, b.faceLabels);
+  EXPECT_EQ(a.vertexLabels, b.vertexLabels);
+  EXPECT_EQ(a.probabilities, b.probabilities); // bit for bit
+}
+
+TEST(RandomWalk, BadSeedsAndWeightsAreRefused)
+{
+  const TriangleMesh mesh = makeGrid(1.0, 1.0, 3, 3);
+  const std::vector<double> weights = cotangentWeights(mesh);
+  EXPECT_THROW(randomWalkLabels(mesh, weights, {}, {}), Error);
+  EXPECT_THROW(randomWalkLabels(mesh, weights, { 0, 1 }, { 0 }), Error);
+  EXPECT_THROW(randomWalkLabels(mesh, weights, { 0, 99 }, { 0, 1 }), Error);
+  EXPECT_THROW(randomWalkLabels(mesh, weights, { 0, -1 }, { 0, 1 }), Error);
+  EXPECT_THROW(randomWalkLabels(mesh, weights, { 0, 3 }, { 0, -2 }), Error);
+  EXPECT_THROW(randomWalkLabels(mesh, weights, { 0, 0 }, { 0, 1 }), Error);
+  EXPECT_THROW(randomWalkLabels(mesh, std::vector<double>(3, 1.0), { 0, 3 }, { 0, 1 }), Error);
+  // A seed repeated with its own label is accepted; one label labels its whole component.
+  const RandomWalkLabelling one = randomWalkLabels(mesh, weights, { 0, 0 }, { 4, 4 });
+  EXPECT_EQ(one.vertexLabels, std::vector<int>(mesh.vertexCount(), 4));
+}
+
+TEST(RandomWalk, PlacementNamesRoundTrip)
+{
+  for (BoundaryPlacement placement :
+    { BoundaryPlacement::Fronts, BoundaryPlacement::MinimumCut, BoundaryPlacement::RandomWalks })
+  {
+    EXPECT_EQ(parseBoundaryPlacement(boundaryPlacementName(placement)), placement);
+  }
+  EXPECT_THROW(parseBoundaryPlacement("halfway"), Error);
+  EXPECT_EQ(RegionGrowingOptions().placement, BoundaryPlacement::RandomWalks);
+}
