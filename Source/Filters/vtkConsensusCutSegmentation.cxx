@@ -41,8 +41,10 @@ int vtkConsensusCutSegmentation::RequestData(
         options.extraFeaturePoints = this->ExtraFeaturePoints;
         options.maximumFeaturePoints = this->MaximumFeaturePoints;
         options.minimumSegmentArea = kerf::Finite(this->MinimumSegmentArea, "MinimumSegmentArea");
+        options.walkDepth = kerf::Finite(this->WalkDepth, "WalkDepth");
         const kerf::ConsensusCutResult result = kerf::segmentByConsensusCuts(surface, this->SegmentCount, options);
         fieldData->AddArray(kerf::MakeFieldValue("ChosenCuts", result.chosenCuts));
+        fieldData->AddArray(kerf::MakeFieldValue("WalkedFaces", result.walkedFaces));
         return result.labels;
       });
   });
@@ -55,5 +57,6 @@ void vtkConsensusCutSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ExtraFeaturePoints: " << this->ExtraFeaturePoints << "\n";
   os << indent << "MaximumFeaturePoints: " << this->MaximumFeaturePoints << "\n";
   os << indent << "MinimumSegmentArea: " << this->MinimumSegmentArea << "\n";
+  os << indent << "WalkDepth: " << this->WalkDepth << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

@@ -8,11 +8,13 @@
  * gives every pair of feature points a unit-current harmonic field; the isolines at the peaks of
  * ROI Scissor's score are candidate cuts; candidates that split the surface alike are one consensus
  * cut, ranked by score and by how many fields found it; the best k - 1 compatible cuts make the
- * segments.
+ * segments; random walks seeded on each segment's spine then move the cuts onto nearby concave
+ * creases (WalkDepth).
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
- * "SegmentCount" and the method's own figures.
+ * "SegmentCount" and the method's own figures ("ChosenCuts", "WalkedFaces": the faces the
+ * random walks relabelled).
  *
  * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
  * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
@@ -59,6 +61,14 @@ public:
   ///@}
 
   ///@{
+  /// Boundary refinement: each segment's spine through its faces at least this fraction as deep
+  /// as its innermost one seeds random walks on the concavity-aware Laplacian, which move the cuts
+  /// onto nearby concave creases; 0 turns it off. Default 0.3.
+  vtkSetClampMacro(WalkDepth, double, 0.0, 1.0);
+  vtkGetMacro(WalkDepth, double);
+  ///@}
+
+  ///@{
   /// Name of the output cell array. Default "Segment".
   vtkSetStringMacro(SegmentArrayName);
   vtkGetStringMacro(SegmentArrayName);
@@ -75,6 +85,7 @@ protected:
   int ExtraFeaturePoints = 8;
   int MaximumFeaturePoints = 20;
   double MinimumSegmentArea = 0.01;
+  double WalkDepth = 0.3;
   char* SegmentArrayName = nullptr;
 
 private:

@@ -2,6 +2,7 @@
 #include "Error.h"
 #include "Evaluation/SegmentationMetrics.h"
 #include "Evaluation/SimulatedStrokes.h"
+#include "Segmentation/SegmentSpines.h"
 #include "Geodesic/GraphDistance.h"
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshGenerators.h"
@@ -271,6 +272,40 @@ TEST(SimulatedStrokes, OneStrokePerBoundaryChain)
   }
   EXPECT_EQ(boundaryStrokes(cylinder, labels, 0.2).size(), 2u);
   EXPECT_THROW(boundaryStrokes(cylinder, { 1, 2 }, 0.2), Error);
+}
+
+TEST(SimulatedStrokes, SpinesAreFacePathsInsideTheirSegments)
+{
+  // kerf::segmentSpines, which innermostStrokes draws through: each spine is a path of faces of
+  // its own label, each sharing an edge with the next, whose centroids are the stroke's points.
+  const TriangleMesh cylinder = makeCylinder(1.0, 3.0, 48, 31);
+  const std::vector<int> labels = threeBands(cylinder);
+  const std::vector<SegmentSpine> spines = segmentSpines(cylinder, labels, 0.2);
+  const std::vector<SegmentStroke> strokes = innermostStrokes(cylinder, labels, 0.2);
+  ASSERT_EQ(spines.size(), strokes.size());
+  for (std::size_t s = 0; s < spines.size(); ++s)
+  {
+    EXPECT_EQ(spines[s].label, strokes[s].label);
+    ASSERT_EQ(spines[s].faces.size(), strokes[s].points.size());
+    for (std::size_t i = 0; i < spines[s].faces.size(); ++i)
+    {
+      const int f = spines[s].faces[i];
+      EXPECT_EQ(labels[f], spines[s].label);
+      const Triangle& t = cylinder.triangle(f);
+      EXPECT_EQ(strokes[s].points[i], Vector3((cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])) / 3.0));
+      if (i > 0)
+      {
+        const int previous = spines[s].faces[i - 1];
+        bool neighbours = false;
+        for (int k = 0; k < 3; ++k)
+        {
+          neighbours |= cylinder.faceNeighbor(f, k) == previous;
+        }
+        EXPECT_TRUE(neighbours) << "spine " << s << " step " << i;
+      }
+    }
+  }
+  EXPECT_THROW(segmentSpines(cylinder, labels, 0.0), Error);
 }
 
 TEST(SimulatedStrokes, InnermostStrokesRunAlongTheMiddleOfEachSegment)

@@ -367,6 +367,7 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
   options.lengthExponent = std::stod(parameters.text("length", std::to_string(options.lengthExponent)));
   options.areaExponent = std::stod(parameters.text("sizes", std::to_string(options.areaExponent)));
   options.peaksPerField = static_cast<int>(parameters.positive("peaks", options.peaksPerField));
+  options.walkDepth = std::stod(parameters.text("walk-depth", std::to_string(options.walkDepth)));
   return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
@@ -587,7 +588,8 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "delta", "eta", "patches" }, SegmentationMethod::Protocol::Automatic, segmentWithSpectralClustering },
     { "consensus-cuts",
       "cuts that many concavity-aware harmonic fields between feature points agree on, k - 1 of them",
-      { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks" },
+      { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks",
+        "walk-depth" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",

@@ -34,14 +34,11 @@ struct SegmentStroke
   std::vector<Vector3> points;
 };
 
-/// One stroke per segment of a per-face segmentation, made of its innermost faces, as a user
-/// strokes along a part: distances inside the segment are measured from its faces that border
-/// another label (along the segment's faces, centroid to centroid); the stroke is the longest path
-/// (two sweeps of Dijkstra, centroid to centroid) through the faces at least `depth` (a fraction
-/// in (0, 1]) times as far inside as the innermost face, among those the innermost face reaches
-/// through them; its points are their centroids. A segment without a boundary (a whole component)
-/// is stroked at its lowest-numbered face. Strokes come in label order; unlabelled faces (-1) get
-/// none. Throws kerf::Error for a labelling of the wrong size or a depth outside (0, 1].
+/// One stroke per segment of a per-face segmentation, as a user strokes along a part: its points
+/// are the centroids of the segment's spine (kerf::segmentSpines, the longest path through the
+/// faces at least `depth` times as far inside as its innermost face). Strokes come in label order;
+/// unlabelled faces (-1) get none. Throws kerf::Error for a labelling of the wrong size or a depth
+/// outside (0, 1].
 std::vector<SegmentStroke> innermostStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, double depth);
 
 } // namespace kerf

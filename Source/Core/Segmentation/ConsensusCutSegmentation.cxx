@@ -7,6 +7,8 @@
 #include "Harmonic/Isolines.h"
 #include "Harmonic/SparseCholesky.h"
 #include "Mesh/MeshValidation.h"
+#include "Segmentation/RandomWalk.h"
+#include "Segmentation/SegmentSpines.h"
 #include "Session/Surface.h"
 
 #include <algorithm>
@@ -339,6 +341,50 @@ private:
   int VisitStamp = 0;
 };
 
+// Step (6): the segments' spines seed random walks, each face to its most probable segment. The
+// corners of a spine's faces are its seeds; a vertex two spines share seeds neither, and where a
+// segment would be left without a seed the labels stay as they are.
+void walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& weights, double depth, ConsensusCutResult& result)
+{
+  std::vector<int> seedLabel(static_cast<std::size_t>(mesh.vertexCount()), -1);
+  const int shared = -2;
+  const std::vector<SegmentSpine> spines = segmentSpines(mesh, result.labels, depth);
+  for (const SegmentSpine& spine : spines)
+  {
+    for (int f : spine.faces)
+    {
+      for (int v : mesh.triangle(f))
+      {
+        seedLabel[v] = seedLabel[v] == -1 || seedLabel[v] == spine.label ? spine.label : shared;
+      }
+    }
+  }
+  std::vector<int> vertices, labels;
+  std::vector<char> seeded(spines.size() > 0 ? static_cast<std::size_t>(spines.back().label) + 1 : 0, 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (seedLabel[v] >= 0)
+    {
+      vertices.push_back(v);
+      labels.push_back(seedLabel[v]);
+      seeded[seedLabel[v]] = 1;
+    }
+  }
+  for (const SegmentSpine& spine : spines)
+  {
+    if (!seeded[spine.label])
+    {
+      return;
+    }
+  }
+  const std::vector<int> walked = randomWalkLabels(mesh, weights, vertices, labels).faceLabels;
+  for (std::size_t f = 0; f < walked.size(); ++f)
+  {
+    result.walkedFaces += walked[f] != result.labels[f] ? 1 : 0;
+  }
+  result.labels = walked;
+}
+
 ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
 {
   const TriangleMesh& mesh = surface.mesh();
@@ -483,6 +529,11 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
     ++result.chosenCuts;
   }
   result.labels = finalizeSegments(graph, labels, k);
+  if (options.walkDepth > 0.0)
+  {
+    walkFromSpines(mesh, surface.laplacianWeights(weightOptions).weights, options.walkDepth, result);
+    result.labels = finalizeSegments(graph, result.labels, k);
+  }
   return result;
 }
 } // namespace
@@ -498,10 +549,11 @@ ConsensusCutResult segmentByConsensusCuts(const Surface& surface, int k, const C
   if (!(options.clipQuantile >= 0.0 && options.clipQuantile < 0.5) ||
     !(options.sameCutTolerance >= 0.0 && options.sameCutTolerance <= 1.0) ||
     !(options.minimumSegmentArea >= 0.0 && options.minimumSegmentArea < 1.0) ||
-    !(options.voteExponent >= 0.0 && std::isfinite(options.voteExponent)))
+    !(options.voteExponent >= 0.0 && std::isfinite(options.voteExponent)) ||
+    !(options.walkDepth >= 0.0 && options.walkDepth <= 1.0))
   {
     throw Error("a consensus-cut option is out of range (clip quantile in [0, 0.5), tolerance in [0, 1], "
-                "minimum area in [0, 1), vote exponent >= 0)");
+                "minimum area in [0, 1), vote exponent >= 0, walk depth in [0, 1])");
   }
   const MeshReport report = inspectMesh(mesh);
   if (report.nonManifoldEdges > 0 || report.inconsistentEdges > 0)
@@ -524,6 +576,7 @@ ConsensusCutResult segmentByConsensusCuts(const Surface& surface, int k, const C
     result.candidates += partResult.candidates;
     result.consensusCuts += partResult.consensusCuts;
     result.chosenCuts += partResult.chosenCuts;
+    result.walkedFaces += partResult.walkedFaces;
     return partResult.labels;
   });
   return result;

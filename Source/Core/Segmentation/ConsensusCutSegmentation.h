@@ -44,6 +44,11 @@ struct ConsensusCutOptions
   double areaExponent = 0.25;
   /// A consensus cut ranks by its best score times (fields that found it)^this. Default 0.5.
   double voteExponent = 0.5;
+  /// Boundary refinement by random walks: each segment's spine through its faces at least this
+  /// fraction as deep as its innermost one (kerf::segmentSpines) seeds random walks on the same
+  /// Laplacian (kerf::randomWalkLabels), which move the cuts onto the concave creases near them.
+  /// 0 turns it off. Default 0.3.
+  double walkDepth = 0.3;
 };
 
 struct ConsensusCutResult
@@ -54,6 +59,8 @@ struct ConsensusCutResult
   int candidates = 0;      ///< candidate cuts (isoline components at score peaks)
   int consensusCuts = 0;   ///< distinct cuts after grouping the candidates
   int chosenCuts = 0;
+  /// Faces whose label the random walks changed (before the final clean-up).
+  int walkedFaces = 0;
 };
 
 /// Consensus cuts. (1) Feature points by farthest-point sampling. (2) One factorization of the
@@ -66,7 +73,9 @@ struct ConsensusCutResult
 /// the same way are one consensus cut, ranked by its best score and the number of fields that
 /// found it. (5) The best cuts are taken in turn, skipping those that would leave a segment below
 /// the minimum area or make more than k segments, until k segments exist; then segments are made
-/// connected and at most k (finalizeSegments). Each dual-graph component is segmented apart with
+/// connected and at most k (finalizeSegments). (6) With a walk depth above 0, each segment's spine
+/// seeds multi-label random walks on the same weights (Lai et al. 2009), every face takes its most
+/// probable segment, and the clean-up runs again. Each dual-graph component is segmented apart with
 /// its share of k (segmentComponents). Deterministic. Throws kerf::Error for k < 1, k > faces,
 /// a surface that is not edge-manifold and consistently oriented, or options out of range.
 ConsensusCutResult segmentByConsensusCuts(const Surface& surface, int k, const ConsensusCutOptions& options);
