@@ -4,16 +4,20 @@
  *
  * Each stroke (a polyline of input 1, or a point of a vertex cell: a click) carries a label in the cell array named by
  * StrokeLabelArrayName: foreground 1 and background 0 cut out one part; more labels cut out more
- * parts. Without input 1, the foreground and background strokes drawn in the panel are used. Every vertex takes the label of the stroke nearest to it under the improved isophotic
- * metric (Ji et al. 2006, sections 3 and 4.2), a length that grows with the change of the normal and,
- * strongly, with concave curvature, so parts meet along concave creases. With Refine, the
+ * parts. Without input 1, the foreground and background strokes drawn in the panel are used.
+ * Fronts grow from the strokes under the improved isophotic metric (Ji et al. 2006, sections 3
+ * and 4.2), a length that grows with the change of the normal and, strongly, with concave
+ * curvature; where the boundaries go is BoundaryPlacement's choice (vtkStrokeGrowingAlgorithm):
+ * by default random walks on the concavity-aware Laplacian, so parts end at concave creases,
+ * or the paper's rule, each vertex to its nearest stroke. With Refine, the
  * boundaries are then moved as snakes to where they are short, smooth and curved (section 5.1).
  * Override strokes (polylines of the optional input 2) then edit the boundary (section 5.2): each
  * replaces the part of the boundary within OverrideRadius of it by itself.
  *
  * Output 0: the surface with the cell array SegmentArrayName (the label of each triangle, -1 where
- * no stroke reaches: a component without strokes) and the point array "IsophoticDistance" (the
- * metric distance to the nearest stroke, -1 where none reaches). Output 1: the boundaries between
+ * no stroke reaches: a component without strokes), the point array "IsophoticDistance" (the
+ * metric distance to the nearest stroke, -1 where none reaches) and, with the random walks,
+ * "Probability" (the probability of each point's grown label). Output 1: the boundaries between
  * labels as polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller
  * label on the left seen from outside).
  *

@@ -6,14 +6,15 @@
  * Input 1 holds the strokes: polylines, or points of vertex cells (clicks), each with a label in
  * the cell array named by StrokeLabelArrayName; their points are moved to the nearest surface
  * points and refused beyond MaximumProjectionDistance (vtkEasyMeshCut also takes strokes drawn
- * in its panel when input 1 is not connected). Every vertex takes the label of the
- * stroke nearest to it under the metric, whose edge length grows with the change of the normal
- * (NormalWeight) and, strongly, with concave curvature (CurvatureWeight, CurvatureAugmentation).
+ * in its panel when input 1 is not connected). Fronts grow from the strokes under the metric,
+ * whose edge length grows with the change of the normal (NormalWeight) and, strongly, with
+ * concave curvature (CurvatureWeight, CurvatureAugmentation).
  * BoundaryPlacement says where the boundaries between labels go: by default each vertex and
  * face takes the label that a random walk from it, on the concavity-aware Laplacian, most likely
  * reaches first (kerf::randomWalkLabels), so parts end at concave creases rather than halfway
- * between strokes; or where the fronts meet (the paper's rule); or where the fronts meet moved by
- * a minimum cut through the band around them (CutBand; kerf::placeCuts).
+ * between strokes; or where the fronts meet (the paper's rule: every vertex to the stroke nearest
+ * to it under the metric); or where the fronts meet moved by a minimum cut through the band
+ * around them (CutBand; kerf::placeCuts).
  * The labels are written as SegmentArrayName; output 1 holds the boundaries between labels.
  * kerf::ReadGrowingOptions reads the parameters.
  */
@@ -87,9 +88,10 @@ public:
   ///@}
 
   ///@{
-  /// Cut placement (BOUNDARY_MINIMUM_CUT): the band between two labels in which a minimum cut places their boundary, as
-  /// the ratio of a vertex's metric distance to its nearest label over that to the second
-  /// nearest; 0 keeps the boundary where the fronts meet (the paper's rule). Default 0.3.
+  /// Cut placement (BOUNDARY_MINIMUM_CUT only): the band between two labels in which a minimum
+  /// cut places their boundary, as the ratio of a vertex's metric distance to its nearest label
+  /// over that to the second nearest; 0 keeps the boundary where the fronts meet (the paper's
+  /// rule). Default 0.3.
   vtkSetClampMacro(CutBand, double, 0.0, 0.99);
   vtkGetMacro(CutBand, double);
   ///@}

@@ -204,7 +204,7 @@ int TestEasyMeshCutFilter(int, char*[])
     {
       double range[2];
       probability->GetRange(range);
-      ok &= KERF_CHECK(range[0] >= 0.5 && range[1] == 1.0); // two labels: the winner has at least 1/2
+      ok &= KERF_CHECK(range[0] >= 0.5 - 1e-12 && range[1] == 1.0); // two labels: at least 1/2, up to rounding
     }
   }
   // Strokes as points: vertex cells (a vertex and a poly-vertex) label like lines, and a line's

@@ -28,6 +28,13 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
   {
     throw Error("the random walks' edge weights do not belong to this mesh");
   }
+  for (const double weight : edgeWeights)
+  {
+    if (!(weight >= 0.0 && std::isfinite(weight)))
+    {
+      throw Error("the random walks' edge weights must be finite and not negative");
+    }
+  }
   // A vertex's seed label, -1 if it is no seed.
   std::vector<int> seedLabel(static_cast<std::size_t>(n), -1);
   std::vector<char> seededComponent(static_cast<std::size_t>(mesh.componentCount()), 0);

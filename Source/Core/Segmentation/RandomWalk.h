@@ -23,18 +23,18 @@ struct RandomWalkLabelling
   std::vector<int> faceLabels;
 };
 
-/// Multi-label random walks (Grady 2006; Lai et al. 2009, section 3): the probability that a
+/// Multi-label random walks (Grady 2006, section 2; Lai et al. 2009, section 3): the probability that a
 /// random walk from vertex v, stepping along edges in proportion to their weights, reaches a seed
 /// of label l before any other seed is the harmonic field that is 1 on l's seeds and 0 on the
 /// others' (L_FF p_F = -L_FS p_S). Every vertex takes the label of largest probability, and every
 /// face the label whose corner probabilities sum highest (a face is labelled by its own area
 /// rather than by one corner; ties go to the smaller label). One factorization serves all labels
-/// (kerf::HarmonicFieldSolver, its hard set unchanged), and one field is held at a time: memory is
-/// O(vertices + faces) whatever the number of labels. Components without seeds are held at 0
-/// (disconnected, they change nothing elsewhere) and labelled -1. `edgeWeights` are one
-/// non-negative weight per mesh edge (kerf::computeLaplacianWeights). Throws kerf::Error for
-/// seeds off the mesh, negative labels, a seed given two labels, weights of another mesh, or no
-/// seed.
+/// (kerf::HarmonicFieldSolver, its hard set unchanged), and one field is held at a time: beyond
+/// the factorization, memory does not grow with the number of labels. Components without seeds
+/// are held at 0 (disconnected, they change nothing elsewhere) and labelled -1. `edgeWeights` are
+/// one finite, non-negative weight per mesh edge (kerf::computeLaplacianWeights). Throws
+/// kerf::Error for seeds off the mesh, negative labels, a seed given two labels, weights of
+/// another mesh or negative or not finite, or no seed.
 RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector<double>& edgeWeights,
   const std::vector<int>& seedVertices, const std::vector<int>& seedLabels);
 

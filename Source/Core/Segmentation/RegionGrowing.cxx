@@ -68,7 +68,7 @@ std::string boundaryPlacementName(BoundaryPlacement placement)
     case BoundaryPlacement::RandomWalks:
       return "random-walks";
   }
-  return "random-walks";
+  throw Error("unknown boundary placement " + std::to_string(static_cast<int>(placement)));
 }
 
 BoundaryPlacement parseBoundaryPlacement(const std::string& name)
@@ -566,6 +566,11 @@ RegionGrowingResult growRegions(
     throw Error("the maximum distance of stroke points must be a non-negative number");
   }
   checkCutPlacementOptions(options.cutPlacement);
+  if (options.placement != BoundaryPlacement::Fronts && options.placement != BoundaryPlacement::MinimumCut &&
+    options.placement != BoundaryPlacement::RandomWalks)
+  {
+    throw Error("unknown boundary placement " + std::to_string(static_cast<int>(options.placement)));
+  }
   const TriangleMesh& mesh = surface.mesh();
   RegionGrowingResult result;
   result.seeds = snapStrokes(mesh, surface.locator(), strokes, options.maximumDistance);

@@ -67,7 +67,7 @@ enum class BoundaryPlacement
   /// of 0 keeps the fronts).
   MinimumCut,
   /// Random walks from the strokes on the concavity-aware Laplacian (kerf::randomWalkLabels; Lai
-  /// et al. 2009 with the weights of Au et al. 2011): every vertex and face takes the label a walk
+  /// et al. 2009, section 3, with the weights of Au et al. 2011, Eq. 2-3): every vertex and face takes the label a walk
   /// from it most likely reaches first, and walks rarely cross concave creases. An addition to
   /// the paper: a part is not bounded halfway between strokes but where the surface bends inwards,
   /// even when another stroke is nearer.
@@ -92,15 +92,16 @@ struct RegionGrowingOptions
   /// MinimumCut's parameters.
   CutPlacementOptions cutPlacement;
   /// RandomWalks' edge weights: the concavity-aware weights with the paper's values (Au et al.
-  /// 2011, beta = 0.01 at concave vertices).
+  /// 2011, Eq. 2-3: beta = 0.01 at concave vertices).
   LaplacianWeightOptions walkWeights = { LaplacianWeighting::ConcavityAware };
 };
 
 /// A grown segmentation.
 struct RegionGrowingResult
 {
-  /// The label of the nearest stroke under the metric; -1 where no stroke reaches (a component
-  /// without strokes, or a point no triangle uses).
+  /// The label of the nearest stroke under the metric (Fronts), moved by the minimum cut
+  /// (MinimumCut), or the most probable label (RandomWalks); -1 where no stroke reaches (a
+  /// component without strokes, or a point no triangle uses).
   std::vector<int> vertexLabels;
   /// The metric distance to the nearest stroke (input units); -1 where no stroke reaches. With
   /// random walks, the distance to the nearest stroke of any label.
