@@ -134,8 +134,9 @@ class BenchmarkRunner(unittest.TestCase):
 
     def test_consensus_cuts_beat_every_survey_family(self):
         # Automatic segmentation with k from nSeg-ByModel.txt, scored against every human of each
-        # model (issue: the flagship below 0.20 and below every survey family). Measured mean 1 -
-        # Rand index: consensus cuts 0.176 (0.191 without the random walks), spectral 0.215,
+        # model (issue: the flagship below 0.20 and below every survey family; asserted below 0.185
+        # so that the random walks' gain stays). Measured mean 1 - Rand index: consensus cuts 0.176
+        # (0.191 without the random walks), spectral 0.215,
         # k-means 0.275, convex flooding 0.295, face clustering 0.349, watershed 0.598 (the humans
         # among themselves: 0.111).
         def mean_rand_index(method):
@@ -148,7 +149,7 @@ class BenchmarkRunner(unittest.TestCase):
             return sum(float(r["RandIndexError"]) for r in rows) / len(rows)
 
         flagship = mean_rand_index("consensus-cuts")
-        self.assertLess(flagship, 0.18)
+        self.assertLess(flagship, 0.185)
         for family in ("spectral", "k-means", "convex-flooding", "face-clustering", "watershed"):
             self.assertLess(flagship, mean_rand_index(family), family)
 

@@ -378,6 +378,16 @@ void walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& weights
     }
   }
   const std::vector<int> walked = randomWalkLabels(mesh, weights, vertices, labels).faceLabels;
+  // A segment whose few seeds lose every face would vanish: then the cuts stand.
+  std::vector<char> kept(seeded.size(), 0);
+  for (int label : walked)
+  {
+    kept[label] = 1;
+  }
+  if (std::count(kept.begin(), kept.end(), 1) < static_cast<std::ptrdiff_t>(spines.size()))
+  {
+    return;
+  }
   for (std::size_t f = 0; f < walked.size(); ++f)
   {
     result.walkedFaces += walked[f] != result.labels[f] ? 1 : 0;
