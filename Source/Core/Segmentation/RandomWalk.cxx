@@ -85,7 +85,11 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
       constraints.dirichletValues[i] = seedLabel[constraints.dirichletVertices[i]] == label ? 1.0 : 0.0;
     }
     // The same hard set every time: the first label factors, the others back-substitute.
-    const std::vector<double> field = solver.solve(mesh, edgeWeights, constraints).field;
+    std::vector<double> field = solver.solve(mesh, edgeWeights, constraints).field;
+    for (double& value : field)
+    {
+      value = std::min(1.0, std::max(0.0, value)); // the maximum principle, up to rounding
+    }
     for (int v = 0; v < n; ++v)
     {
       const int component = mesh.vertexComponent(v);
@@ -93,7 +97,7 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
       {
         continue;
       }
-      const double p = std::min(1.0, std::max(0.0, field[v])); // the maximum principle, up to rounding
+      const double p = field[v];
       if (result.vertexLabels[v] < 0 || p > result.vertexProbabilities[v])
       {
         result.vertexLabels[v] = label;
@@ -107,8 +111,7 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
       {
         continue;
       }
-      const double sum = std::min(1.0, std::max(0.0, field[t[0]])) + std::min(1.0, std::max(0.0, field[t[1]])) +
-        std::min(1.0, std::max(0.0, field[t[2]]));
+      const double sum = field[t[0]] + field[t[1]] + field[t[2]];
       if (sum > faceBest[f])
       {
         faceBest[f] = sum;
