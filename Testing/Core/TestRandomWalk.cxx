@@ -1,4 +1,4 @@
-// Multi-label random walks: linear probabilities across a grid, unseeded components, ties, the neck of a two-lobe shape, errors and repeatability.
+// Multi-label random walks: linear probabilities across a grid, unseeded components, ties, the neck of a two-lobe shape, errors, repeatability, and walks from segment spines (never removing a segment).
 #include "Error.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/LaplacianWeights.h"
@@ -238,4 +238,121 @@ TEST(RandomWalk, PlacementNamesRoundTrip)
   unknown.placement = static_cast<BoundaryPlacement>(7);
   EXPECT_THROW(growRegions(surface, shape.strokes, unknown), Error);
   EXPECT_THROW(boundaryPlacementName(unknown.placement), Error);
+}
+
+namespace
+{
+double centroidX(const TriangleMesh& mesh, int f)
+{
+  const Triangle& t = mesh.triangle(f);
+  return (mesh.point(t[0]).x() + mesh.point(t[1]).x() + mesh.point(t[2]).x()) / 3.0;
+}
+
+// The faces of `mesh` that pass the test.
+template <typename Test>
+std::vector<int> facesWhere(const TriangleMesh& mesh, Test test)
+{
+  std::vector<int> faces;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    if (test(f))
+    {
+      faces.push_back(f);
+    }
+  }
+  return faces;
+}
+} // namespace
+
+TEST(RandomWalk, SpinesOnAStripsSidesCutItHalfway)
+{
+  // A unit strip of 20 x 10 cells cut at x = 0.3; each segment's spine is its outer column of
+  // faces, so its seeds are the vertex columns x = 0 and 0.05 (label 0) and 0.95 and 1 (label 1).
+  // The fields are linear between them: p_0 = 1/2 on x = 1/2, every face left of it goes to 0 and
+  // every face right of it to 1, and the 4 columns of 20 faces between 0.3 and 0.5 change.
+  const TriangleMesh mesh = makeGrid(1.0, 0.5, 20, 10);
+  const std::vector<double> weights = cotangentWeights(mesh);
+  std::vector<int> labels(mesh.faceCount());
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    labels[f] = centroidX(mesh, f) < 0.3 ? 0 : 1;
+  }
+  const std::vector<SegmentSpine> spines = {
+    { 0, facesWhere(mesh, [&](int f) { return centroidX(mesh, f) < 0.05; }) },
+    { 1, facesWhere(mesh, [&](int f) { return centroidX(mesh, f) > 0.95; }) },
+  };
+  ASSERT_EQ(spines[0].faces.size(), 20u);
+  const SpineWalk walk = walkFromSpines(mesh, weights, spines, labels);
+  EXPECT_TRUE(walk.applied);
+  EXPECT_EQ(walk.changedFaces, 80);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    EXPECT_EQ(walk.faceLabels[f], centroidX(mesh, f) < 0.5 ? 0 : 1) << "face " << f;
+  }
+  // The input is left as it was, and the same call gives the same labels.
+  EXPECT_EQ(walkFromSpines(mesh, weights, spines, labels).faceLabels, walk.faceLabels);
+}
+
+TEST(RandomWalk, SpinesNeverRemoveASegment)
+{
+  // Segment 1 is one face F of a 20 x 10 grid, its spine F itself; segment 0 is every other face.
+  const TriangleMesh mesh = makeGrid(1.0, 0.5, 20, 10);
+  const std::vector<double> weights = cotangentWeights(mesh);
+  const int F = facesWhere(mesh, [&](int f) {
+    const Triangle& t = mesh.triangle(f);
+    const Vector3 c = (mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0;
+    return std::abs(c.x() - 0.5) < 0.025 && std::abs(c.y() - 0.25) < 0.025;
+  }).front();
+  std::vector<int> labels(mesh.faceCount(), 0);
+  labels[F] = 1;
+  const int c = mesh.triangle(F)[0]; // the corner left to segment 1
+  auto contains = [&](int f, int v) {
+    const Triangle& t = mesh.triangle(f);
+    return t[0] == v || t[1] == v || t[2] == v;
+  };
+
+  // Segment 0's spine through every other face but those around c: F's two other corners are
+  // shared and seed neither, c is segment 1's only seed, and every vertex else seeds 0. A walk
+  // from c reaches a seed of 0 at its first step, so c's faces sum more for 0 (each free corner
+  // is 0's with probability 1 - w_ac / sum_a w): segment 1 would win no face, and the input stands.
+  const std::vector<int> notAroundC = facesWhere(mesh, [&](int f) { return f != F && !contains(f, c); });
+  const std::vector<SegmentSpine> starved = { { 0, notAroundC }, { 1, { F } } };
+  const SpineWalk kept = walkFromSpines(mesh, weights, starved, labels);
+  EXPECT_FALSE(kept.applied);
+  EXPECT_EQ(kept.changedFaces, 0);
+  EXPECT_EQ(kept.faceLabels, labels);
+  // The walk the fallback refused: the same seeds, drawn by hand, give segment 1 no face.
+  std::vector<int> seedVertices, seedLabels;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const Triangle& t = mesh.triangle(F);
+    if (v == c || (v != t[1] && v != t[2]))
+    {
+      seedVertices.push_back(v);
+      seedLabels.push_back(v == c ? 1 : 0);
+    }
+  }
+  const std::vector<int> refused = randomWalkLabels(mesh, weights, seedVertices, seedLabels).faceLabels;
+  EXPECT_EQ(std::count(refused.begin(), refused.end(), 1), 0);
+
+  // Segment 0's spine through every other face: all three corners of F are shared, segment 1 has
+  // no seed, and the input stands.
+  const std::vector<SegmentSpine> unseeded = { { 0, facesWhere(mesh, [&](int f) { return f != F; }) }, { 1, { F } } };
+  const SpineWalk unchanged = walkFromSpines(mesh, weights, unseeded, labels);
+  EXPECT_FALSE(unchanged.applied);
+  EXPECT_EQ(unchanged.faceLabels, labels);
+
+  // Segment 0's spine along the grid's left column: F's corners seed 1 and F keeps its label.
+  const std::vector<SegmentSpine> apart = {
+    { 0, facesWhere(mesh, [&](int f) { return centroidX(mesh, f) < 0.05; }) }, { 1, { F } }
+  };
+  const SpineWalk walked = walkFromSpines(mesh, weights, apart, labels);
+  EXPECT_TRUE(walked.applied);
+  EXPECT_EQ(walked.faceLabels[F], 1);
+  EXPECT_GT(std::count(walked.faceLabels.begin(), walked.faceLabels.end(), 1), 1);
+
+  // A spine through another segment's face, or labels of another mesh, are refused.
+  EXPECT_THROW(walkFromSpines(mesh, weights, { { 1, { F, notAroundC.front() } } }, labels), Error);
+  EXPECT_THROW(walkFromSpines(mesh, weights, { { 0, { mesh.faceCount() } } }, labels), Error);
+  EXPECT_THROW(walkFromSpines(mesh, weights, apart, std::vector<int>(3, 0)), Error);
 }

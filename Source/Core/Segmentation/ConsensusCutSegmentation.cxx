@@ -341,60 +341,6 @@ private:
   int VisitStamp = 0;
 };
 
-// Step (6): the segments' spines seed random walks, each face to its most probable segment. The
-// corners of a spine's faces are its seeds; a vertex two spines share seeds neither, and where a
-// segment would be left without a seed the labels stay as they are.
-void walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& weights, double depth, ConsensusCutResult& result)
-{
-  std::vector<int> seedLabel(static_cast<std::size_t>(mesh.vertexCount()), -1);
-  const int shared = -2;
-  const std::vector<SegmentSpine> spines = segmentSpines(mesh, result.labels, depth);
-  for (const SegmentSpine& spine : spines)
-  {
-    for (int f : spine.faces)
-    {
-      for (int v : mesh.triangle(f))
-      {
-        seedLabel[v] = seedLabel[v] == -1 || seedLabel[v] == spine.label ? spine.label : shared;
-      }
-    }
-  }
-  std::vector<int> vertices, labels;
-  std::vector<char> seeded(spines.size() > 0 ? static_cast<std::size_t>(spines.back().label) + 1 : 0, 0);
-  for (int v = 0; v < mesh.vertexCount(); ++v)
-  {
-    if (seedLabel[v] >= 0)
-    {
-      vertices.push_back(v);
-      labels.push_back(seedLabel[v]);
-      seeded[seedLabel[v]] = 1;
-    }
-  }
-  for (const SegmentSpine& spine : spines)
-  {
-    if (!seeded[spine.label])
-    {
-      return;
-    }
-  }
-  const std::vector<int> walked = randomWalkLabels(mesh, weights, vertices, labels).faceLabels;
-  // A segment whose few seeds lose every face would vanish: then the cuts stand.
-  std::vector<char> kept(seeded.size(), 0);
-  for (int label : walked)
-  {
-    kept[label] = 1;
-  }
-  if (std::count(kept.begin(), kept.end(), 1) < static_cast<std::ptrdiff_t>(spines.size()))
-  {
-    return;
-  }
-  for (std::size_t f = 0; f < walked.size(); ++f)
-  {
-    result.walkedFaces += walked[f] != result.labels[f] ? 1 : 0;
-  }
-  result.labels = walked;
-}
-
 ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
 {
   const TriangleMesh& mesh = surface.mesh();
@@ -541,8 +487,11 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
   result.labels = finalizeSegments(graph, labels, k);
   if (options.walkDepth > 0.0)
   {
-    walkFromSpines(mesh, surface.laplacianWeights(weightOptions).weights, options.walkDepth, result);
-    result.labels = finalizeSegments(graph, result.labels, k);
+    // Step (6): the segments' spines seed random walks, each face to its most probable segment.
+    const SpineWalk walk = walkFromSpines(mesh, surface.laplacianWeights(weightOptions).weights,
+      segmentSpines(mesh, result.labels, options.walkDepth), result.labels);
+    result.walkedFaces = walk.changedFaces;
+    result.labels = finalizeSegments(graph, walk.faceLabels, k);
   }
   return result;
 }

@@ -122,4 +122,81 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
   return result;
 }
 
+SpineWalk walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& edgeWeights,
+  const std::vector<SegmentSpine>& spines, const std::vector<int>& faceLabels)
+{
+  if (static_cast<int>(faceLabels.size()) != mesh.faceCount())
+  {
+    throw Error("the segmentation walked from its spines does not belong to this mesh");
+  }
+  SpineWalk walk;
+  walk.faceLabels = faceLabels;
+  int labelCount = 0;
+  for (const SegmentSpine& spine : spines)
+  {
+    for (const int f : spine.faces)
+    {
+      if (f < 0 || f >= mesh.faceCount() || spine.label < 0 || faceLabels[f] != spine.label)
+      {
+        throw Error("a spine of label " + std::to_string(spine.label) + " passes through face " + std::to_string(f) +
+          ", which is not one of that segment's faces");
+      }
+    }
+    labelCount = std::max(labelCount, spine.label + 1);
+  }
+  std::vector<int> seedLabel(static_cast<std::size_t>(mesh.vertexCount()), -1);
+  const int shared = -2;
+  for (const SegmentSpine& spine : spines)
+  {
+    for (const int f : spine.faces)
+    {
+      for (const int v : mesh.triangle(f))
+      {
+        seedLabel[v] = seedLabel[v] == -1 || seedLabel[v] == spine.label ? spine.label : shared;
+      }
+    }
+  }
+  std::vector<int> vertices, labels;
+  std::vector<char> seeded(static_cast<std::size_t>(labelCount), 0);
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (seedLabel[v] >= 0)
+    {
+      vertices.push_back(v);
+      labels.push_back(seedLabel[v]);
+      seeded[seedLabel[v]] = 1;
+    }
+  }
+  for (const SegmentSpine& spine : spines)
+  {
+    if (!seeded[spine.label])
+    {
+      return walk;
+    }
+  }
+  const std::vector<int> walked = randomWalkLabels(mesh, edgeWeights, vertices, labels).faceLabels;
+  std::vector<char> won(seeded.size(), 0);
+  for (const int label : walked)
+  {
+    if (label >= 0)
+    {
+      won[label] = 1;
+    }
+  }
+  for (const SegmentSpine& spine : spines)
+  {
+    if (!won[spine.label])
+    {
+      return walk;
+    }
+  }
+  for (std::size_t f = 0; f < walked.size(); ++f)
+  {
+    walk.changedFaces += walked[f] != faceLabels[f] ? 1 : 0;
+  }
+  walk.faceLabels = walked;
+  walk.applied = true;
+  return walk;
+}
+
 } // namespace kerf

@@ -2,6 +2,7 @@
 #pragma once
 
 #include "Mesh/TriangleMesh.h"
+#include "Segmentation/SegmentSpines.h"
 
 #include <vector>
 
@@ -37,5 +38,22 @@ struct RandomWalkLabelling
 /// another mesh or negative or not finite, or no seed.
 RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector<double>& edgeWeights,
   const std::vector<int>& seedVertices, const std::vector<int>& seedLabels);
+
+/// A segmentation redrawn by random walks from its segments' spines.
+struct SpineWalk
+{
+  std::vector<int> faceLabels; ///< the walks' labels, or the input's where they were not applied
+  int changedFaces = 0;        ///< faces whose label the walks changed
+  bool applied = false;        ///< false when a segment had no seed or would have lost every face
+};
+
+/// Redraws a per-face segmentation by random walks seeded on its segments' spines
+/// (kerf::segmentSpines): the corners of a spine's faces are its seeds, and a vertex the spines of
+/// two segments share seeds neither; every face then takes its most probable segment
+/// (kerf::randomWalkLabels). The walks never remove a segment: where a spine is left without a
+/// seed, or a segment's seeds would win no face, the input's labels are returned unchanged. Throws
+/// kerf::Error for labels or weights of another mesh, or a spine's face or label off the labelling.
+SpineWalk walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& edgeWeights,
+  const std::vector<SegmentSpine>& spines, const std::vector<int>& faceLabels);
 
 } // namespace kerf
