@@ -25,17 +25,6 @@ namespace kerf
 
 namespace
 {
-double meanEdgeLength(const TriangleMesh& mesh)
-{
-  double sum = 0.0;
-  for (int e = 0; e < mesh.edgeCount(); ++e)
-  {
-    const auto [a, b] = mesh.edgeVertices(e);
-    sum += (mesh.point(a) - mesh.point(b)).norm();
-  }
-  return mesh.edgeCount() > 0 ? sum / mesh.edgeCount() : 0.0;
-}
-
 std::string numberText(double value)
 {
   std::ostringstream text;
@@ -95,7 +84,7 @@ StrokeSeeds snapStrokes(const TriangleMesh& mesh, const ClosestPointLocator& loc
   {
     throw Error("the surface has no triangles");
   }
-  const double spacing = 0.5 * meanEdgeLength(mesh);
+  const double spacing = 0.5 * mesh.meanEdgeLength();
   // A segment longer than the surface is sampled no finer than this (a point far off the surface
   // must not make millions of samples).
   const double longest = 4.0 * mesh.boundingBoxDiagonal() + 2.0 * maximumDistance;
@@ -408,12 +397,10 @@ void placeCuts(const TriangleMesh& mesh, const NearestLabels& nearest, const Cut
     const bool concave = n1.dot(centroidOf(faces[1]) - centroidOf(faces[0])) > 0.0;
     return (concave ? 1.0 : options.convexWeight) * std::max(0.0, 1.0 - n1.dot(n2));
   };
-  double dihedralSum = 0.0, lengthSum = 0.0, areaSum = 0.0;
+  double dihedralSum = 0.0, areaSum = 0.0;
   for (int e = 0; e < mesh.edgeCount(); ++e)
   {
-    const auto [a, b] = mesh.edgeVertices(e);
     dihedralSum += dihedralOf(e);
-    lengthSum += (mesh.point(a) - mesh.point(b)).norm();
   }
   auto areaOf = [&mesh](int f) {
     const Triangle& t = mesh.triangle(f);
@@ -425,7 +412,8 @@ void placeCuts(const TriangleMesh& mesh, const NearestLabels& nearest, const Cut
     areaSum += areaOf(f);
   }
   const double dihedralMean = mesh.edgeCount() > 0 ? dihedralSum / mesh.edgeCount() : 0.0;
-  const double lengthMean = mesh.edgeCount() > 0 && lengthSum > 0.0 ? lengthSum / mesh.edgeCount() : 1.0;
+  const double meanLength = mesh.meanEdgeLength();
+  const double lengthMean = meanLength > 0.0 ? meanLength : 1.0;
   // Areas: a third of each corner's faces, over their mean (the total area over the vertices).
   const double areaMean = n > 0 && areaSum > 0.0 ? areaSum / n : 1.0;
   auto capacityOf = [&](int e) {
