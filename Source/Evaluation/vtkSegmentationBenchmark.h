@@ -24,7 +24,7 @@
  *   the result; the second refines the boundaries as snakes at the end. Parameters:
  *   normal-weight (w, 5), curvature-weight (w*, 5), augmentation (exponential, linear, square),
  *   curvature-term (per-length, per-edge), placement (random-walks, minimum-cut, fronts: where the
- *   boundaries go), cut-band (0.3, with placement=minimum-cut only), depth (0.2: the stroke keeps
+ *   boundaries go), cut-band (0.3, with placement=minimum-cut or random-walks), depth (0.2: the stroke keeps
  *   to faces at least this fraction as far inside as the innermost), corrections (3), overrides
  *   (0: rounds of override strokes along the input human's boundaries), override-radius (0.02),
  *   spacing (0.03).

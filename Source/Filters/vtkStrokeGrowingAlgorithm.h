@@ -12,7 +12,8 @@
  * BoundaryPlacement says where the boundaries between labels go: by default each vertex and
  * face takes the label that a random walk from it, on the concavity-aware Laplacian, most likely
  * reaches first (kerf::randomWalkLabels), so parts end at concave creases rather than halfway
- * between strokes; or where the fronts meet (the paper's rule: every vertex to the stroke nearest
+ * between strokes, and a minimum cut through the band where the walks hesitate between two labels
+ * (CutBand) puts the boundary on the shortest, most concave way there; or where the fronts meet (the paper's rule: every vertex to the stroke nearest
  * to it under the metric); or where the fronts meet moved by a minimum cut through the band
  * around them (CutBand; kerf::placeCuts).
  * The labels are written as SegmentArrayName; output 1 holds the boundaries between labels.
@@ -72,14 +73,16 @@ public:
     BOUNDARY_FRONTS = 0,
     /// The fronts, moved by a minimum cut through the band where they meet (CutBand).
     BOUNDARY_MINIMUM_CUT = 1,
-    /// Random walks from the strokes on the concavity-aware Laplacian.
+    /// Random walks from the strokes on the concavity-aware Laplacian, then a minimum cut
+    /// through the band where they hesitate between two labels (CutBand).
     BOUNDARY_RANDOM_WALKS = 2
   };
 
   ///@{
   /// Where the boundaries between labels go: BOUNDARY_FRONTS, BOUNDARY_MINIMUM_CUT or
   /// BOUNDARY_RANDOM_WALKS. Default BOUNDARY_RANDOM_WALKS. With random walks the output gets a
-  /// point array "Probability", the probability of each point's label.
+  /// point array "Probability", the probability of each point's label (where the cut gave a point
+  /// its second most probable label, the larger of its two probabilities).
   vtkSetClampMacro(BoundaryPlacement, int, BOUNDARY_FRONTS, BOUNDARY_RANDOM_WALKS);
   vtkGetMacro(BoundaryPlacement, int);
   void SetBoundaryPlacementToFronts() { this->SetBoundaryPlacement(BOUNDARY_FRONTS); }
@@ -88,10 +91,11 @@ public:
   ///@}
 
   ///@{
-  /// Cut placement (BOUNDARY_MINIMUM_CUT only): the band between two labels in which a minimum
-  /// cut places their boundary, as the ratio of a vertex's metric distance to its nearest label
-  /// over that to the second nearest; 0 keeps the boundary where the fronts meet (the paper's
-  /// rule). Default 0.3.
+  /// Cut placement (BOUNDARY_MINIMUM_CUT and BOUNDARY_RANDOM_WALKS): the band between two labels
+  /// in which a minimum cut places their boundary, as the ratio of a vertex's distance to its
+  /// nearest label over that to the second nearest. The distance is the metric's for the minimum
+  /// cut (0 keeps the boundary where the fronts meet, the paper's rule) and 1 minus the label's
+  /// probability for the random walks (0 keeps the walks' boundary). Default 0.3.
   vtkSetClampMacro(CutBand, double, 0.0, 0.99);
   vtkGetMacro(CutBand, double);
   ///@}

@@ -10,10 +10,11 @@
 //   BM_GrowingWithCuts/<size>        the growing with cut placement (band 0.3), as
 //                                    kerf::growRegions runs it: kerf::nearestTwoLabels, then
 //                                    kerf::placeCuts
-//   BM_GrowingWithRandomWalks/<size> the growing, then the random walks (the default placement),
-//                                    as kerf::growRegions runs them: kerf::growFromSeeds, then
-//                                    kerf::randomWalkLabels on the surface's cached
-//                                    concavity-aware weights (one factorization, two solves)
+//   BM_GrowingWithRandomWalks/<size> kerf::growRegions with its defaults on a surface whose
+//                                    caches are filled: stroke snapping, the growing, the random
+//                                    walks on the cached concavity-aware weights (one
+//                                    factorization, two solves) and the cut through their band
+//   BM_RandomWalksWithoutCut/<size>  the same with CutBand 0: the walks' boundary as it is
 //   BM_RegionGrowingFirstRun/<size>  kerf::growRegions on a new surface: descriptors, metric,
 //                                    stroke snapping, growing and the random walks (up to 100k)
 //   BM_VTKEdgeConnectivity/<size>    vtkPolyDataEdgeConnectivityFilter labelling all regions of
@@ -27,7 +28,6 @@
 #include "KerfBenchmarks.h"
 
 #include "Segmentation/IsophoticMetric.h"
-#include "Segmentation/RandomWalk.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Segmentation/SnakeRefinement.h"
 #include "Session/Surface.h"
@@ -163,20 +163,30 @@ void growingWithCuts(benchmark::State& state, GrowingScene& scene)
   checkTwoLabels(state, labels);
 }
 
-void growingWithRandomWalks(benchmark::State& state, GrowingScene& scene)
+// kerf::growRegions with random walks on a surface whose caches (descriptors, metric lengths, the
+// walks' weights) are filled before the timed loop, as a filter's surface keeps them between
+// updates; `band` 0 leaves out the cut through the walks' band.
+void timeRandomWalks(benchmark::State& state, GrowingScene& scene, double band)
 {
-  const kerf::TriangleMesh& mesh = scene.surface->mesh();
-  const std::vector<double>& weights = scene.surface->laplacianWeights(kerf::RegionGrowingOptions().walkWeights).weights;
-  std::vector<int> labels;
-  std::vector<double> distances;
-  kerf::RandomWalkLabelling walks;
+  kerf::RegionGrowingOptions options;
+  options.cutPlacement.band = band;
+  kerf::RegionGrowingResult result = kerf::growRegions(*scene.surface, scene.strokes, options);
   for (auto _ : state)
   {
-    kerf::growFromSeeds(mesh, scene.edgeLengths, scene.seeds, labels, distances);
-    walks = kerf::randomWalkLabels(mesh, weights, scene.seeds.vertices, scene.seeds.labels);
-    benchmark::DoNotOptimize(walks.vertexLabels.data());
+    result = kerf::growRegions(*scene.surface, scene.strokes, options);
+    benchmark::DoNotOptimize(result.vertexLabels.data());
   }
-  checkTwoLabels(state, walks.vertexLabels);
+  checkTwoLabels(state, result.vertexLabels);
+}
+
+void growingWithRandomWalks(benchmark::State& state, GrowingScene& scene)
+{
+  timeRandomWalks(state, scene, kerf::CutPlacementOptions().band);
+}
+
+void randomWalksWithoutCut(benchmark::State& state, GrowingScene& scene)
+{
+  timeRandomWalks(state, scene, 0.0);
 }
 
 void firstRun(benchmark::State& state, GrowingScene& scene)
@@ -254,10 +264,11 @@ namespace benchmarks
 
 void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes)
 {
-  const std::array<std::pair<const char*, Body>, 6> cases = { {
+  const std::array<std::pair<const char*, Body>, 7> cases = { {
     { "BM_RegionGrowing", growing },
     { "BM_GrowingWithCuts", growingWithCuts },
     { "BM_GrowingWithRandomWalks", growingWithRandomWalks },
+    { "BM_RandomWalksWithoutCut", randomWalksWithoutCut },
     { "BM_RegionGrowingFirstRun", firstRun },
     { "BM_VTKEdgeConnectivity", vtkEdgeConnectivity },
     { "BM_SnakeRefinement", snakeRefinement },

@@ -56,7 +56,7 @@ TEST(RandomWalk, ProbabilitiesAreLinearAcrossAGrid)
 {
   // Seeds on the two short sides of a planar strip: the harmonic field of each label is linear in
   // x (the cotangent Laplacian is linearly precise on this grid), so a vertex's probability is
-  // max(x, 1 - x), the left half is 3 and the right half 7.
+  // max(x, 1 - x) and its other label's min(x, 1 - x), the left half is 3 and the right half 7.
   const StripWalk strip(0.3, 20, 6);
   const TriangleMesh& mesh = strip.mesh;
   const RandomWalkLabelling& walks = strip.walks;
@@ -65,9 +65,15 @@ TEST(RandomWalk, ProbabilitiesAreLinearAcrossAGrid)
   {
     const double x = mesh.point(v).x();
     EXPECT_NEAR(walks.vertexProbabilities[v], std::max(x, 1.0 - x), 1e-9) << "vertex " << v;
+    EXPECT_NEAR(walks.secondProbabilities[v], std::min(x, 1.0 - x), 1e-9) << "vertex " << v;
     if (std::abs(x - 0.5) > 1e-9)
     {
       EXPECT_EQ(walks.vertexLabels[v], x < 0.5 ? 3 : 7) << "vertex " << v;
+      EXPECT_EQ(walks.secondLabels[v], x < 0.5 ? 7 : 3) << "vertex " << v;
+    }
+    else
+    {
+      EXPECT_EQ(walks.vertexLabels[v] + walks.secondLabels[v], 10) << "vertex " << v; // 3 and 7
     }
   }
   for (int f = 0; f < mesh.faceCount(); ++f)

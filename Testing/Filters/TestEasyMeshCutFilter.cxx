@@ -151,10 +151,10 @@ int TestEasyMeshCutFilter(int, char*[])
     const std::vector<int> labels = segmentsOf(cut->GetOutput());
     const kerf::SegmentationScores scores = kerf::compareSegmentations(mesh, labels, known);
     std::cout << (refine ? "refined" : "grown") << ": Rand index error " << scores.randIndexError << std::endl;
-    // Measured at 20,480 triangles with the random walks: 0.0021 grown, 0.0099 refined (the
-    // snake settles beside the narrowest ring, where |k_min| + |k_max| is largest, not on the
-    // crease).
-    ok &= KERF_CHECK(scores.randIndexError < (refine ? 0.012 : 0.004));
+    // Measured at 20,480 triangles with the random walks and the cut through their band: 0.0014
+    // grown, 0.0095 refined (the snake settles beside the narrowest ring, where |k_min| + |k_max|
+    // is largest, not on the crease).
+    ok &= KERF_CHECK(scores.randIndexError < (refine ? 0.012 : 0.003));
     vtkPolyData* boundary = cut->GetBoundary();
     ok &= KERF_CHECK(boundary->GetNumberOfCells() == 1);
     vtkDataArray* left = boundary->GetCellData()->GetArray("LeftLabel");
@@ -162,7 +162,7 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(left && right && left->GetComponent(0, 0) == 0.0 && right->GetComponent(0, 0) == 1.0);
     vtkDataArray* closed = boundary->GetCellData()->GetArray("Closed");
     ok &= KERF_CHECK(closed && closed->GetComponent(0, 0) == 1.0);
-    // The boundary runs around the crease (measured within 0.046 refined, 0.060 grown).
+    // The boundary runs around the crease (measured within 0.046 refined, 0.047 grown).
     double worst = 0.0;
     for (vtkIdType i = 0; i < boundary->GetNumberOfPoints(); ++i)
     {
@@ -170,7 +170,7 @@ int TestEasyMeshCutFilter(int, char*[])
     }
     std::cout << "boundary: " << boundary->GetNumberOfPoints() << " points, farthest " << worst
               << " from the crease" << std::endl;
-    ok &= KERF_CHECK(worst < 0.075);
+    ok &= KERF_CHECK(worst < 0.06);
     vtkDataArray* distance = cut->GetOutput()->GetPointData()->GetArray("IsophoticDistance");
     ok &= KERF_CHECK(distance && distance->GetNumberOfTuples() == dumbbell->GetNumberOfPoints());
 
@@ -222,7 +222,7 @@ int TestEasyMeshCutFilter(int, char*[])
     std::replace(labels.begin(), labels.end(), 2, 0); // the two labels of the larger lobe as one
     const double error = kerf::compareSegmentations(mesh, labels, known).randIndexError;
     std::cout << "vertex strokes: Rand index error " << error << std::endl;
-    ok &= KERF_CHECK(error < 0.011); // measured 0.0084
+    ok &= KERF_CHECK(error < 0.011); // measured 0.0098
   }
   // Strokes drawn in the panel (no input 1): a foreground and a background click give the same
   // cut as the same clicks given as labelled one-point polylines.
@@ -242,7 +242,7 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(fromPanel == segmentsOf(clicks->GetOutput()));
     const double panelError = kerf::compareSegmentations(mesh, fromPanel, known).randIndexError;
     std::cout << "panel clicks: Rand index error " << panelError << std::endl;
-    ok &= KERF_CHECK(panelError < 0.012); // measured 0.0099, refined as above
+    ok &= KERF_CHECK(panelError < 0.012); // measured 0.0095, refined as above
     panel->SetNumberOfBackgroundPoints(0);
     int succeeded = 1;
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("place foreground and background") !=
@@ -416,7 +416,7 @@ int TestEasyMeshCutFilter(int, char*[])
       worst = std::max(worst, std::abs(boundary->GetPoint(i)[2] - crease));
     }
     std::cout << "known part refined: farthest " << worst << " from the crease" << std::endl;
-    ok &= KERF_CHECK(worst < 0.075);
+    ok &= KERF_CHECK(worst < 0.06);
     ok &= KERF_CHECK(refiner->GetOutput()->GetCellData()->GetArray("Known") != nullptr);
     ok &= KERF_CHECK(refiner->GetOutput()->GetCellData()->GetArray("Segment") == nullptr);
     refiner->SetSnakeIterations(0);

@@ -83,11 +83,12 @@ class BenchmarkRunner(unittest.TestCase):
         # Over psb-dev, every human in turn as the input: one stroke per segment (along its faces
         # at least a fifth as far inside as its innermost one) gives a mean fidelity of 0.125 where
         # the fronts meet (placement=fronts, the paper's rule), 0.095 with a minimum cut through
-        # their band and 0.054 with the random walks (the default; against the other humans 0.153
-        # and 0.121, the goal below 0.15); three rounds of corrections 0.022, with the snakes 0.022
-        # (the worst model 0.068 and 0.061, a bust), the input's number of segments reproduced in
-        # 97.0% of the runs with the snakes; 1 - Rand index against the other humans 0.116 and
-        # 0.115.
+        # their band, 0.054 with the random walks alone (cut-band=0) and 0.048 with the walks and
+        # the cut through their band (the default; the issue asks below 0.05; against the other
+        # humans 0.153, 0.121 and 0.118, the goal below 0.15); three rounds of corrections 0.020,
+        # with the snakes 0.020 (the worst model 0.054 and 0.049, a bust), the input's number of
+        # segments reproduced in 97.0% of the runs with the snakes; 1 - Rand index against the
+        # other humans 0.115 and 0.115.
         fronts = run("region-growing", "corrections=0;placement=fronts")
         cut = run("region-growing", "corrections=0;placement=minimum-cut")
         first = run("region-growing", "corrections=0")
@@ -99,25 +100,25 @@ class BenchmarkRunner(unittest.TestCase):
         self.assertGreater(mean(cut, "Fidelity"), 0.085)
         self.assertLess(mean(cut, "Fidelity"), mean(fronts, "Fidelity") - 0.02)
         self.assertLess(mean(cut, "RandIndexError"), mean(fronts, "RandIndexError"))
-        self.assertLess(mean(first, "Fidelity"), 0.06)
-        self.assertLess(mean(first, "Fidelity"), mean(cut, "Fidelity") - 0.03)
-        self.assertLess(mean(first, "RandIndexError"), 0.125)
-        self.assertLess(max(float(r["Fidelity"]) for r in first), 0.25)
+        self.assertLess(mean(first, "Fidelity"), 0.05)
+        self.assertLess(mean(first, "Fidelity"), mean(cut, "Fidelity") - 0.04)
+        self.assertLess(mean(first, "RandIndexError"), 0.12)
+        self.assertLess(max(float(r["Fidelity"]) for r in first), 0.2)
         for rows in (grown, refined):
-            self.assertLess(mean(rows, "Fidelity"), 0.025)
+            self.assertLess(mean(rows, "Fidelity"), 0.022)
             self.assertLess(mean(rows, "RandIndexError"), 0.12)
-            self.assertLess(max(float(r["Fidelity"]) for r in rows), 0.075)
+            self.assertLess(max(float(r["Fidelity"]) for r in rows), 0.06)
         self.assertGreater(mean(refined, "InputSegmentsMatched"), 0.95)
         # Each run has a stroke per segment at least, and the corrections add more.
         for a, b in zip(sorted(first, key=lambda r: r["Model"]), sorted(refined, key=lambda r: r["Model"])):
             self.assertGreaterEqual(float(a["Inputs"]), 1)
             self.assertGreater(float(b["Inputs"]), float(a["Inputs"]) - 1e-9)
         # Boundary editing (section 5.2): one round of override strokes along the input human's
-        # boundaries where faces are still wrong takes the snakes' 0.022 to 0.011 (worst model
+        # boundaries where faces are still wrong takes the snakes' 0.020 to 0.0098 (worst model
         # 0.036, a bearing) with 7.4 more strokes per run on average; a round adds no stroke where
         # nothing is wrong, so the inputs never fall.
         edited = run("region-growing+snakes", "overrides=1")
-        self.assertLess(mean(edited, "Fidelity"), 0.013)
+        self.assertLess(mean(edited, "Fidelity"), 0.011)
         self.assertLess(max(float(r["Fidelity"]) for r in edited), 0.04)
         self.assertLess(mean(edited, "RandIndexError"), mean(refined, "RandIndexError"))
         self.assertGreater(mean(edited, "Inputs"), mean(refined, "Inputs") + 5)
@@ -125,7 +126,7 @@ class BenchmarkRunner(unittest.TestCase):
             self.assertGreaterEqual(float(b["Inputs"]), float(a["Inputs"]))
         # The aim, the harmonic cuts' fidelity under 0.01: six rounds of corrections, then one of
         # overrides, on the grown labels (the snakes smooth the boundary away from the humans' face
-        # boundaries): 0.0064 (worst model 0.026, a fourleg), for 50.1 strokes per run on average.
+        # boundaries): 0.0066 (worst model 0.022, a fourleg), for 50.9 strokes per run on average.
         aimed = run("region-growing", "corrections=6;overrides=1")
         self.assertLess(mean(aimed, "Fidelity"), 0.0075)
         self.assertLess(max(float(r["Fidelity"]) for r in aimed), 0.03)
@@ -219,7 +220,9 @@ class BenchmarkRunner(unittest.TestCase):
                 (["--data", "/nonexistent/psb"], "no off/ subfolder"),
                 (["--data", DATA, "--method", "nonsense", "--models", "1"], "unknown method 'nonsense'"),
                 (["--data", DATA, "--models", "12345"], "model 12345 is not in"),
-                (["--data", DATA, "--jobs", "0"], "--jobs expects")):
+                (["--data", DATA, "--jobs", "0"], "--jobs expects"),
+                (["--data", DATA, "--method", "region-growing", "--models", "1", "--parameters",
+                  "placement=fronts;cut-band=0.3"], "applies to placement=minimum-cut and random-walks only")):
             for command in ([PROGRAM, "benchmark"], [sys.executable, "-m", "kerf.benchmark"]):
                 result = subprocess.run(command + arguments + ["--no-pictures", "-o", os.path.join(self.folder, "bad")],
                                         capture_output=True, text=True, timeout=120)

@@ -421,9 +421,9 @@ MethodOutput segmentWithRegionGrowing(
   metric.curvaturePerEdge = parameters.text("curvature-term", "per-length") == "per-edge";
   options.growing.placement =
     parseBoundaryPlacement(parameters.text("placement", boundaryPlacementName(options.growing.placement)));
-  if (!parameters.text("cut-band", "").empty() && options.growing.placement != BoundaryPlacement::MinimumCut)
+  if (!parameters.text("cut-band", "").empty() && options.growing.placement == BoundaryPlacement::Fronts)
   {
-    throw Error("the method parameter 'cut-band' applies to placement=minimum-cut only");
+    throw Error("the method parameter 'cut-band' applies to placement=minimum-cut and random-walks only");
   }
   options.growing.cutPlacement.band = fraction(parameters, "cut-band", options.growing.cutPlacement.band);
   const double depth = parameters.positive("depth", 0.2);

@@ -75,6 +75,8 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
 
   result.vertexLabels.assign(static_cast<std::size_t>(n), -1);
   result.vertexProbabilities.assign(static_cast<std::size_t>(n), 0.0);
+  result.secondLabels.assign(static_cast<std::size_t>(n), -1);
+  result.secondProbabilities.assign(static_cast<std::size_t>(n), 0.0);
   result.faceLabels.assign(static_cast<std::size_t>(mesh.faceCount()), -1);
   std::vector<double> faceBest(static_cast<std::size_t>(mesh.faceCount()), -1.0);
   HarmonicFieldSolver solver;
@@ -100,8 +102,15 @@ RandomWalkLabelling randomWalkLabels(const TriangleMesh& mesh, const std::vector
       const double p = field[v];
       if (result.vertexLabels[v] < 0 || p > result.vertexProbabilities[v])
       {
+        result.secondLabels[v] = result.vertexLabels[v];
+        result.secondProbabilities[v] = result.vertexProbabilities[v];
         result.vertexLabels[v] = label;
         result.vertexProbabilities[v] = p;
+      }
+      else if (result.secondLabels[v] < 0 || p > result.secondProbabilities[v])
+      {
+        result.secondLabels[v] = label;
+        result.secondProbabilities[v] = p;
       }
     }
     for (int f = 0; f < mesh.faceCount(); ++f)

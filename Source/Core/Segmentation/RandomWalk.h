@@ -19,6 +19,10 @@ struct RandomWalkLabelling
   std::vector<int> vertexLabels;
   /// Per vertex, that label's probability, in [0, 1]; 0 where the label is -1.
   std::vector<double> vertexProbabilities;
+  /// Per vertex, the label of second largest probability (ties to the smaller label), and its
+  /// probability; -1 and 0 where there is no second label.
+  std::vector<int> secondLabels;
+  std::vector<double> secondProbabilities;
   /// Per face, the label whose probabilities summed over the three corners are largest; -1 in a
   /// component without seeds.
   std::vector<int> faceLabels;

@@ -9,6 +9,7 @@
 #include "Session/Surface.h"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <cmath>
 #include <functional>
@@ -545,6 +546,129 @@ std::vector<int> faceLabelsFromVertices(
   return faceLabels;
 }
 
+namespace
+{
+// The walks' boundaries moved by a minimum cut through the band where each vertex's two most
+// probable labels are close: kerf::placeCuts with 1 - p as the distance to a label. A vertex the
+// cut gives its second label trades the two labels (the cut's label takes the larger probability,
+// as the label the vertex is most sure of), and every face around it takes again the label whose
+// corner probabilities (the corners' two labels) sum highest, ties to the smaller label, unless
+// that would leave it an island (below); the other faces keep the walks' labels.
+void placeCutsOnWalks(const TriangleMesh& mesh, const CutPlacementOptions& options, RandomWalkLabelling& walks)
+{
+  const int n = mesh.vertexCount();
+  const auto indexOf = [&walks](int label) {
+    return static_cast<int>(std::lower_bound(walks.labels.begin(), walks.labels.end(), label) - walks.labels.begin());
+  };
+  NearestLabels band;
+  band.labels = walks.labels;
+  band.first.assign(static_cast<std::size_t>(n), -1);
+  band.second.assign(static_cast<std::size_t>(n), -1);
+  band.firstDistance.assign(static_cast<std::size_t>(n), 1.0);
+  band.secondDistance.assign(static_cast<std::size_t>(n), 1.0);
+  for (int v = 0; v < n; ++v)
+  {
+    if (walks.vertexLabels[v] >= 0)
+    {
+      band.first[v] = indexOf(walks.vertexLabels[v]);
+      band.firstDistance[v] = 1.0 - walks.vertexProbabilities[v];
+      if (walks.secondLabels[v] >= 0)
+      {
+        band.second[v] = indexOf(walks.secondLabels[v]);
+        band.secondDistance[v] = 1.0 - walks.secondProbabilities[v];
+      }
+    }
+  }
+  std::vector<int> labels = walks.vertexLabels;
+  std::vector<double> distances = band.firstDistance;
+  placeCuts(mesh, band, options, labels, distances);
+  std::vector<char> moved(static_cast<std::size_t>(n), 0);
+  bool anyMoved = false;
+  for (int v = 0; v < n; ++v)
+  {
+    if (labels[v] != walks.vertexLabels[v])
+    {
+      moved[v] = 1;
+      anyMoved = true;
+      std::swap(walks.vertexLabels[v], walks.secondLabels[v]);
+    }
+  }
+  if (!anyMoved)
+  {
+    return;
+  }
+  std::vector<int> relabelled;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    if (!moved[t[0]] && !moved[t[1]] && !moved[t[2]])
+    {
+      continue;
+    }
+    relabelled.push_back(f);
+    std::array<std::pair<int, double>, 6> sums{};
+    int used = 0;
+    const auto add = [&](int label, double p) {
+      if (label < 0)
+      {
+        return;
+      }
+      int i = 0;
+      while (i < used && sums[i].first != label)
+      {
+        ++i;
+      }
+      if (i == used)
+      {
+        sums[used++] = { label, 0.0 };
+      }
+      sums[i].second += p;
+    };
+    for (const int v : t)
+    {
+      add(walks.vertexLabels[v], walks.vertexProbabilities[v]);
+      add(walks.secondLabels[v], walks.secondProbabilities[v]);
+    }
+    int best = 0;
+    for (int i = 1; i < used; ++i)
+    {
+      if (sums[i].second > sums[best].second || (sums[i].second == sums[best].second && sums[i].first < sums[best].first))
+      {
+        best = i;
+      }
+    }
+    walks.faceLabels[f] = sums[best].first;
+  }
+  // A relabelled face none of whose neighbours shares its label would be an island joined to its
+  // part by a corner: it takes its neighbours' most common label (ties to the smaller).
+  const std::vector<int> faceLabels = walks.faceLabels;
+  for (const int f : relabelled)
+  {
+    std::array<int, 3> around{ -1, -1, -1 };
+    bool alone = true;
+    for (int k = 0; k < 3; ++k)
+    {
+      const int g = mesh.faceNeighbor(f, k);
+      around[k] = g >= 0 ? faceLabels[g] : -1;
+      alone = alone && around[k] != faceLabels[f];
+    }
+    std::sort(around.begin(), around.end());
+    if (!alone || around[2] < 0)
+    {
+      continue;
+    }
+    // Sorted, absent neighbours (-1) first: a label held twice sits in two adjacent places;
+    // otherwise the smallest label present.
+    int label = around[1] >= 0 && around[1] == around[2] ? around[1] : (around[0] >= 0 && around[0] == around[1] ? around[0] : -1);
+    if (label < 0)
+    {
+      label = around[0] >= 0 ? around[0] : (around[1] >= 0 ? around[1] : around[2]);
+    }
+    walks.faceLabels[f] = label;
+  }
+}
+} // namespace
+
 RegionGrowingResult growRegions(
   const Surface& surface, const std::vector<LabelledStroke>& strokes, const RegionGrowingOptions& options)
 {
@@ -600,6 +724,10 @@ RegionGrowingResult growRegions(
     // The walks reach exactly the components the fronts do (those with a stroke).
     RandomWalkLabelling walks = randomWalkLabels(
       mesh, surface.laplacianWeights(options.walkWeights).weights, result.seeds.vertices, result.seeds.labels);
+    if (options.cutPlacement.band > 0.0)
+    {
+      placeCutsOnWalks(mesh, options.cutPlacement, walks);
+    }
     result.vertexLabels = std::move(walks.vertexLabels);
     result.probabilities = std::move(walks.vertexProbabilities);
     result.faceLabels = std::move(walks.faceLabels);

@@ -47,7 +47,8 @@ struct CutPlacementOptions
 {
   /// The band between two labels in which a minimum cut places their boundary, as the ratio of a
   /// vertex's distance to its nearest label over its distance to the second nearest (in [0, 1);
-  /// 0 keeps the boundary where the fronts meet, the paper's rule).
+  /// 0 keeps the boundary where the fronts meet, the paper's rule). With random walks the
+  /// distance to a label is 1 minus its probability, and 0 keeps the walks' boundary.
   double band = 0.3;
   /// The dihedral term's factor on convex edges (concave ones count whole).
   double convexWeight = 0.05;
@@ -70,7 +71,11 @@ enum class BoundaryPlacement
   /// et al. 2009, section 3, with the weights of Au et al. 2011, Eq. 2-3): every vertex and face takes the label a walk
   /// from it most likely reaches first, and walks rarely cross concave creases. An addition to
   /// the paper: a part is not bounded halfway between strokes but where the surface bends inwards,
-  /// even when another stroke is nearer.
+  /// even when another stroke is nearer. Then, as for MinimumCut, a minimum cut through the band
+  /// where each vertex's two most probable labels are close (distances 1 - p; a band of 0 keeps
+  /// the walks' boundary): the boundary takes the short, concave way where the walks hesitate. A
+  /// vertex the cut gives its second label trades its two labels (the cut's label takes the
+  /// larger probability) and the faces around it are labelled again by their corners' two labels.
   RandomWalks
 };
 
@@ -89,7 +94,7 @@ struct RegionGrowingOptions
   /// Where the boundaries go (the fronts are grown in every case: they give the distances and
   /// the vertices no stroke reaches).
   BoundaryPlacement placement = BoundaryPlacement::RandomWalks;
-  /// MinimumCut's parameters.
+  /// The minimum cut's parameters (MinimumCut and RandomWalks).
   CutPlacementOptions cutPlacement;
   /// RandomWalks' edge weights: the concavity-aware weights with the paper's values (Au et al.
   /// 2011, Eq. 2-3: beta = 0.01 at concave vertices).
@@ -106,8 +111,9 @@ struct RegionGrowingResult
   /// The metric distance to the nearest stroke (input units); -1 where no stroke reaches. With
   /// random walks, the distance to the nearest stroke of any label.
   std::vector<double> distances;
-  /// With random walks, the probability of each vertex's label (kerf::RandomWalkLabelling);
-  /// empty with the other placements.
+  /// With random walks, the probability of each vertex's label (kerf::RandomWalkLabelling; where
+  /// the cut gave a vertex its second label, the larger of its two probabilities); empty with the
+  /// other placements.
   std::vector<double> probabilities;
   /// Per face: from its corners (faceLabelsFromVertices), or with random walks the label of
   /// largest corner probabilities.
