@@ -9,7 +9,8 @@
  * and 4.2), a length that grows with the change of the normal and, strongly, with concave
  * curvature; where the boundaries go is BoundaryPlacement's choice (vtkStrokeGrowingAlgorithm):
  * by default random walks on the concavity-aware Laplacian, so parts end at concave creases,
- * or the paper's rule, each vertex to its nearest stroke. With Refine, the
+ * then a minimum cut through the band where the walks hesitate (CutBand), or the paper's rule,
+ * each vertex to its nearest stroke. With Refine, the
  * boundaries are then moved as snakes to where they are short, smooth and curved (section 5.1).
  * Override strokes (polylines of the optional input 2) then edit the boundary (section 5.2): each
  * replaces the part of the boundary within OverrideRadius of it by itself.
@@ -17,7 +18,8 @@
  * Output 0: the surface with the cell array SegmentArrayName (the label of each triangle, -1 where
  * no stroke reaches: a component without strokes), the point array "IsophoticDistance" (the
  * metric distance to the nearest stroke, -1 where none reaches) and, with the random walks,
- * "Probability" (the probability of each point's grown label). Output 1: the boundaries between
+ * "Probability" (the probability of each point's grown label; where the cut gave a point its
+ * second label, the larger of its two probabilities). Output 1: the boundaries between
  * labels as polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller
  * label on the left seen from outside).
  *

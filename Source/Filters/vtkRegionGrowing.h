@@ -9,7 +9,10 @@
  * metric (sections 3 and 4.2), a length that grows with the change of the normal and, strongly,
  * with concave curvature. By default (BoundaryPlacement random walks) each vertex then takes the
  * label a random walk from it on the concavity-aware Laplacian most likely reaches first, and each
- * triangle the label of largest probability summed over its corners. With the paper's rule
+ * triangle the label of largest probability summed over its corners; then a minimum cut through
+ * the band where the walks hesitate between two labels (CutBand) moves the boundary onto the
+ * short, concave way there (a moved vertex takes its second label, the triangles around it are
+ * labelled again by their corners' two labels). With the paper's rule
  * (fronts) every vertex takes the label of its nearest stroke, a triangle the label two or three
  * of its corners share, and one whose three corners differ the label of the corner nearest to its
  * stroke.
@@ -17,7 +20,8 @@
  * Output 0: the surface with the point and cell arrays SegmentArrayName (the label of each vertex
  * and triangle, -1 where no stroke reaches: a component without strokes), the point array
  * "IsophoticDistance" (the metric distance to the nearest stroke, -1 where none reaches) and, with
- * random walks, "Probability" (the probability of each point's label), field
+ * random walks, "Probability" (the probability of each point's label; where the cut gave a point
+ * its second label, the larger of its two probabilities), field
  * data "UnreachableVertices". Output 1: the boundaries between labels along mesh edges, as
  * polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller label on
  * the left seen from outside).

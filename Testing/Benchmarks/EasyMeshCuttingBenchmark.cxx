@@ -16,7 +16,7 @@
 //                                    factorization, two solves) and the cut through their band
 //   BM_RandomWalksWithoutCut/<size>  the same with CutBand 0: the walks' boundary as it is
 //   BM_RegionGrowingFirstRun/<size>  kerf::growRegions on a new surface: descriptors, metric,
-//                                    stroke snapping, growing and the random walks (up to 100k)
+//                                    stroke snapping, growing, the random walks and their cut (up to 100k)
 //   BM_VTKEdgeConnectivity/<size>    vtkPolyDataEdgeConnectivityFilter labelling all regions of
 //                                    the same mesh with the grown boundary's edges as barriers
 //                                    (the same two regions): the reference for labelling speed

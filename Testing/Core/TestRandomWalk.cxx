@@ -357,7 +357,15 @@ TEST(RandomWalk, SpinesNeverRemoveASegment)
   EXPECT_EQ(walked.faceLabels[F], 1);
   EXPECT_GT(std::count(walked.faceLabels.begin(), walked.faceLabels.end(), 1), 1);
 
-  // A spine through another segment's face, or labels of another mesh, are refused.
+  // A segment without a spine (here segment 1), or no spine at all, leaves the input as it was.
+  const SpineWalk oneSpine = walkFromSpines(mesh, weights, { apart[0] }, labels);
+  EXPECT_FALSE(oneSpine.applied);
+  EXPECT_EQ(oneSpine.faceLabels, labels);
+  EXPECT_FALSE(walkFromSpines(mesh, weights, {}, labels).applied);
+  EXPECT_FALSE(walkFromSpines(mesh, weights, {}, std::vector<int>(mesh.faceCount(), -1)).applied);
+
+  // A spine through another segment's face, a negative label, or labels of another mesh, are refused.
+  EXPECT_THROW(walkFromSpines(mesh, weights, { { -1, {} }, apart[0], apart[1] }, labels), Error);
   EXPECT_THROW(walkFromSpines(mesh, weights, { { 1, { F, notAroundC.front() } } }, labels), Error);
   EXPECT_THROW(walkFromSpines(mesh, weights, { { 0, { mesh.faceCount() } } }, labels), Error);
   EXPECT_THROW(walkFromSpines(mesh, weights, apart, std::vector<int>(3, 0)), Error);

@@ -58,7 +58,7 @@ class EasyMeshCuttingTest(unittest.TestCase):
 
     def test_boundary_placements(self):
         """The three placements on the same strokes: the fronts take the most of the neck, the
-        minimum cut through their band the least; CutBand 0 keeps the fronts, or the walks' own
+        walks and their cut the least, the minimum cut close behind; CutBand 0 keeps the fronts, or the walks' own
         boundary (along the shell's rim: the cut through the walks' band takes the short way
         across the back of the skull instead)."""
         growing = kerf.vtkRegionGrowing()

@@ -143,15 +143,32 @@ SpineWalk walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& ed
   int labelCount = 0;
   for (const SegmentSpine& spine : spines)
   {
+    if (spine.label < 0)
+    {
+      throw Error("a spine has the negative label " + std::to_string(spine.label));
+    }
     for (const int f : spine.faces)
     {
-      if (f < 0 || f >= mesh.faceCount() || spine.label < 0 || faceLabels[f] != spine.label)
+      if (f < 0 || f >= mesh.faceCount() || faceLabels[f] != spine.label)
       {
         throw Error("a spine of label " + std::to_string(spine.label) + " passes through face " + std::to_string(f) +
           ", which is not one of that segment's faces");
       }
     }
     labelCount = std::max(labelCount, spine.label + 1);
+  }
+  // Every segment needs a spine, or the walks could take all of its faces.
+  std::vector<char> hasSpine(static_cast<std::size_t>(labelCount), 0);
+  for (const SegmentSpine& spine : spines)
+  {
+    hasSpine[spine.label] = 1;
+  }
+  for (const int label : faceLabels)
+  {
+    if (label >= 0 && (label >= labelCount || !hasSpine[label]))
+    {
+      return walk;
+    }
   }
   std::vector<int> seedLabel(static_cast<std::size_t>(mesh.vertexCount()), -1);
   const int shared = -2;
@@ -182,6 +199,10 @@ SpineWalk walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& ed
     {
       return walk;
     }
+  }
+  if (vertices.empty())
+  {
+    return walk; // no segment, so no spine
   }
   const std::vector<int> walked = randomWalkLabels(mesh, edgeWeights, vertices, labels).faceLabels;
   std::vector<char> won(seeded.size(), 0);

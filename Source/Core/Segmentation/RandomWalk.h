@@ -54,9 +54,11 @@ struct SpineWalk
 /// Redraws a per-face segmentation by random walks seeded on its segments' spines
 /// (kerf::segmentSpines): the corners of a spine's faces are its seeds, and a vertex the spines of
 /// two segments share seeds neither; every face then takes its most probable segment
-/// (kerf::randomWalkLabels). The walks never remove a segment: where a spine is left without a
-/// seed, or a segment's seeds would win no face, the input's labels are returned unchanged. Throws
-/// kerf::Error for labels or weights of another mesh, or a spine's face or label off the labelling.
+/// (kerf::randomWalkLabels). The walks never remove a segment: where a segment of `faceLabels` has
+/// no spine, a spine is left without a seed, or a segment's seeds would win no face, the input's
+/// labels are returned unchanged (not applied; so too for a labelling without segments). Throws
+/// kerf::Error for labels or weights of another mesh, a negative spine label, or a spine's face
+/// outside its segment.
 SpineWalk walkFromSpines(const TriangleMesh& mesh, const std::vector<double>& edgeWeights,
   const std::vector<SegmentSpine>& spines, const std::vector<int>& faceLabels);
 

@@ -640,8 +640,14 @@ void placeCutsOnWalks(const TriangleMesh& mesh, const CutPlacementOptions& optio
     walks.faceLabels[f] = sums[best].first;
   }
   // A relabelled face none of whose neighbours shares its label would be an island joined to its
-  // part by a corner: it takes its neighbours' most common label (ties to the smaller).
+  // part by a corner: it takes its neighbours' most common label (ties to the smaller), unless it
+  // is its label's only face (a click's part is never removed).
   const std::vector<int> faceLabels = walks.faceLabels;
+  std::map<int, int> faceCount;
+  for (const int label : faceLabels)
+  {
+    ++faceCount[label];
+  }
   for (const int f : relabelled)
   {
     std::array<int, 3> around{ -1, -1, -1 };
@@ -653,7 +659,7 @@ void placeCutsOnWalks(const TriangleMesh& mesh, const CutPlacementOptions& optio
       alone = alone && around[k] != faceLabels[f];
     }
     std::sort(around.begin(), around.end());
-    if (!alone || around[2] < 0)
+    if (!alone || around[2] < 0 || faceCount[faceLabels[f]] == 1)
     {
       continue;
     }

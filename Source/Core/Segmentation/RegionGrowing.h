@@ -105,8 +105,9 @@ struct RegionGrowingOptions
 struct RegionGrowingResult
 {
   /// The label of the nearest stroke under the metric (Fronts), moved by the minimum cut
-  /// (MinimumCut), or the most probable label (RandomWalks); -1 where no stroke reaches (a
-  /// component without strokes, or a point no triangle uses).
+  /// (MinimumCut), or the most probable label, moved to the second where the cut through the
+  /// walks' band says so (RandomWalks); -1 where no stroke reaches (a component without strokes,
+  /// or a point no triangle uses).
   std::vector<int> vertexLabels;
   /// The metric distance to the nearest stroke (input units); -1 where no stroke reaches. With
   /// random walks, the distance to the nearest stroke of any label.
@@ -116,7 +117,8 @@ struct RegionGrowingResult
   /// other placements.
   std::vector<double> probabilities;
   /// Per face: from its corners (faceLabelsFromVertices), or with random walks the label of
-  /// largest corner probabilities.
+  /// largest corner probabilities (around vertices the cut moved, over each corner's two labels,
+  /// a face that would share its label with no neighbour taking theirs).
   std::vector<int> faceLabels;
   StrokeSeeds seeds;
   /// Vertices used by triangles that no stroke reaches (labelled -1).
@@ -144,7 +146,8 @@ struct NearestLabels
 };
 NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds);
 
-/// Cut placement, an addition to the paper's growing: where the fronts of two labels meet, the
+/// Cut placement, an addition to the paper's growing (and, with 1 - p as the distance, the last
+/// step of the random walks): where the fronts of two labels meet, the
 /// boundary lies halfway between their strokes whatever the shape. Every vertex whose distance to
 /// its nearest label is more than `band` times its distance to the second nearest is freed, and
 /// the freed vertices of each pair of labels are given to one or the other by a minimum cut
