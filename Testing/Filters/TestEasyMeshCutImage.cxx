@@ -14,6 +14,7 @@
 #include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 
+#include <cmath>
 #include <iostream>
 
 int TestEasyMeshCutImage(int argc, char* argv[])
@@ -44,8 +45,20 @@ int TestEasyMeshCutImage(int argc, char* argv[])
   strokes->SetPoints(points);
   strokes->SetLines(lines);
   strokes->GetCellData()->AddArray(labels);
-  vtkNew<vtkPolyData> clicks; // the strokes drawn as points
-  clicks->SetPoints(points);
+  // The clicks drawn as points just outside the surface: each is an extreme of y, where the
+  // surface's normal is -y (hoof) or +y (top) and the point lies on the silhouette, so a marker
+  // drawn at the surface itself would be hidden or not by the depth buffer's last bits.
+  const double lift = 0.01 * std::sqrt(surface->GetLength2());
+  vtkNew<vtkPoints> markers;
+  for (const auto& [point, side] : { std::pair<vtkIdType, double>{ hoof, -1.0 }, { top, 1.0 } })
+  {
+    double p[3];
+    surface->GetPoint(point, p);
+    p[1] += side * lift;
+    markers->InsertNextPoint(p);
+  }
+  vtkNew<vtkPolyData> clicks;
+  clicks->SetPoints(markers);
   clicks->SetVerts(verts);
 
   vtkNew<vtkEasyMeshCut> grown, refined;
