@@ -582,30 +582,28 @@ void placeCutsOnWalks(const TriangleMesh& mesh, const CutPlacementOptions& optio
   std::vector<int> labels = walks.vertexLabels;
   std::vector<double> distances = band.firstDistance;
   placeCuts(mesh, band, options, labels, distances);
-  std::vector<char> moved(static_cast<std::size_t>(n), 0);
-  bool anyMoved = false;
+  // The faces around moved vertices, ascending.
+  std::vector<int> relabelled;
   for (int v = 0; v < n; ++v)
   {
     if (labels[v] != walks.vertexLabels[v])
     {
-      moved[v] = 1;
-      anyMoved = true;
       std::swap(walks.vertexLabels[v], walks.secondLabels[v]);
+      for (const int f : mesh.vertexFaces(v))
+      {
+        relabelled.push_back(f);
+      }
     }
   }
-  if (!anyMoved)
+  if (relabelled.empty())
   {
     return;
   }
-  std::vector<int> relabelled;
-  for (int f = 0; f < mesh.faceCount(); ++f)
+  std::sort(relabelled.begin(), relabelled.end());
+  relabelled.erase(std::unique(relabelled.begin(), relabelled.end()), relabelled.end());
+  for (const int f : relabelled)
   {
     const Triangle& t = mesh.triangle(f);
-    if (!moved[t[0]] && !moved[t[1]] && !moved[t[2]])
-    {
-      continue;
-    }
-    relabelled.push_back(f);
     std::array<std::pair<int, double>, 6> sums{};
     int used = 0;
     const auto add = [&](int label, double p) {
