@@ -27,8 +27,9 @@ if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
       exit 1
     }
   fi
-  # The Core tests only: the filters and the program compiled a third time would double the stage
-  # (Documentation/robustness.md, *Sanitizers*); their tests run under valgrind in the first stage.
+  # The Core tests only: compiling the filters and the program with the sanitizers too would double
+  # the stage (Documentation/robustness.md, *Sanitizers*). The first stage ran the filter tests that
+  # do not render under valgrind and the readers' fuzzing in the ordinary build.
   cmake --build "$sanitize_dir" --target KerfCoreTests -- -j"$(nproc)"
   # Leaks are reported except those of the OpenGL driver, listed in the suppression file.
   export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1"
