@@ -222,7 +222,13 @@ class BenchmarkRunner(unittest.TestCase):
                 (["--data", DATA, "--models", "12345"], "model 12345 is not in"),
                 (["--data", DATA, "--jobs", "0"], "--jobs expects"),
                 (["--data", DATA, "--method", "region-growing", "--models", "1", "--parameters",
-                  "placement=fronts;cut-band=0.3"], "applies to placement=minimum-cut and random-walks only")):
+                  "placement=fronts;cut-band=0.3"], "applies to placement=minimum-cut and random-walks only"),
+                # Parameters are separated by semicolons: a number followed by more text is refused,
+                # not read as its leading number.
+                (["--data", DATA, "--method", "consensus-cuts", "--models", "125", "--parameters",
+                  "length=0.75,sizes=0.5"], "method parameter length must be a number, got '0.75,sizes=0.5'"),
+                (["--data", DATA, "--method", "consensus-cuts", "--models", "125", "--parameters",
+                  "clip=-0.1"], "method parameter clip must be a positive number, got '-0.1'")):
             for command in ([PROGRAM, "benchmark"], [sys.executable, "-m", "kerf.benchmark"]):
                 result = subprocess.run(command + arguments + ["--no-pictures", "-o", os.path.join(self.folder, "bad")],
                                         capture_output=True, text=True, timeout=120)

@@ -87,7 +87,7 @@ MethodParameters::MethodParameters(const std::string& text, const std::vector<st
   }
 }
 
-double MethodParameters::positive(const std::string& name, double fallback) const
+double MethodParameters::number(const std::string& name, double fallback) const
 {
   const auto found = this->Values.find(name);
   if (found == this->Values.end())
@@ -98,7 +98,7 @@ double MethodParameters::positive(const std::string& name, double fallback) cons
   {
     std::size_t used = 0;
     const double value = std::stod(found->second, &used);
-    if (used == found->second.size() && std::isfinite(value) && value > 0.0)
+    if (used == found->second.size() && std::isfinite(value))
     {
       return value;
     }
@@ -106,7 +106,17 @@ double MethodParameters::positive(const std::string& name, double fallback) cons
   catch (const std::exception&)
   {
   }
-  throw Error("method parameter " + name + " must be a positive number, got '" + found->second + "'");
+  throw Error("method parameter " + name + " must be a number, got '" + found->second + "'");
+}
+
+double MethodParameters::positive(const std::string& name, double fallback) const
+{
+  const double value = this->number(name, fallback);
+  if (this->Values.count(name) && !(value > 0.0))
+  {
+    throw Error("method parameter " + name + " must be a positive number, got '" + this->text(name, "") + "'");
+  }
+  return value;
 }
 
 std::string MethodParameters::text(const std::string& name, const std::string& fallback) const
@@ -271,7 +281,7 @@ MethodOutput segmentWithHarmonicCuts(
   StrokeOptions strokeOptions;
   strokeOptions.samplesPerSegment = static_cast<int>(parameters.positive("samples", 4));
   strokeOptions.offset = parameters.positive("offset", 0.005) * diagonal;
-  strokeOptions.offsetLengthFraction = std::stod(parameters.text("offset-length", "0.05"));
+  strokeOptions.offsetLengthFraction = parameters.number("offset-length", 0.05);
   strokeOptions.maximumDistance = 0.05 * diagonal;
   fieldOptions.formulation = parseSoftConstraintFormulation(parameters.text("formulation", "least-squares"));
   const double spacing = parameters.positive("spacing", 0.03) * diagonal;
@@ -363,11 +373,11 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
   options.clipQuantile = parameters.positive("clip", options.clipQuantile);
   options.sameCutTolerance = parameters.positive("same", options.sameCutTolerance);
   options.minimumSegmentArea = parameters.positive("area", options.minimumSegmentArea);
-  options.voteExponent = std::stod(parameters.text("votes", std::to_string(options.voteExponent)));
-  options.lengthExponent = std::stod(parameters.text("length", std::to_string(options.lengthExponent)));
-  options.areaExponent = std::stod(parameters.text("sizes", std::to_string(options.areaExponent)));
+  options.voteExponent = parameters.number("votes", options.voteExponent);
+  options.lengthExponent = parameters.number("length", options.lengthExponent);
+  options.areaExponent = parameters.number("sizes", options.areaExponent);
   options.peaksPerField = static_cast<int>(parameters.positive("peaks", options.peaksPerField));
-  options.walkDepth = std::stod(parameters.text("walk-depth", std::to_string(options.walkDepth)));
+  options.walkDepth = parameters.number("walk-depth", options.walkDepth);
   return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 

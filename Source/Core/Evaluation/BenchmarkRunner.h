@@ -32,6 +32,9 @@ public:
   MethodParameters(const std::string& text, const std::vector<std::string>& known);
   /// The value of a positive number parameter, or `fallback`; throws for anything else.
   double positive(const std::string& name, double fallback) const;
+  /// The value of a number parameter (any finite number, the whole text), or `fallback`; throws for
+  /// anything else ("0.5,x=1" is not 0.5).
+  double number(const std::string& name, double fallback) const;
   /// The text of a parameter, or `fallback`.
   std::string text(const std::string& name, const std::string& fallback) const;
 
