@@ -5,6 +5,8 @@ set -euo pipefail
 packages=(
   # compilers and build tools
   g++ cmake ninja-build pkg-config
+  # compiler cache: the generator test's copy of the project reuses the main build's objects
+  ccache
   # ParaView 5.11 with its own VTK, its Python modules, and the Qt development files its CMake needs
   paraview paraview-dev python3-paraview qtbase5-dev qttools5-dev libqt5svg5-dev
   qtxmlpatterns5-dev-tools

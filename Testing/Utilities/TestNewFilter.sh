@@ -15,15 +15,19 @@ cd "$work/src"
 # Refuses to make the same filter twice, and bad names.
 ! ./Utilities/new-filter.sh ExampleValence Geometry 2>/dev/null
 ! ./Utilities/new-filter.sh example Geometry 2>/dev/null
+# The copy builds in its own build/ with the main build's base directory, as Utilities/build.sh
+# does: through ccache its unchanged sources compile to the main build's cached objects.
+build=$work/src/build
 launcher=()
 if command -v ccache >/dev/null; then
   launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
+  export CCACHE_BASEDIR=$source_dir
 fi
-cmake -S . -B "$work/build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
+cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
   -DKERF_BUILD_BENCHMARKS=OFF "${launcher[@]}" > "$work/configure.log"
-cmake --build "$work/build" --target KerfCoreTests KerfFilterTests Kerf > "$work/build.log"
-"$work/build/bin/KerfCoreTests" --gtest_filter='ExampleValence.*'
-"$work/build/bin/KerfFilterTests" TestExampleValenceFilter
-grep -q "ExampleValence.xml" "$work/build/Plugins/ParaView/CMakeFiles/Kerf.dir/"*.* 2>/dev/null ||
-  grep -rq "KerfExampleValence" "$work/build/Plugins" || { echo "the proxy is not in the plugin" >&2; exit 1; }
+cmake --build "$build" --target KerfCoreTests KerfFilterTests Kerf > "$build.log"
+"$build/bin/KerfCoreTests" --gtest_filter='ExampleValence.*'
+"$build/bin/KerfFilterTests" TestExampleValenceFilter
+grep -q "ExampleValence.xml" "$build/Plugins/ParaView/CMakeFiles/Kerf.dir/"*.* 2>/dev/null ||
+  grep -rq "KerfExampleValence" "$build/Plugins" || { echo "the proxy is not in the plugin" >&2; exit 1; }
 echo "generated filter ExampleValence builds and its tests pass"
