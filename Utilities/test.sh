@@ -16,17 +16,13 @@ status=0
 if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
   sanitize_dir=${KERF_SANITIZE_BUILD_DIR:-$source_dir/build-sanitize}
   start=$(date +%s)
-  launcher=()
-  if command -v ccache >/dev/null; then
-    launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-    export CCACHE_BASEDIR=$source_dir
-  fi
+  source "$source_dir/Utilities/compiler-cache.sh" "$source_dir"
   if [ ! -f "$sanitize_dir/build.ninja" ]; then
     mkdir -p "$sanitize_dir"
     # -O1 with line tables: half the compile time of -O2 -g, and stacks still name the lines.
     cmake -S "$source_dir" -B "$sanitize_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
       -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-      -DKERF_SANITIZE=ON -DKERF_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 "${launcher[@]}" \
+      -DKERF_SANITIZE=ON -DKERF_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 "${compiler_cache[@]}" \
       >"$sanitize_dir/configure.log" 2>&1 || {
       cat "$sanitize_dir/configure.log"
       exit 1

@@ -18,13 +18,9 @@ cd "$work/src"
 # The copy builds in its own build/ with the main build's base directory, as Utilities/build.sh
 # does: through ccache its unchanged sources compile to the main build's cached objects.
 build=$work/src/build
-launcher=()
-if command -v ccache >/dev/null; then
-  launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache -DCMAKE_C_COMPILER_LAUNCHER=ccache)
-  export CCACHE_BASEDIR=$source_dir
-fi
+source "$source_dir/Utilities/compiler-cache.sh" "$source_dir"
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPython3_EXECUTABLE=/usr/bin/python3 \
-  -DKERF_BUILD_BENCHMARKS=OFF "${launcher[@]}" > "$work/configure.log"
+  -DKERF_BUILD_BENCHMARKS=OFF "${compiler_cache[@]}" > "$work/configure.log"
 cmake --build "$build" --target KerfCoreTests KerfFilterTests Kerf > "$build.log"
 "$build/bin/KerfCoreTests" --gtest_filter='ExampleValence.*'
 "$build/bin/KerfFilterTests" TestExampleValenceFilter
