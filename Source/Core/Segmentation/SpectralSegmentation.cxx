@@ -5,6 +5,7 @@
 #include "Segmentation/HierarchicalFaceClustering.h"
 
 #include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -218,13 +219,9 @@ SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const
   const Eigen::VectorXd degree = affinity.rowwise().sum().cwiseMax(std::numeric_limits<double>::min());
   const Eigen::VectorXd scale = degree.cwiseSqrt().cwiseInverse();
   affinity = scale.asDiagonal() * affinity * scale.asDiagonal();
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(affinity);
-  if (eigen.info() != Eigen::Success)
-  {
-    throw Error("the spectral embedding's eigen decomposition failed");
-  }
   const int dimensions = std::min(k, m);
-  Eigen::MatrixXd embedding = eigen.eigenvectors().rightCols(dimensions);
+  Eigen::VectorXd values;
+  Eigen::MatrixXd embedding = leadingEigenvectors(affinity, dimensions, values);
   for (int p = 0; p < m; ++p)
   {
     const double norm = embedding.row(p).norm();
@@ -267,6 +264,98 @@ SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, cons
     return partResult.labels;
   });
   return result;
+}
+
+Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values)
+{
+  const Eigen::Index n = symmetric.rows();
+  if (symmetric.cols() != n || count < 1 || count > n)
+  {
+    throw Error("leading eigenvectors need a square matrix and a count between 1 and its size");
+  }
+  const Eigen::Tridiagonalization<Eigen::MatrixXd> reduction(symmetric);
+  const Eigen::VectorXd diagonal = reduction.diagonal();
+  const Eigen::VectorXd offDiagonal = reduction.subDiagonal();
+  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> spectrum;
+  spectrum.computeFromTridiagonal(diagonal, offDiagonal, Eigen::EigenvaluesOnly);
+  if (spectrum.info() != Eigen::Success)
+  {
+    throw Error("the eigenvalues of the spectral embedding's matrix did not converge");
+  }
+  values = spectrum.eigenvalues().tail(count);
+  const double scale = std::max({ std::abs(spectrum.eigenvalues()[0]), std::abs(spectrum.eigenvalues()[n - 1]),
+    std::numeric_limits<double>::min() });
+  Eigen::MatrixXd vectors(n, count);
+  // The tridiagonal system (T - s I) y = x by Gaussian elimination with partial pivoting (the
+  // elimination of LAPACK's dgtsv), s a hair away from the eigenvalue so that it stays regular.
+  Eigen::VectorXd lower(n), main(n), upper(n), second(n), x(n);
+  for (int j = 0; j < count; ++j)
+  {
+    const double shift = values[j] + 1e-10 * scale;
+    // A fixed start with no symmetry of its own: a low-discrepancy sequence in (-1, 1).
+    for (Eigen::Index i = 0; i < n; ++i)
+    {
+      x[i] = 2.0 * std::fmod(0.5 + 0.6180339887498949 * static_cast<double>(i + 1), 1.0) - 1.0;
+    }
+    for (int iteration = 0; iteration < 3; ++iteration)
+    {
+      main = diagonal.array() - shift;
+      if (n > 1)
+      {
+        lower.head(n - 1) = offDiagonal;
+        upper.head(n - 1) = offDiagonal;
+      }
+      second.setZero();
+      for (Eigen::Index i = 0; i + 1 < n; ++i)
+      {
+        if (std::abs(main[i]) >= std::abs(lower[i]))
+        {
+          if (main[i] == 0.0)
+          {
+            main[i] = std::numeric_limits<double>::min();
+          }
+          const double factor = lower[i] / main[i];
+          main[i + 1] -= factor * upper[i];
+          x[i + 1] -= factor * x[i];
+        }
+        else
+        {
+          const double factor = main[i] / lower[i];
+          main[i] = lower[i];
+          const double below = main[i + 1];
+          main[i + 1] = upper[i] - factor * below;
+          if (i + 2 < n)
+          {
+            second[i] = upper[i + 1];
+            upper[i + 1] = -factor * second[i];
+          }
+          upper[i] = below;
+          std::swap(x[i], x[i + 1]);
+          x[i + 1] -= factor * x[i];
+        }
+      }
+      if (main[n - 1] == 0.0)
+      {
+        main[n - 1] = std::numeric_limits<double>::min();
+      }
+      x[n - 1] /= main[n - 1];
+      if (n > 1)
+      {
+        x[n - 2] = (x[n - 2] - upper[n - 2] * x[n - 1]) / main[n - 2];
+      }
+      for (Eigen::Index i = n - 3; i >= 0; --i)
+      {
+        x[i] = (x[i] - upper[i] * x[i + 1] - second[i] * x[i + 2]) / main[i];
+      }
+      for (int earlier = 0; earlier < j; ++earlier)
+      {
+        x -= vectors.col(earlier).dot(x) * vectors.col(earlier);
+      }
+      x /= std::max(x.norm(), std::numeric_limits<double>::min());
+    }
+    vectors.col(j) = x;
+  }
+  return reduction.matrixQ() * vectors;
 }
 
 } // namespace kerf
