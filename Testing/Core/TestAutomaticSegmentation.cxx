@@ -4,6 +4,7 @@
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
+#include "Segmentation/EnsembleSegmentation.h"
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
 #include "Segmentation/KMeansSegmentation.h"
@@ -16,6 +17,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
+#include <cstdlib>
 #include <array>
 #include <cmath>
 #include <iostream>
@@ -575,6 +577,185 @@ TEST(AutomaticSegmentation, FaceClusterHierarchyFollowsTheReferenceContractionOr
                 << reference.costEvaluations << " by the reference\n";
     }
   }
+}
+
+// The ensemble: its members' votes on the three shapes (thresholds: measured, with a small margin).
+TEST(AutomaticSegmentation, EnsembleOnTheThreeShapes)
+{
+  // Measured 0.063 (the consensus cuts alone 0.087, convex flooding alone 0.020): the three
+  // fingers; where the two that find them disagree, the other three members decide.
+  expectFingers("ensemble",
+    [] { return segmentByEnsemble(*fingers().surface, FingerCount + 1, EnsembleSegmentationOptions()).labels; }, 0.075);
+  // Measured 0.0047 (as the watershed): the cut at the neck.
+  expectLobes("ensemble", [] { return segmentByEnsemble(*lobes().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.01);
+  // Measured 0.021: the cylinder, cut at its crease.
+  expectBoxWithCylinder("ensemble",
+    [] { return segmentByEnsemble(*boxWithCylinder().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.03);
+  const EnsembleSegmentationResult result =
+    segmentByEnsemble(*fingers().surface, FingerCount + 1, EnsembleSegmentationOptions());
+  EXPECT_EQ(result.members, 5);
+  EXPECT_GE(result.atoms, FingerCount + 1);
+}
+
+// Two of three partitions agree: every pair of faces they put together has a co-association of at
+// least 2/3, every other pair at most 1/3, so the linkage rebuilds their partition exactly.
+TEST(AutomaticSegmentation, CombinedPartitionsFollowTheMajority)
+{
+  const FaceGraph graph(fingers().surface->mesh());
+  const std::vector<int>& parts = fingers().parts;
+  const std::vector<int> other = segmentByKMeans(graph, FingerCount + 1, KMeansSegmentationOptions()).labels;
+  ASSERT_NE(other, parts);
+  const PartitionConsensus majority = combinePartitions(graph, { { parts, 1.0 }, { other, 1.0 }, { parts, 1.0 } }, FingerCount + 1);
+  EXPECT_EQ(majority.labels, finalizeSegments(graph, parts, FingerCount + 1));
+  EXPECT_GT(majority.atoms, FingerCount + 1);
+  EXPECT_EQ(majority.merges, majority.atoms - (FingerCount + 1));
+  // One partition alone, or with a weight outvoting the others: itself.
+  EXPECT_EQ(combinePartitions(graph, { { other, 1.0 } }, FingerCount + 1).labels,
+    finalizeSegments(graph, other, FingerCount + 1));
+  EXPECT_EQ(combinePartitions(graph, { { parts, 1.0 }, { other, 3.0 } }, FingerCount + 1).labels,
+    finalizeSegments(graph, other, FingerCount + 1));
+  EXPECT_EQ(combinePartitions(graph, { { parts, 1.0 } }, FingerCount + 1).atoms, FingerCount + 1);
+}
+
+// The consensus does not depend on how labels are numbered, on the order of the partitions, or on
+// a partition with no weight; asking for fewer segments merges further.
+TEST(AutomaticSegmentation, CombinedPartitionsIgnoreNumberingAndOrder)
+{
+  const FaceGraph graph(fingers().surface->mesh());
+  const int k = FingerCount + 1;
+  const std::vector<std::vector<int>> members{ segmentByKMeans(graph, k, KMeansSegmentationOptions()).labels,
+    segmentSpectrally(graph, k, SpectralSegmentationOptions()).labels, fingers().parts,
+    segmentByWatershed(graph, [] { WatershedOptions o; o.segmentCount = FingerCount + 1; return o; }()).labels };
+  std::vector<WeightedPartition> partitions, renamed, reversed;
+  for (const std::vector<int>& labels : members)
+  {
+    partitions.push_back({ labels, 1.0 });
+    std::vector<int> shifted;
+    for (int label : labels)
+    {
+      shifted.push_back(1000 - 7 * label);
+    }
+    renamed.push_back({ shifted, 1.0 });
+  }
+  reversed.assign(partitions.rbegin(), partitions.rend());
+  const PartitionConsensus consensus = combinePartitions(graph, partitions, k);
+  EXPECT_EQ(combinePartitions(graph, renamed, k).labels, consensus.labels);
+  EXPECT_EQ(combinePartitions(graph, reversed, k).labels, consensus.labels);
+  std::vector<WeightedPartition> withSilent = partitions;
+  std::vector<int> stripes;
+  for (int f = 0; f < graph.faceCount(); ++f)
+  {
+    stripes.push_back(f % 5);
+  }
+  withSilent.push_back({ stripes, 0.0 });
+  EXPECT_EQ(combinePartitions(graph, withSilent, k).labels, consensus.labels);
+  const std::vector<int> labels = consensus.labels;
+  checkSegmentation(graph.mesh(), fingers().parts, labels, k);
+  const std::vector<int> two = combinePartitions(graph, partitions, 2).labels;
+  checkSegmentation(graph.mesh(), fingers().parts, two, 2);
+  // Coarser: every segment of the two is a union of segments of the k.
+  std::map<int, int> coarse;
+  for (std::size_t f = 0; f < labels.size(); ++f)
+  {
+    const auto [at, added] = coarse.insert({ labels[f], two[f] });
+    EXPECT_EQ(at->second, two[f]) << "face " << f;
+  }
+}
+
+TEST(AutomaticSegmentation, CombinedPartitionsAndTheEnsembleRefuseBadInput)
+{
+  const FaceGraph graph(lobes().surface->mesh());
+  const std::vector<int> halves = lobes().parts;
+  const int n = graph.faceCount();
+  EXPECT_THROW(combinePartitions(graph, {}, 2), Error);
+  EXPECT_THROW(combinePartitions(graph, { { halves, 1.0 } }, 0), Error);
+  EXPECT_THROW(combinePartitions(graph, { { halves, 1.0 } }, n + 1), Error);
+  EXPECT_THROW(combinePartitions(graph, { { std::vector<int>(n - 1, 0), 1.0 } }, 2), Error);
+  std::vector<int> negative = halves;
+  negative[3] = -1;
+  EXPECT_THROW(combinePartitions(graph, { { negative, 1.0 } }, 2), Error);
+  for (double weight : { -1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    EXPECT_THROW(combinePartitions(graph, { { halves, weight } }, 2), Error) << weight;
+  }
+  EXPECT_THROW(combinePartitions(graph, { { halves, 0.0 } }, 2), Error);
+  EnsembleSegmentationOptions silent;
+  silent.consensusCutsWeight = silent.spectralWeight = silent.convexFloodingWeight = silent.kMeansWeight =
+    silent.watershedWeight = silent.faceClusteringWeight = 0.0;
+  EXPECT_THROW(segmentByEnsemble(*lobes().surface, 2, silent), Error);
+  EnsembleSegmentationOptions negativeWeight;
+  negativeWeight.kMeansWeight = -1.0;
+  EXPECT_THROW(segmentByEnsemble(*lobes().surface, 2, negativeWeight), Error);
+  EXPECT_THROW(segmentByEnsemble(*lobes().surface, 0, EnsembleSegmentationOptions()), Error);
+  EXPECT_THROW(segmentByEnsemble(*lobes().surface, n + 1, EnsembleSegmentationOptions()), Error);
+}
+
+// Two separate lobes: each component gets its share of k and is segmented apart.
+TEST(AutomaticSegmentation, EnsembleOnTwoComponents)
+{
+  const TriangleMesh& one = lobes().surface->mesh();
+  std::vector<Vector3> points = one.points();
+  std::vector<Triangle> triangles = one.triangles();
+  for (const Vector3& p : one.points())
+  {
+    points.push_back(p + Vector3(5.0, 0.0, 0.0));
+  }
+  const int offset = one.vertexCount();
+  for (const Triangle& t : one.triangles())
+  {
+    triangles.push_back({ { t[0] + offset, t[1] + offset, t[2] + offset } });
+  }
+  const Surface both{ TriangleMesh(points, triangles) };
+  const EnsembleSegmentationResult result = segmentByEnsemble(both, 4, EnsembleSegmentationOptions());
+  std::vector<int> parts = lobes().parts;
+  for (int part : lobes().parts)
+  {
+    parts.push_back(part + 2);
+  }
+  const double error = checkSegmentation(both.mesh(), parts, result.labels, 4);
+  std::cout << "ensemble on two separate lobes: 1 - Rand index " << error << std::endl;
+  EXPECT_LE(error, 0.01); // measured 0.0026: each pair of lobes split at its neck
+  for (int f = 0; f < one.faceCount(); ++f)
+  {
+    EXPECT_LT(result.labels[static_cast<std::size_t>(f)], 2);
+    EXPECT_GE(result.labels[static_cast<std::size_t>(f + one.faceCount())], 2);
+  }
+}
+
+// The spectral embedding's partial eigensolver against Eigen's full one: the same eigenvalues and
+// the same invariant subspace on a random symmetric matrix, and an orthonormal basis of a
+// repeated eigenvalue's space.
+TEST(AutomaticSegmentation, LeadingEigenvectorsMatchTheFullDecomposition)
+{
+  std::srand(7);
+  const Eigen::MatrixXd random = Eigen::MatrixXd::Random(120, 120);
+  const Eigen::MatrixXd symmetric = random + random.transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> full(symmetric);
+  for (int count : { 1, 5, 12, 120 })
+  {
+    Eigen::VectorXd values;
+    const Eigen::MatrixXd vectors = leadingEigenvectors(symmetric, count, values);
+    ASSERT_EQ(vectors.cols(), count);
+    EXPECT_LT((values - full.eigenvalues().tail(count)).cwiseAbs().maxCoeff(), 1e-10) << count;
+    const Eigen::MatrixXd expected = full.eigenvectors().rightCols(count);
+    EXPECT_LT((vectors * vectors.transpose() - expected * expected.transpose()).norm(), 1e-9) << count;
+    EXPECT_LT((vectors.transpose() * vectors - Eigen::MatrixXd::Identity(count, count)).norm(), 1e-12) << count;
+    EXPECT_LT((symmetric * vectors - vectors * values.asDiagonal()).norm(), 1e-10) << count;
+  }
+  // Eigenvalues 1, 2, 3, 3, 3, 3 in a rotated basis: the four vectors of 3 span its space.
+  const Eigen::HouseholderQR<Eigen::MatrixXd> qr(Eigen::MatrixXd::Random(6, 6));
+  const Eigen::MatrixXd rotation = qr.householderQ();
+  Eigen::VectorXd spectrum(6);
+  spectrum << 1.0, 2.0, 3.0, 3.0, 3.0, 3.0;
+  const Eigen::MatrixXd repeated = rotation * spectrum.asDiagonal() * rotation.transpose();
+  Eigen::VectorXd values;
+  const Eigen::MatrixXd vectors = leadingEigenvectors(repeated, 4, values);
+  EXPECT_LT((values.array() - 3.0).abs().maxCoeff(), 1e-12);
+  EXPECT_LT((vectors.transpose() * vectors - Eigen::MatrixXd::Identity(4, 4)).norm(), 1e-12);
+  EXPECT_LT((repeated * vectors - 3.0 * vectors).norm(), 1e-12);
+  EXPECT_THROW(leadingEigenvectors(repeated, 0, values), Error);
+  EXPECT_THROW(leadingEigenvectors(repeated, 7, values), Error);
+  EXPECT_THROW(leadingEigenvectors(Eigen::MatrixXd::Zero(3, 4), 1, values), Error);
 }
 
 } // namespace kerf

@@ -4,6 +4,7 @@
 #include "vtkMeshFileReader.h"
 
 #include "KerfErrorCollector.h"
+#include "KerfScene.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
@@ -14,6 +15,9 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkRegressionTestImage.h>
+#include <vtkRenderWindow.h>
 #include <vtkTestUtilities.h>
 
 #include <cmath>
@@ -131,6 +135,32 @@ bool Check(bool condition, const char* what, const char* file, int line)
     std::cerr << file << ":" << line << ": check failed: " << what << std::endl;
   }
   return condition;
+}
+
+int CamelSegmentationImageTest(int argc, char* argv[], vtkPolyDataAlgorithm* segmentation)
+{
+  vtkNew<vtkMeshFileReader> reader;
+  reader->SetFileName(SourcePath(argc, argv, "Data/camel.off").c_str());
+  segmentation->SetInputConnection(reader->GetOutputPort());
+  segmentation->Update();
+
+  SceneOptions options;
+  options.colorArray = "Segment";
+  options.colorMap = SceneOptions::ColorMap::Categorical;
+  options.legendTitle = "Segment";
+  options.width = 600;
+  options.height = 450;
+  options.azimuth = 35.0;
+  options.elevation = 15.0;
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> window = RenderScene(segmentation->GetOutput(), options, error);
+  if (!window)
+  {
+    std::cerr << "cannot render: " << error << std::endl;
+    return EXIT_FAILURE;
+  }
+  const int result = vtkRegressionTestImage(window);
+  return result == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
 } // namespace test

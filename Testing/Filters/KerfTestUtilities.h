@@ -10,6 +10,7 @@
 
 class vtkAlgorithm;
 class vtkMeshFileReader;
+class vtkPolyDataAlgorithm;
 class vtkPolyData;
 
 namespace kerf
@@ -37,6 +38,11 @@ struct CamelWithNeckStroke
   vtkSmartPointer<vtkMeshFileReader> stroke;
 };
 CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[]);
+
+/// The regression image of an automatic segmentation of the bundled camel: `segmentation` (a
+/// configured filter writing the cell array "Segment") gets Data/camel.off and its output is drawn
+/// from one camera with categorical colours; returns the test's exit code.
+int CamelSegmentationImageTest(int argc, char* argv[], vtkPolyDataAlgorithm* segmentation);
 
 /// The shared research data folder (../shared/data), or "" if absent.
 std::string SharedDataPath(const std::string& relative);

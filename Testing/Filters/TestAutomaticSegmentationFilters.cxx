@@ -5,6 +5,7 @@
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkConsensusCutSegmentation.h"
+#include "vtkEnsembleSegmentation.h"
 #include "vtkConvexFlooding.h"
 #include "vtkHierarchicalFaceClustering.h"
 #include "vtkKMeansSegmentation.h"
@@ -280,7 +281,8 @@ int TestAutomaticSegmentationFilters(int, char*[])
 
   // The dumbbell's two lobes, cut near the neck (measured 1 - Rand index: watershed 0.011,
   // spectral 0.012, convex flooding 0.044, consensus cuts 0.0062: the random walks from the
-  // segments' spines move its cut from 0.18 above the neck (0.065) into it).
+  // segments' spines move its cut from 0.18 above the neck (0.065) into it; the ensemble 0.010,
+  // and 0.044 with convex flooding and the watershed alone, whose tie goes to convex flooding).
   // K-means and face clustering split it lengthwise at k = 2: they are tested on the cube.
   ok &= CheckSegmentation("Watershed", dumbbell,
     Maker<vtkWatershedSegmentation>([](vtkWatershedSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.02);
@@ -296,6 +298,16 @@ int TestAutomaticSegmentationFilters(int, char*[])
       f->SetWalkDepth(0.0);
     }),
     2, 0.08);
+  ok &= CheckSegmentation("Ensemble", dumbbell,
+    Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.015);
+  ok &= CheckSegmentation("Ensemble of convex flooding and the watershed", dumbbell,
+    Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) {
+      f->SetSegmentCount(2);
+      f->SetConsensusCutsWeight(0.0);
+      f->SetSpectralWeight(0.0);
+      f->SetKMeansWeight(0.0);
+    }),
+    2, 0.05);
 
   // Two stacked boxes: every edge where they meet is concave, so each is one convex patch.
   ok &= CheckSegmentation("Convex Flooding", steps, Maker<vtkConvexFlooding>([](vtkConvexFlooding*) {}), 2, 0.0);
@@ -309,6 +321,8 @@ int TestAutomaticSegmentationFilters(int, char*[])
     Maker<vtkKMeansSegmentation>([](vtkKMeansSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
   ok &= CheckSegmentation("Spectral", cube,
     Maker<vtkSpectralSegmentation>([](vtkSpectralSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
+  ok &= CheckSegmentation("Ensemble", cube,
+    Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
 
   // The merge tree is built once: another count only relabels, and the tree is the output's.
   vtkNew<vtkHierarchicalFaceClustering> clustering;
@@ -348,5 +362,24 @@ int TestAutomaticSegmentationFilters(int, char*[])
   consensus->SetSegmentCount(2);
   consensus->SetSegmentArrayName("");
   ok &= CheckRefused(consensus, cube.surface, "name");
+  vtkNew<vtkEnsembleSegmentation> ensemble;
+  ensemble->SetSegmentCount(0);
+  ok &= CheckRefused(ensemble, cube.surface, "segment");
+  ensemble->SetSegmentCount(2);
+  ensemble->SetKMeansWeight(-1.0);
+  ok &= CheckRefused(ensemble, cube.surface, "weight");
+  ensemble->SetKMeansWeight(std::nan(""));
+  ok &= CheckRefused(ensemble, cube.surface, "KMeansWeight");
+  ensemble->SetKMeansWeight(1.0);
+  ensemble->SetSegmentArrayName("");
+  ok &= CheckRefused(ensemble, cube.surface, "name");
+  // The figures of the ensemble: five members voted, and their atoms are at least the segments.
+  vtkNew<vtkEnsembleSegmentation> figures;
+  figures->SetInputData(dumbbell.surface);
+  figures->SetSegmentCount(2);
+  figures->Update();
+  ok &= KERF_CHECK(FieldValue(figures->GetOutput(), "Members") == 5.0);
+  ok &= KERF_CHECK(FieldValue(figures->GetOutput(), "Atoms") >= 2.0);
+  std::cout << "Ensemble on the dumbbell: " << FieldValue(figures->GetOutput(), "Atoms") << " atoms" << std::endl;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -248,6 +248,26 @@ class KerfPluginTest(unittest.TestCase):
             self.assertEqual(sorted(set(segments.tolist())), list(range(5)))
             simple.Delete(segmentation)
 
+    def test_ensemble_segmentation_proxy(self):
+        """Ensemble Segmentation with its defaults gives the camel the eight segments asked for,
+        from five members' votes; with only the consensus cuts voting it gives their labels."""
+        camel = simple.OpenDataFile(CAMEL)
+        ensemble = simple.EnsembleSegmentation(Input=camel, SegmentCount=8)
+        ensemble.UpdatePipeline()
+        output = servermanager.Fetch(ensemble)
+        segments = vtk_to_numpy(output.GetCellData().GetArray("Segment"))
+        self.assertEqual(len(segments), 19536)
+        self.assertEqual(sorted(set(segments.tolist())), list(range(8)))
+        self.assertEqual(output.GetFieldData().GetArray("Members").GetValue(0), 5)
+        self.assertGreaterEqual(output.GetFieldData().GetArray("Atoms").GetValue(0), 8)
+        alone = simple.EnsembleSegmentation(Input=camel, SegmentCount=8, SpectralWeight=0.0,
+                                            ConvexFloodingWeight=0.0, KMeansWeight=0.0, WatershedWeight=0.0)
+        cuts = simple.ConsensusCutSegmentation(Input=camel, SegmentCount=8)
+        self.assertEqual(vtk_to_numpy(servermanager.Fetch(alone).GetCellData().GetArray("Segment")).tolist(),
+                         vtk_to_numpy(servermanager.Fetch(cuts).GetCellData().GetArray("Segment")).tolist())
+        for proxy in (alone, cuts, ensemble):
+            simple.Delete(proxy)
+
     def test_geodesic_distance_on_a_sphere(self):
         """From the north pole of a sphere of radius 2 the farthest point, the south pole, is
         half a great circle away: 2 pi."""

@@ -133,13 +133,13 @@ class BenchmarkRunner(unittest.TestCase):
         self.assertLess(mean(aimed, "RandIndexError"), mean(edited, "RandIndexError"))
         self.assertLess(mean(aimed, "Inputs"), 55)
 
-    def test_consensus_cuts_beat_every_survey_family(self):
+    def test_the_ensemble_beats_every_method(self):
         # Automatic segmentation with k from nSeg-ByModel.txt, scored against every human of each
-        # model (issue: the flagship below 0.20 and below every survey family; asserted below 0.185
-        # so that the random walks' gain stays). Measured mean 1 - Rand index: consensus cuts 0.176
-        # (0.191 without the random walks), spectral 0.215,
-        # k-means 0.275, convex flooding 0.295, face clustering 0.349, watershed 0.598 (the humans
-        # among themselves: 0.111).
+        # model. The issue: the flagship below 0.20 and below every survey family, the goal 0.15.
+        # Measured mean 1 - Rand index: the ensemble 0.1437 (asserted below the goal), consensus
+        # cuts 0.176 (0.191 without the random walks; asserted below 0.185 so that the walks' gain
+        # stays), spectral 0.215, k-means 0.275, convex flooding 0.295, face clustering 0.349,
+        # watershed 0.598 (the humans among themselves: 0.111).
         def mean_rand_index(method):
             out = os.path.join(self.folder, "automatic-" + method)
             result = subprocess.run([PROGRAM, "benchmark", "--data", DATA, "--method", method, "--jobs", "2",
@@ -149,10 +149,13 @@ class BenchmarkRunner(unittest.TestCase):
             self.assertEqual(len(rows), len(readme_human_rand_index()), method)
             return sum(float(r["RandIndexError"]) for r in rows) / len(rows)
 
-        flagship = mean_rand_index("consensus-cuts")
-        self.assertLess(flagship, 0.185)
+        flagship = mean_rand_index("ensemble")
+        self.assertLess(flagship, 0.15)
+        cuts = mean_rand_index("consensus-cuts")
+        self.assertLess(cuts, 0.185)
+        self.assertLess(flagship, cuts)
         for family in ("spectral", "k-means", "convex-flooding", "face-clustering", "watershed"):
-            self.assertLess(flagship, mean_rand_index(family), family)
+            self.assertLess(cuts, mean_rand_index(family), family)
 
     def test_harmonic_cuts_from_simulated_strokes(self):
         out = os.path.join(self.folder, "harmonic")

@@ -11,6 +11,7 @@
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
 #include "Segmentation/EasyMeshCut.h"
+#include "Segmentation/EnsembleSegmentation.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
 #include "Segmentation/KMeansSegmentation.h"
 #include "Segmentation/SpectralSegmentation.h"
@@ -381,6 +382,19 @@ MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<
   return { segmentByConsensusCuts(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
+MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  EnsembleSegmentationOptions options;
+  options.consensusCutsWeight = parameters.number("cuts", options.consensusCutsWeight);
+  options.spectralWeight = parameters.number("spectral", options.spectralWeight);
+  options.convexFloodingWeight = parameters.number("flooding", options.convexFloodingWeight);
+  options.kMeansWeight = parameters.number("k-means", options.kMeansWeight);
+  options.watershedWeight = parameters.number("watershed", options.watershedWeight);
+  options.faceClusteringWeight = parameters.number("clustering", options.faceClusteringWeight);
+  options.areaWeighted = parameters.number("area-weighted", options.areaWeighted ? 1.0 : 0.0) != 0.0;
+  return { segmentByEnsemble(*c.surface, requestedSegments(c), options).labels, 0 };
+}
+
 // A method parameter that counts something: a whole number below 1000.
 int wholeNumber(const MethodParameters& parameters, const std::string& name, int fallback)
 {
@@ -605,6 +619,10 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks",
         "walk-depth" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
+    { "ensemble",
+      "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on most (evidence accumulation, Fred and Jain 2005)",
+      { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "area-weighted" },
+      SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",
       { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "placement", "cut-band", "depth",

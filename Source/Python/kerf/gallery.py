@@ -8,7 +8,7 @@ column per method, and a first column with the human segmentation the methods' c
 matched to::
 
     xvfb-run -a python3 -m kerf.gallery --data ../shared/data/psb-dev \\
-        --methods consensus-cuts,face-clustering,watershed,k-means -o gallery.png
+        --methods ensemble,consensus-cuts,face-clustering,watershed,k-means -o gallery.png
 
 Prints, per model and method, the number of segments and 1 - Rand index against the shown
 human. Rendering needs a display (xvfb-run -a on a headless machine).
@@ -194,7 +194,7 @@ def gallery(data, methods, path, models=None, parameters=None, report=print):
 def main(argv=None):
     parser = argparse.ArgumentParser(prog="python3 -m kerf.gallery", description=__doc__.split("\n\n")[0])
     parser.add_argument("--data", required=True, help="folder in the benchmark's layout")
-    parser.add_argument("--methods", default="consensus-cuts,face-clustering,watershed,k-means",
+    parser.add_argument("--methods", default="ensemble,consensus-cuts,face-clustering,watershed,k-means",
                         help="methods separated by commas (default: %(default)s)")
     parser.add_argument("--models", default="", help="model ids separated by commas (default: one per category)")
     parser.add_argument("-o", "--output", default="gallery.png", help="the picture (default: %(default)s)")
