@@ -615,6 +615,38 @@ TEST(AutomaticSegmentation, CombinedPartitionsFollowTheMajority)
   EXPECT_EQ(combinePartitions(graph, { { parts, 1.0 }, { other, 3.0 } }, FingerCount + 1).labels,
     finalizeSegments(graph, other, FingerCount + 1));
   EXPECT_EQ(combinePartitions(graph, { { parts, 1.0 } }, FingerCount + 1).atoms, FingerCount + 1);
+  // Faces weighed by area: the same bounds on the co-association hold, so the same majority.
+  const PartitionConsensus byArea =
+    combinePartitions(graph, { { parts, 1.0 }, { other, 1.0 }, { parts, 1.0 } }, FingerCount + 1, true);
+  EXPECT_EQ(byArea.labels, majority.labels);
+  EXPECT_EQ(byArea.atoms, majority.atoms);
+}
+
+// Area weighting on a surface with zero-area faces (a grid with one row collapsed): the linkage
+// stays defined, every face is labelled and the segments are connected.
+TEST(AutomaticSegmentation, CombinedPartitionsWeighZeroAreaFaces)
+{
+  TriangleMesh grid = makeGrid(2.0, 1.0, 16, 8);
+  std::vector<Vector3> points = grid.points();
+  for (Vector3& p : points)
+  {
+    if (std::abs(p.y() - 0.5) < 1e-9)
+    {
+      p.y() = 0.5 + 1.0 / 8.0; // the row at y = 0.5 moves onto the next: its faces have no area
+    }
+  }
+  const TriangleMesh flattened(points, grid.triangles());
+  const FaceGraph graph(flattened);
+  std::vector<int> halves, quarters;
+  for (int f = 0; f < graph.faceCount(); ++f)
+  {
+    halves.push_back(graph.centroid(f).x() < 1.0 ? 0 : 1);
+    quarters.push_back((graph.centroid(f).x() < 1.0 ? 0 : 1) + (graph.centroid(f).y() < 0.5 ? 0 : 2));
+  }
+  ASSERT_GT(std::count_if(graph.areas().begin(), graph.areas().end(), [](double a) { return a == 0.0; }), 0);
+  const PartitionConsensus consensus = combinePartitions(graph, { { halves, 1.0 }, { quarters, 1.0 }, { halves, 1.0 } }, 2, true);
+  checkSegmentation(flattened, halves, consensus.labels, 2);
+  EXPECT_EQ(consensus.labels, finalizeSegments(graph, halves, 2));
 }
 
 // The consensus does not depend on how labels are numbered, on the order of the partitions, or on
@@ -753,6 +785,18 @@ TEST(AutomaticSegmentation, LeadingEigenvectorsMatchTheFullDecomposition)
   EXPECT_LT((values.array() - 3.0).abs().maxCoeff(), 1e-12);
   EXPECT_LT((vectors.transpose() * vectors - Eigen::MatrixXd::Identity(4, 4)).norm(), 1e-12);
   EXPECT_LT((repeated * vectors - 3.0 * vectors).norm(), 1e-12);
+  // The same unrotated: the tridiagonal matrix splits, and each vector needs a start of its own.
+  const Eigen::MatrixXd diagonal = spectrum.asDiagonal();
+  const Eigen::MatrixXd split = leadingEigenvectors(diagonal, 4, values);
+  EXPECT_LT((values.array() - 3.0).abs().maxCoeff(), 1e-12);
+  EXPECT_LT((split.transpose() * split - Eigen::MatrixXd::Identity(4, 4)).norm(), 1e-12);
+  EXPECT_LT((diagonal * split - 3.0 * split).norm(), 1e-12);
+  const Eigen::MatrixXd threes = 3.0 * Eigen::MatrixXd::Identity(4, 4);
+  const Eigen::MatrixXd all = leadingEigenvectors(threes, 4, values);
+  EXPECT_LT((all.transpose() * all - Eigen::MatrixXd::Identity(4, 4)).norm(), 1e-12);
+  const Eigen::MatrixXd one = leadingEigenvectors(Eigen::MatrixXd::Constant(1, 1, -2.0), 1, values);
+  EXPECT_EQ(values[0], -2.0);
+  EXPECT_EQ(std::abs(one(0, 0)), 1.0);
   EXPECT_THROW(leadingEigenvectors(repeated, 0, values), Error);
   EXPECT_THROW(leadingEigenvectors(repeated, 7, values), Error);
   EXPECT_THROW(leadingEigenvectors(Eigen::MatrixXd::Zero(3, 4), 1, values), Error);

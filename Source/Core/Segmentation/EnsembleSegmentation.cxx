@@ -191,6 +191,10 @@ PartitionConsensus combinePartitions(
     return std::all_of(slots.begin(), slots.end(), [f, g](const std::vector<int>& s) { return s[f] == s[g]; });
   };
 
+  // Areas in units of the mean face area, so that products of group weights neither underflow
+  // nor overflow on meshes of any scale.
+  const double areaScale = graph.totalArea() > 0.0 ? n / graph.totalArea() : 1.0;
+
   // Atoms: edge-connected faces that every partition keeps together.
   std::vector<int> atom(n, -1);
   std::vector<Group> groups;
@@ -209,7 +213,7 @@ PartitionConsensus combinePartitions(
     {
       const int f = stack.back();
       stack.pop_back();
-      groups[id].weight += areaWeighted ? graph.area(f) : 1.0;
+      groups[id].weight += areaWeighted ? graph.area(f) * areaScale : 1.0;
       for (int e : graph.faceEdges(f))
       {
         const int g = e >= 0 ? graph.opposite(e, f) : -1;

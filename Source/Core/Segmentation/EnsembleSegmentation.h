@@ -30,18 +30,19 @@ struct PartitionConsensus
   int merges = 0;          ///< atom groups joined by the average linkage
 };
 
-/// The consensus of several partitions of a surface's faces, in at most k connected segments.
-/// Evidence accumulation (Fred and Jain 2005, section 3): the co-association of two faces is the
-/// weighted fraction of partitions that put them in one segment. Faces that every partition keeps
-/// together form atoms (each one edge-connected set); atoms are merged by average linkage (the
-/// mean co-association over all pairs of faces of two groups; Fred and Jain 2005, section 4),
-/// only across dual edges so that every segment stays connected, the most agreed pair first, until
-/// k groups remain. A face counts once in each mean (the Princeton benchmark's Rand index counts
-/// faces), or by its area with `areaWeighted`. Among pairs with equal means the one whose smaller
+/// The consensus of several partitions of a surface's faces, in at most k connected segments (never
+/// fewer segments than the dual graph has components, which cannot merge). Evidence accumulation
+/// (Fred and Jain 2005, section 3): the co-association of two faces is the weighted fraction of
+/// partitions that put them in one segment. Faces that every partition keeps together form atoms
+/// (each one edge-connected set); atoms are merged by average linkage (the mean co-association over
+/// all pairs of faces of two groups; Fred and Jain 2005, section 4), only across dual edges so that
+/// every segment stays connected, the most agreed pair first, until k groups remain. A face counts
+/// once in each mean (the Princeton benchmark's Rand index counts faces), or by its area (in units
+/// of the mean face area) with `areaWeighted`. Among pairs with equal means the one whose smaller
 /// group is smallest joins first, then the pair of smaller group numbers, so the result is
-/// deterministic. The groups are then made at most k and numbered by first face
-/// (finalizeSegments). Throws kerf::Error for k out of range, no partition, a partition of the
-/// wrong size or with a negative label, or weights that are negative, not finite or all zero.
+/// deterministic. The groups are then made at most k and numbered by first face (finalizeSegments).
+/// Throws kerf::Error for k out of range, no partition, a partition of the wrong size or with a
+/// negative label, or weights that are negative, not finite or all zero.
 PartitionConsensus combinePartitions(
   const FaceGraph& graph, const std::vector<WeightedPartition>& partitions, int k, bool areaWeighted = false);
 

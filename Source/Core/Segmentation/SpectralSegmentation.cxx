@@ -285,6 +285,7 @@ Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count,
   values = spectrum.eigenvalues().tail(count);
   const double scale = std::max({ std::abs(spectrum.eigenvalues()[0]), std::abs(spectrum.eigenvalues()[n - 1]),
     std::numeric_limits<double>::min() });
+  const double tiny = std::numeric_limits<double>::epsilon() * scale; // a zero pivot's stand-in (LAPACK's dlagts)
   Eigen::MatrixXd vectors(n, count);
   // The tridiagonal system (T - s I) y = x by Gaussian elimination with partial pivoting (the
   // elimination of LAPACK's dgtsv), s a hair away from the eigenvalue so that it stays regular.
@@ -292,10 +293,12 @@ Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count,
   for (int j = 0; j < count; ++j)
   {
     const double shift = values[j] + 1e-10 * scale;
-    // A fixed start with no symmetry of its own: a low-discrepancy sequence in (-1, 1).
+    // A fixed start of its own for each vector, with no symmetry: a low-discrepancy sequence in
+    // (-1, 1), shifted per vector so that the vectors of an exactly repeated eigenvalue (a
+    // tridiagonal matrix that splits) start apart.
     for (Eigen::Index i = 0; i < n; ++i)
     {
-      x[i] = 2.0 * std::fmod(0.5 + 0.6180339887498949 * static_cast<double>(i + 1), 1.0) - 1.0;
+      x[i] = 2.0 * std::fmod(0.5 + 0.6180339887498949 * static_cast<double>(i + 1) + 0.7548776662466927 * j, 1.0) - 1.0;
     }
     for (int iteration = 0; iteration < 3; ++iteration)
     {
@@ -312,7 +315,7 @@ Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count,
         {
           if (main[i] == 0.0)
           {
-            main[i] = std::numeric_limits<double>::min();
+            main[i] = tiny;
           }
           const double factor = lower[i] / main[i];
           main[i + 1] -= factor * upper[i];
@@ -336,7 +339,7 @@ Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count,
       }
       if (main[n - 1] == 0.0)
       {
-        main[n - 1] = std::numeric_limits<double>::min();
+        main[n - 1] = tiny;
       }
       x[n - 1] /= main[n - 1];
       if (n > 1)
@@ -354,6 +357,20 @@ Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count,
       x /= std::max(x.norm(), std::numeric_limits<double>::min());
     }
     vectors.col(j) = x;
+  }
+  // Checked, not trusted: if a vector failed to converge (a residual far above rounding) or the
+  // orthogonalisation emptied it, Eigen's full decomposition of the tridiagonal matrix decides.
+  const Eigen::MatrixXd tridiagonal = reduction.matrixT();
+  const double residual = (tridiagonal * vectors - vectors * values.asDiagonal()).colwise().norm().maxCoeff();
+  if (!(residual <= 1e-8 * scale) ||
+    !((vectors.transpose() * vectors - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff() <= 1e-8))
+  {
+    spectrum.computeFromTridiagonal(diagonal, offDiagonal, Eigen::ComputeEigenvectors);
+    if (spectrum.info() != Eigen::Success)
+    {
+      throw Error("the eigenvectors of the spectral embedding's matrix did not converge");
+    }
+    vectors = spectrum.eigenvectors().rightCols(count);
   }
   return reduction.matrixQ() * vectors;
 }
