@@ -718,6 +718,25 @@ TEST(AutomaticSegmentation, CombinedPartitionsAndTheEnsembleRefuseBadInput)
   EnsembleSegmentationOptions negativeWeight;
   negativeWeight.kMeansWeight = -1.0;
   EXPECT_THROW(segmentByEnsemble(*lobes().surface, 2, negativeWeight), Error);
+  // One triangle turned over: both methods on the concavity-aware Laplacian refuse the surface.
+  std::vector<Triangle> turned = lobes().surface->mesh().triangles();
+  std::swap(turned[10][1], turned[10][2]);
+  const Surface flipped{ TriangleMesh(lobes().surface->mesh().points(), turned) };
+  for (const auto& [method, segment] : std::vector<std::pair<std::string, std::function<void()>>>{
+         { "ensemble segmentation", [&] { segmentByEnsemble(flipped, 2, EnsembleSegmentationOptions()); } },
+         { "consensus cut segmentation", [&] { segmentByConsensusCuts(flipped, 2, ConsensusCutOptions()); } } })
+  {
+    try
+    {
+      segment();
+      ADD_FAILURE() << method << " accepted a surface with a turned triangle";
+    }
+    catch (const Error& error)
+    {
+      EXPECT_EQ(std::string(error.what()),
+        method + " needs an edge-manifold, consistently oriented surface (0 non-manifold and 3 inconsistently oriented edges)");
+    }
+  }
   EXPECT_THROW(segmentByEnsemble(*lobes().surface, 0, EnsembleSegmentationOptions()), Error);
   EXPECT_THROW(segmentByEnsemble(*lobes().surface, n + 1, EnsembleSegmentationOptions()), Error);
 }

@@ -1,6 +1,8 @@
 // Counts mesh defects and turns them into the error sentences filters report.
 #include "Mesh/MeshValidation.h"
 
+#include "Error.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -292,6 +294,17 @@ std::string MeshReport::summary() const
     out << "; " << defects.str();
   }
   return out.str();
+}
+
+void requireOrientedManifold(const TriangleMesh& mesh, const std::string& method)
+{
+  const MeshReport report = inspectMesh(mesh);
+  if (report.nonManifoldEdges > 0 || report.inconsistentEdges > 0)
+  {
+    throw Error(method + " needs an edge-manifold, consistently oriented surface (" +
+      std::to_string(report.nonManifoldEdges) + " non-manifold and " + std::to_string(report.inconsistentEdges) +
+      " inconsistently oriented edges)");
+  }
 }
 
 std::string describeProblems(

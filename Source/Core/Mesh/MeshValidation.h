@@ -64,6 +64,11 @@ struct MeshRequirements
 std::string describeProblems(
   const MeshReport& report, const MeshRequirements& requirements, const std::vector<long long>* faceCells = nullptr);
 
+/// Throws kerf::Error unless the mesh is edge-manifold and consistently oriented: "<method> needs
+/// an edge-manifold, consistently oriented surface (n non-manifold and m inconsistently oriented
+/// edges)". For Core methods that assemble a Laplacian or read face orientation.
+void requireOrientedManifold(const TriangleMesh& mesh, const std::string& method);
+
 /// Coordinates are refused beyond +-CoordinateLimit, and meshes whose bounding-box diagonal is
 /// below 1 / CoordinateLimit: squared lengths, areas and their products stay far from overflow
 /// and underflow (rescale such a mesh first).

@@ -514,22 +514,10 @@ ConsensusCutResult segmentByConsensusCuts(const Surface& surface, int k, const C
     throw Error("a consensus-cut option is out of range (clip quantile in [0, 0.5), tolerance in [0, 1], "
                 "minimum area in [0, 1), vote exponent >= 0, walk depth in [0, 1])");
   }
-  const MeshReport report = inspectMesh(mesh);
-  if (report.nonManifoldEdges > 0 || report.inconsistentEdges > 0)
-  {
-    throw Error("consensus cuts need an edge-manifold, consistently oriented surface (" +
-      std::to_string(report.nonManifoldEdges) + " non-manifold and " + std::to_string(report.inconsistentEdges) +
-      " inconsistently oriented edges)");
-  }
-  const FaceGraph graph(mesh);
-  if (graph.componentCount() == 1)
-  {
-    return segmentConnected(surface, k, options);
-  }
+  requireOrientedManifold(mesh, "consensus cut segmentation");
   ConsensusCutResult result;
-  result.labels = segmentComponents(graph, k, [&](const TriangleMesh& part, int partK) {
-    const Surface partSurface(part);
-    const ConsensusCutResult partResult = segmentConnected(partSurface, partK, options);
+  result.labels = segmentSurfaceComponents(surface, k, [&](const Surface& part, int partK) {
+    const ConsensusCutResult partResult = segmentConnected(part, partK, options);
     result.featurePoints += partResult.featurePoints;
     result.fields += partResult.fields;
     result.candidates += partResult.candidates;

@@ -374,22 +374,10 @@ EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, cons
   {
     throw Error("an ensemble needs a member with a positive weight");
   }
-  const MeshReport report = inspectMesh(mesh);
-  if (report.nonManifoldEdges > 0 || report.inconsistentEdges > 0)
-  {
-    throw Error("ensemble segmentation needs an edge-manifold, consistently oriented surface (" +
-      std::to_string(report.nonManifoldEdges) + " non-manifold and " + std::to_string(report.inconsistentEdges) +
-      " inconsistently oriented edges)");
-  }
-  const FaceGraph& graph = faceGraph(surface);
-  if (graph.componentCount() == 1)
-  {
-    return segmentConnected(surface, k, options);
-  }
+  requireOrientedManifold(mesh, "ensemble segmentation");
   EnsembleSegmentationResult result;
-  result.labels = segmentComponents(graph, k, [&](const TriangleMesh& part, int partK) {
-    const Surface partSurface(part);
-    const EnsembleSegmentationResult partResult = segmentConnected(partSurface, partK, options);
+  result.labels = segmentSurfaceComponents(surface, k, [&](const Surface& part, int partK) {
+    const EnsembleSegmentationResult partResult = segmentConnected(part, partK, options);
     result.members = partResult.members;
     result.atoms += partResult.atoms;
     return partResult.labels;

@@ -546,4 +546,18 @@ std::vector<int> segmentComponents(const FaceGraph& graph, int k,
   return numberByFirstFace(labels);
 }
 
+std::vector<int> segmentSurfaceComponents(const Surface& surface, int k,
+  const std::function<std::vector<int>(const Surface&, int)>& segmentComponent)
+{
+  const FaceGraph& graph = faceGraph(surface);
+  if (graph.componentCount() == 1)
+  {
+    return segmentComponent(surface, k);
+  }
+  return segmentComponents(graph, k, [&segmentComponent](const TriangleMesh& part, int partK) {
+    const Surface partSurface(part);
+    return segmentComponent(partSurface, partK);
+  });
+}
+
 } // namespace kerf

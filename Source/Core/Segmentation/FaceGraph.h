@@ -163,4 +163,9 @@ std::vector<int> segmentsPerComponent(const FaceGraph& graph, int k);
 std::vector<int> segmentComponents(const FaceGraph& graph, int k,
   const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent);
 
+/// segmentComponents for methods that read a kerf::Surface (and what it caches): a connected
+/// surface is handed over itself, each component of another as a Surface of its own.
+std::vector<int> segmentSurfaceComponents(const Surface& surface, int k,
+  const std::function<std::vector<int>(const Surface&, int)>& segmentComponent);
+
 } // namespace kerf
