@@ -45,6 +45,8 @@ int vtkEnsembleSegmentation::RequestData(
         options.watershedWeight = kerf::Finite(this->WatershedWeight, "WatershedWeight");
         options.faceClusteringWeight = kerf::Finite(this->FaceClusteringWeight, "FaceClusteringWeight");
         options.areaWeighted = this->AreaWeighted;
+        options.refinement.bandWidth = kerf::Finite(this->BoundaryBand, "BoundaryBand");
+        options.refinement.convexWeight = kerf::Finite(this->ConvexWeight, "ConvexWeight");
         const kerf::EnsembleSegmentationResult result = kerf::segmentByEnsemble(surface, this->SegmentCount, options);
         fieldData->AddArray(kerf::MakeFieldValue("Members", result.members));
         fieldData->AddArray(kerf::MakeFieldValue("Atoms", result.atoms));
@@ -64,5 +66,7 @@ void vtkEnsembleSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "WatershedWeight: " << this->WatershedWeight << "\n";
   os << indent << "FaceClusteringWeight: " << this->FaceClusteringWeight << "\n";
   os << indent << "AreaWeighted: " << this->AreaWeighted << "\n";
+  os << indent << "BoundaryBand: " << this->BoundaryBand << "\n";
+  os << indent << "ConvexWeight: " << this->ConvexWeight << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

@@ -9,7 +9,9 @@
  * every member keeps together form atoms, and the atoms are merged across shared edges by average
  * linkage of the members' co-association (the weighted fraction of members that put two faces in
  * one segment; Fred and Jain 2005's evidence accumulation) until k segments remain. A member's
- * weight is its vote; 0 leaves it out.
+ * weight is its vote; 0 leaves it out. Each boundary between two segments is then re-cut by a
+ * minimum cut within a band around it (Katz and Tal 2003's fuzzy-region cut), so that it takes the
+ * short and concave way nearby instead of the members' jagged votes.
  *
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
@@ -19,7 +21,8 @@
  * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
  * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
  * orientation), a segment count below 1 or above the number of triangles, a negative or
- * non-finite weight, all weights 0. Documentation/filters/AutomaticSegmentation.md has the details.
+ * non-finite weight, all weights 0, a negative or non-finite BoundaryBand or ConvexWeight.
+ * Documentation/filters/AutomaticSegmentation.md has the details.
  */
 #ifndef vtkEnsembleSegmentation_h
 #define vtkEnsembleSegmentation_h
@@ -88,6 +91,20 @@ public:
   ///@}
 
   ///@{
+  /// Half-width of the band in which each boundary is re-cut, as a fraction of the square root of
+  /// the smaller neighbouring segment's area; 0 keeps the linkage's boundaries. Default 0.4.
+  vtkSetMacro(BoundaryBand, double);
+  vtkGetMacro(BoundaryBand, double);
+  ///@}
+
+  ///@{
+  /// How much a convex edge's bend counts against a concave one's when the boundaries are re-cut
+  /// (Katz and Tal 2003's eta; 1: alike). Default 0.1.
+  vtkSetMacro(ConvexWeight, double);
+  vtkGetMacro(ConvexWeight, double);
+  ///@}
+
+  ///@{
   /// Name of the output cell array. Default "Segment".
   vtkSetStringMacro(SegmentArrayName);
   vtkGetStringMacro(SegmentArrayName);
@@ -108,6 +125,8 @@ protected:
   double WatershedWeight = 1.0;
   double FaceClusteringWeight = 0.0;
   bool AreaWeighted = false;
+  double BoundaryBand = 0.4;
+  double ConvexWeight = 0.1;
   char* SegmentArrayName = nullptr;
 
 private:

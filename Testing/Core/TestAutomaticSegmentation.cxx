@@ -2,6 +2,7 @@
 #include "Error.h"
 #include "Evaluation/SegmentationMetrics.h"
 #include "Mesh/MeshGenerators.h"
+#include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
 #include "Segmentation/EnsembleSegmentation.h"
@@ -582,13 +583,15 @@ TEST(AutomaticSegmentation, FaceClusterHierarchyFollowsTheReferenceContractionOr
 // The ensemble: its members' votes on the three shapes (thresholds: measured, with a small margin).
 TEST(AutomaticSegmentation, EnsembleOnTheThreeShapes)
 {
-  // Measured 0.063 (the consensus cuts alone 0.087, convex flooding alone 0.020): the three
-  // fingers; where the two that find them disagree, the other three members decide.
+  // Measured 0.068 (0.063 before the boundaries are re-cut; the consensus cuts alone 0.087, convex
+  // flooding alone 0.020): the three fingers; where the two that find them disagree, the other
+  // three members decide.
   expectFingers("ensemble",
     [] { return segmentByEnsemble(*fingers().surface, FingerCount + 1, EnsembleSegmentationOptions()).labels; }, 0.075);
   // Measured 0.0047 (as the watershed): the cut at the neck.
   expectLobes("ensemble", [] { return segmentByEnsemble(*lobes().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.01);
-  // Measured 0.021: the cylinder, cut at its crease.
+  // Measured 0.027 (0.021 before the boundaries are re-cut): the cylinder, cut at the box's
+  // concave crease.
   expectBoxWithCylinder("ensemble",
     [] { return segmentByEnsemble(*boxWithCylinder().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.03);
   const EnsembleSegmentationResult result =
@@ -694,6 +697,91 @@ TEST(AutomaticSegmentation, CombinedPartitionsIgnoreNumberingAndOrder)
   }
 }
 
+// Boundary refinement: a boundary drawn off the crease and jagged (a wave of 6 periods around the
+// axis) moves onto the crease, the short and concave way within the band.
+TEST(AutomaticSegmentation, RefinedBoundariesFindTheNeckAndTheCylindersCrease)
+{
+  const auto wavy = [](const TriangleMesh& mesh, const std::function<bool(const Vector3&)>& upper) {
+    std::vector<int> labels;
+    for (int f = 0; f < mesh.faceCount(); ++f)
+    {
+      const Triangle& t = mesh.triangle(f);
+      labels.push_back(upper((mesh.point(t[0]) + mesh.point(t[1]) + mesh.point(t[2])) / 3.0) ? 1 : 0);
+    }
+    return labels;
+  };
+  const TriangleMesh& lobesMesh = lobes().surface->mesh();
+  const std::vector<int> offNeck = wavy(lobesMesh, [](const Vector3& c) {
+    return c.z() > NeckHeight + 0.3 + 0.12 * std::sin(6.0 * std::atan2(c.y(), c.x()));
+  });
+  const double before = checkSegmentation(lobesMesh, lobes().parts, offNeck, 2);
+  const FaceGraph lobesGraph(lobesMesh);
+  const BoundaryRefinementResult refined = refineSegmentBoundaries(lobesGraph, offNeck, BoundaryRefinementOptions());
+  EXPECT_EQ(refineSegmentBoundaries(lobesGraph, offNeck, BoundaryRefinementOptions()).labels, refined.labels);
+  const double after = checkSegmentation(lobesMesh, lobes().parts, refined.labels, 2);
+  // Measured 0.0047, the watershed's and the ensemble's cut at the neck.
+  std::cout << "two lobes: 1 - Rand index " << before << " drawn, " << after << " refined, " << refined.movedFaces
+            << " faces moved\n";
+  EXPECT_GT(before, 0.05);
+  EXPECT_LE(after, 0.01);
+  EXPECT_EQ(refined.boundaries, 1);
+  EXPECT_GT(refined.movedFaces, 0);
+
+  const TriangleMesh& boxMesh = boxWithCylinder().surface->mesh();
+  const double crease = fingers().creaseAngle;
+  const std::vector<int> offCrease = wavy(boxMesh, [crease](const Vector3& c) {
+    const Vector3 d = c.normalized();
+    return std::acos(std::max(-1.0, std::min(1.0, d.x()))) < crease - 0.12 + 0.06 * std::sin(6.0 * std::atan2(d.z(), d.y()));
+  });
+  const double boxBefore = checkSegmentation(boxMesh, boxWithCylinder().parts, offCrease, 2);
+  const std::vector<int> boxRefined =
+    refineSegmentBoundaries(FaceGraph(boxMesh), offCrease, BoundaryRefinementOptions()).labels;
+  const double boxAfter = checkSegmentation(boxMesh, boxWithCylinder().parts, boxRefined, 2);
+  std::cout << "box and cylinder: 1 - Rand index " << boxBefore << " drawn, " << boxAfter << " refined\n";
+  // Measured 0.027, as the watershed and the ensemble: the concave crease of the rounded box lies
+  // a little off the construction's (which is the fingers' crease angle on the sphere).
+  EXPECT_GT(boxBefore, 0.035);
+  EXPECT_LE(boxAfter, 0.03);
+}
+
+// What the refinement must keep: a band of 0 changes nothing; a segment inside its own band (one
+// face) has no terminal and keeps its boundary; the labels of an untouched input stay valid.
+TEST(AutomaticSegmentation, RefinedBoundariesKeepWhatTheBandCannotHold)
+{
+  const FaceGraph graph(lobes().surface->mesh());
+  std::vector<int> labels = lobes().parts;
+  BoundaryRefinementOptions none;
+  none.bandWidth = 0.0;
+  EXPECT_EQ(refineSegmentBoundaries(graph, labels, none).labels, labels);
+  EXPECT_EQ(refineSegmentBoundaries(graph, labels, none).boundaries, 0);
+  // One face of the lower lobe far from the neck on its own: three segments stay three.
+  int lonely = 0;
+  for (int f = 0; f < graph.faceCount(); ++f)
+  {
+    if (graph.centroid(f).z() < graph.centroid(lonely).z())
+    {
+      lonely = f;
+    }
+  }
+  labels[static_cast<std::size_t>(lonely)] = 2;
+  const BoundaryRefinementResult result = refineSegmentBoundaries(graph, labels, BoundaryRefinementOptions());
+  EXPECT_EQ(*std::max_element(result.labels.begin(), result.labels.end()), 2);
+  EXPECT_EQ(std::count(result.labels.begin(), result.labels.end(), result.labels[static_cast<std::size_t>(lonely)]), 1);
+  // Errors.
+  EXPECT_THROW(refineSegmentBoundaries(graph, std::vector<int>(graph.faceCount() - 1, 0), none), Error);
+  std::vector<int> negative = lobes().parts;
+  negative[5] = -1;
+  EXPECT_THROW(refineSegmentBoundaries(graph, negative, BoundaryRefinementOptions()), Error);
+  for (double bad : { -0.1, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    BoundaryRefinementOptions band, convex;
+    band.bandWidth = bad;
+    convex.convexWeight = bad;
+    EXPECT_THROW(refineSegmentBoundaries(graph, lobes().parts, band), Error) << bad;
+    EXPECT_THROW(refineSegmentBoundaries(graph, lobes().parts, convex), Error) << bad;
+  }
+}
+
 TEST(AutomaticSegmentation, CombinedPartitionsAndTheEnsembleRefuseBadInput)
 {
   const FaceGraph graph(lobes().surface->mesh());
@@ -718,6 +806,9 @@ TEST(AutomaticSegmentation, CombinedPartitionsAndTheEnsembleRefuseBadInput)
   EnsembleSegmentationOptions negativeWeight;
   negativeWeight.kMeansWeight = -1.0;
   EXPECT_THROW(segmentByEnsemble(*lobes().surface, 2, negativeWeight), Error);
+  EnsembleSegmentationOptions negativeBand;
+  negativeBand.refinement.bandWidth = -0.4;
+  EXPECT_THROW(segmentByEnsemble(*lobes().surface, 2, negativeBand), Error);
   // One triangle turned over: both methods on the concavity-aware Laplacian refuse the surface.
   std::vector<Triangle> turned = lobes().surface->mesh().triangles();
   std::swap(turned[10][1], turned[10][2]);
@@ -765,7 +856,7 @@ TEST(AutomaticSegmentation, EnsembleOnTwoComponents)
   }
   const double error = checkSegmentation(both.mesh(), parts, result.labels, 4);
   std::cout << "ensemble on two separate lobes: 1 - Rand index " << error << std::endl;
-  EXPECT_LE(error, 0.01); // measured 0.0026: each pair of lobes split at its neck
+  EXPECT_LE(error, 0.01); // measured 0.0023: each pair of lobes split at its neck
   for (int f = 0; f < one.faceCount(); ++f)
   {
     EXPECT_LT(result.labels[static_cast<std::size_t>(f)], 2);

@@ -281,8 +281,9 @@ int TestAutomaticSegmentationFilters(int, char*[])
 
   // The dumbbell's two lobes, cut near the neck (measured 1 - Rand index: watershed 0.011,
   // spectral 0.012, convex flooding 0.044, consensus cuts 0.0062: the random walks from the
-  // segments' spines move its cut from 0.18 above the neck (0.065) into it; the ensemble 0.010,
-  // and 0.044 with convex flooding and the watershed alone, whose tie goes to convex flooding).
+  // segments' spines move its cut from 0.18 above the neck (0.065) into it; the ensemble 0: its
+  // boundary band re-cuts the boundary onto the neck's ring of concave edges, also with convex
+  // flooding and the watershed alone, whose tie goes to convex flooding's cut (0.044 without the band)).
   // K-means and face clustering split it lengthwise at k = 2: they are tested on the cube.
   ok &= CheckSegmentation("Watershed", dumbbell,
     Maker<vtkWatershedSegmentation>([](vtkWatershedSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.02);
@@ -299,15 +300,21 @@ int TestAutomaticSegmentationFilters(int, char*[])
     }),
     2, 0.08);
   ok &= CheckSegmentation("Ensemble", dumbbell,
-    Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.015);
-  ok &= CheckSegmentation("Ensemble of convex flooding and the watershed", dumbbell,
-    Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) {
-      f->SetSegmentCount(2);
-      f->SetConsensusCutsWeight(0.0);
-      f->SetSpectralWeight(0.0);
-      f->SetKMeansWeight(0.0);
-    }),
-    2, 0.05);
+    Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) { f->SetSegmentCount(2); }), 2, 0.0);
+  for (const double band : { 0.4, 0.0 })
+  {
+    ok &= CheckSegmentation(band > 0.0 ? "Ensemble of convex flooding and the watershed"
+                                       : "Ensemble of convex flooding and the watershed without the band",
+      dumbbell,
+      Maker<vtkEnsembleSegmentation>([band](vtkEnsembleSegmentation* f) {
+        f->SetSegmentCount(2);
+        f->SetConsensusCutsWeight(0.0);
+        f->SetSpectralWeight(0.0);
+        f->SetKMeansWeight(0.0);
+        f->SetBoundaryBand(band);
+      }),
+      2, band > 0.0 ? 0.0 : 0.05);
+  }
 
   // Two stacked boxes: every edge where they meet is concave, so each is one convex patch.
   ok &= CheckSegmentation("Convex Flooding", steps, Maker<vtkConvexFlooding>([](vtkConvexFlooding*) {}), 2, 0.0);
@@ -371,6 +378,14 @@ int TestAutomaticSegmentationFilters(int, char*[])
   ensemble->SetKMeansWeight(std::nan(""));
   ok &= CheckRefused(ensemble, cube.surface, "KMeansWeight");
   ensemble->SetKMeansWeight(1.0);
+  ensemble->SetBoundaryBand(-0.1);
+  ok &= CheckRefused(ensemble, cube.surface, "band");
+  ensemble->SetBoundaryBand(std::nan(""));
+  ok &= CheckRefused(ensemble, cube.surface, "BoundaryBand");
+  ensemble->SetBoundaryBand(0.4);
+  ensemble->SetConvexWeight(-1.0);
+  ok &= CheckRefused(ensemble, cube.surface, "convex weight");
+  ensemble->SetConvexWeight(0.1);
   ensemble->SetSegmentArrayName("");
   ok &= CheckRefused(ensemble, cube.surface, "name");
   // The figures of the ensemble: five members voted, and 50 atoms (faces all five keep together).

@@ -136,21 +136,24 @@ class BenchmarkRunner(unittest.TestCase):
     def test_the_ensemble_beats_every_method(self):
         # Automatic segmentation with k from nSeg-ByModel.txt, scored against every human of each
         # model. The issue: the flagship below 0.20 and below every survey family, the goal 0.15.
-        # Measured mean 1 - Rand index: the ensemble 0.1437 (asserted below the goal), consensus
+        # Measured mean 1 - Rand index: the ensemble 0.1336 (0.1437 without the boundary band;
+        # asserted below 0.14 and below its own linkage's boundaries), consensus
         # cuts 0.176 (0.191 without the random walks; asserted below 0.185 so that the walks' gain
         # stays), spectral 0.215, k-means 0.275, convex flooding 0.295, face clustering 0.349,
         # watershed 0.598 (the humans among themselves: 0.111).
-        def mean_rand_index(method):
-            out = os.path.join(self.folder, "automatic-" + method)
-            result = subprocess.run([PROGRAM, "benchmark", "--data", DATA, "--method", method, "--jobs", "2",
-                                     "--no-pictures", "-o", out], capture_output=True, text=True, timeout=1200)
+        def mean_rand_index(method, parameters=""):
+            out = os.path.join(self.folder, "automatic-" + method + parameters.replace("=", "-"))
+            result = subprocess.run([PROGRAM, "benchmark", "--data", DATA, "--method", method, "--parameters",
+                                     parameters, "--jobs", "2", "--no-pictures", "-o", out],
+                                    capture_output=True, text=True, timeout=1200)
             self.assertEqual(result.returncode, 0, result.stderr)
             rows = read_rows(os.path.join(out, "results.csv"))
             self.assertEqual(len(rows), len(readme_human_rand_index()), method)
             return sum(float(r["RandIndexError"]) for r in rows) / len(rows)
 
         flagship = mean_rand_index("ensemble")
-        self.assertLess(flagship, 0.15)
+        self.assertLess(flagship, 0.14)
+        self.assertLess(flagship, mean_rand_index("ensemble", "band=0") - 0.005)
         cuts = mean_rand_index("consensus-cuts")
         self.assertLess(cuts, 0.185)
         self.assertLess(flagship, cuts)

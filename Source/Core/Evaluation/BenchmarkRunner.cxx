@@ -392,6 +392,9 @@ MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*
   options.watershedWeight = parameters.number("watershed", options.watershedWeight);
   options.faceClusteringWeight = parameters.number("clustering", options.faceClusteringWeight);
   options.areaWeighted = parameters.number("area-weighted", options.areaWeighted ? 1.0 : 0.0) != 0.0;
+  options.refinement.bandWidth = parameters.number("band", options.refinement.bandWidth);
+  options.refinement.convexWeight = parameters.number("convex-weight", options.refinement.convexWeight);
+  options.consensusCuts.walkDepth = parameters.number("walk-depth", options.consensusCuts.walkDepth);
   return { segmentByEnsemble(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
@@ -621,7 +624,8 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "ensemble",
       "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on most (evidence accumulation, Fred and Jain 2005)",
-      { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "area-weighted" },
+      { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "area-weighted", "band", "convex-weight",
+        "walk-depth" },
       SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",

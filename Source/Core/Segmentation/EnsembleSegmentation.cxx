@@ -125,7 +125,7 @@ EnsembleSegmentationResult segmentConnected(const Surface& surface, int k, const
     [&] { return cutHierarchyAtCount(faceClusterHierarchy(surface, options.faceClustering), k); });
   const PartitionConsensus consensus = combinePartitions(graph, partitions, k, options.areaWeighted);
   EnsembleSegmentationResult result;
-  result.labels = consensus.labels;
+  result.labels = refineSegmentBoundaries(graph, consensus.labels, options.refinement).labels;
   result.members = static_cast<int>(partitions.size());
   result.atoms = consensus.atoms;
   return result;
@@ -374,6 +374,7 @@ EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, cons
   {
     throw Error("an ensemble needs a member with a positive weight");
   }
+  checkBoundaryRefinementOptions(options.refinement);
   requireOrientedManifold(mesh, "ensemble segmentation");
   EnsembleSegmentationResult result;
   result.labels = segmentSurfaceComponents(surface, k, [&](const Surface& part, int partK) {

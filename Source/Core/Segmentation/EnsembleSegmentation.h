@@ -1,6 +1,7 @@
 // Ensemble segmentation: the partition into k parts that several automatic segmentations agree on most.
 #pragma once
 
+#include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
 #include "Segmentation/FaceGraph.h"
@@ -59,6 +60,9 @@ struct EnsembleSegmentationOptions
   double faceClusteringWeight = 0.0;
   /// Faces weigh by their area in the linkage instead of once each. Default false.
   bool areaWeighted = false;
+  /// The consensus's boundaries re-cut within a band (refineSegmentBoundaries, its defaults);
+  /// bandWidth 0 leaves them as the linkage drew them.
+  BoundaryRefinementOptions refinement;
   /// Each member's own options (their defaults; the segment count is the ensemble's k).
   ConsensusCutOptions consensusCuts;
   SpectralSegmentationOptions spectral;
@@ -76,8 +80,9 @@ struct EnsembleSegmentationResult
 };
 
 /// Ensemble segmentation: each member with a positive weight segments the surface into k parts
-/// with its own options, and combinePartitions joins their votes. Each dual-graph component is
-/// segmented apart with its share of k (segmentComponents). Deterministic. Throws kerf::Error for
+/// with its own options, combinePartitions joins their votes, and refineSegmentBoundaries moves the
+/// joined segments' boundaries onto nearby short, concave ways (unless options.refinement's band
+/// is 0). Each dual-graph component is segmented apart with its share of k (segmentComponents). Deterministic. Throws kerf::Error for
 /// k < 1, k > faces, a surface that is not edge-manifold and consistently oriented, weights out of
 /// range, or whatever a member refuses.
 EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, const EnsembleSegmentationOptions& options);

@@ -125,7 +125,8 @@ void checkSegmentCount(int k, int faceCount)
   }
 }
 
-DualDistances dualDijkstra(const FaceGraph& graph, const std::vector<double>& edgeLengths, const std::vector<int>& sources)
+DualDistances dualDijkstra(
+  const FaceGraph& graph, const std::vector<double>& edgeLengths, const std::vector<int>& sources, double limit)
 {
   DualDistances result;
   result.distance.assign(graph.faceCount(), std::numeric_limits<double>::infinity());
@@ -158,6 +159,10 @@ DualDistances dualDijkstra(const FaceGraph& graph, const std::vector<double>& ed
       }
       const int g = graph.opposite(e, f);
       const double candidate = d + edgeLengths[e];
+      if (candidate > limit)
+      {
+        continue;
+      }
       if (candidate < result.distance[g] ||
         (candidate == result.distance[g] && result.nearest[f] < result.nearest[g]))
       {

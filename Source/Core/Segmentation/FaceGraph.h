@@ -5,6 +5,7 @@
 
 #include <array>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace kerf
@@ -79,13 +80,15 @@ void checkSegmentCount(int k, int faceCount);
 
 /// Multi-source Dijkstra on the dual graph with a length per dual edge: each face's distance to
 /// the nearest source and that source's position in `sources`. Ties go to the smaller face
-/// index, so the result is deterministic; unreachable faces get +infinity and -1.
+/// index, so the result is deterministic; unreachable faces get +infinity and -1. With a `limit`,
+/// faces farther than it are not reached (the search stops there).
 struct DualDistances
 {
   std::vector<double> distance;
   std::vector<int> nearest;
 };
-DualDistances dualDijkstra(const FaceGraph& graph, const std::vector<double>& edgeLengths, const std::vector<int>& sources);
+DualDistances dualDijkstra(const FaceGraph& graph, const std::vector<double>& edgeLengths, const std::vector<int>& sources,
+  double limit = std::numeric_limits<double>::infinity());
 
 /// Relabels so that every label is one connected set of faces (a label spread over several
 /// pieces becomes several labels), numbered in order of first face.
