@@ -324,6 +324,30 @@ std::vector<int> ReadTriangleLabels(vtkAlgorithm* algorithm, int index,
   return surface.CellValuesToTriangles(labels);
 }
 
+InputLabels LoadLabelledSurface(
+  vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, const MeshRequirements& requirements)
+{
+  LoadSurface(surface, input, requirements);
+  InputLabels read;
+  read.labels = ReadTriangleLabels(algorithm, 0, surface, input->GetNumberOfCells(), "the surface's labels");
+  // The array ReadInputArray read: the selected name, else the active cell scalars.
+  vtkInformation* selection = algorithm->GetInputArrayInformation(0);
+  const char* requested =
+    selection && selection->Has(vtkDataObject::FIELD_NAME()) ? selection->Get(vtkDataObject::FIELD_NAME()) : nullptr;
+  vtkDataArray* scalars = input->GetCellData()->GetScalars();
+  read.arrayName = requested && *requested ? requested : (scalars && scalars->GetName() ? scalars->GetName() : "Segment");
+  return read;
+}
+
+void WriteRelabelledSurface(
+  const SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output, const InputLabels& read, const std::vector<int>& labels)
+{
+  surface.MakeOutput(input, output);
+  output->GetCellData()->RemoveArray(read.arrayName.c_str());
+  output->GetCellData()->AddArray(MakeIntArray(read.arrayName.c_str(), labels));
+  output->GetCellData()->SetActiveScalars(read.arrayName.c_str());
+}
+
 std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, const std::string& owner)
 {
   vtkDataArray* array = name && *name ? points->GetPointData()->GetArray(name) : nullptr;

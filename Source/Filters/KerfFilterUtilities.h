@@ -110,6 +110,22 @@ std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
 std::vector<int> ReadTriangleLabels(vtkAlgorithm* algorithm, int index,
   const SurfaceInput& surface, vtkIdType cells, const std::string& owner);
 
+/// What a filter that changes a labelling reads (vtkSnakeRefinement, vtkBoundaryBandCut): input
+/// 0's surface, loaded into `surface` with `requirements`, its per-triangle labels from input
+/// array 0 (as ReadTriangleLabels), and the name of that array ("Segment" when it has none).
+struct InputLabels
+{
+  std::vector<int> labels;
+  std::string arrayName;
+};
+InputLabels LoadLabelledSurface(
+  vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, const MeshRequirements& requirements);
+
+/// The output of such a filter: the surface (SurfaceInput::MakeOutput) with its labels replaced by
+/// `labels` under the input array's name, the active cell scalars.
+void WriteRelabelledSurface(
+  const SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output, const InputLabels& read, const std::vector<int>& labels);
+
 /// The one-component point array `name` of a point set, one value per point; throws kerf::Error
 /// naming it and its owner when it is missing or has another shape. (Arrays of a filter's first
 /// input are selected with SetInputArrayToProcess and read with ReadInputArray; arrays of other

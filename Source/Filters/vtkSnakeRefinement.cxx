@@ -53,12 +53,8 @@ int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inpu
   return kerf::RunGuarded(this, "Cannot refine the boundaries", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
+    const kerf::InputLabels read = kerf::LoadLabelledSurface(this, this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
-    const std::vector<int> labels =
-      kerf::ReadTriangleLabels(this, 0, surface, input->GetNumberOfCells(), "the surface's labels");
-    vtkDataArray* labelArray = this->GetInputArrayToProcess(0, input);
-    const std::string name = labelArray && labelArray->GetName() ? labelArray->GetName() : "Segment";
 
     kerf::EasyMeshCutOptions options;
     options.refine = this->SnakeIterations > 0;
@@ -72,13 +68,10 @@ int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inpu
       options.overrideRadius = kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
     }
     this->UpdateProgress(0.1);
-    const kerf::EasyMeshCutResult result = kerf::refineBoundaries(surface.SharedSurface(), labels, options);
+    const kerf::EasyMeshCutResult result = kerf::refineBoundaries(surface.SharedSurface(), read.labels, options);
     this->UpdateProgress(0.9);
 
-    surface.MakeOutput(input, output);
-    output->GetCellData()->RemoveArray(name.c_str());
-    output->GetCellData()->AddArray(kerf::MakeIntArray(name.c_str(), result.faceLabels));
-    output->GetCellData()->SetActiveScalars(name.c_str());
+    kerf::WriteRelabelledSurface(surface, input, output, read, result.faceLabels);
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SnakeSweeps", static_cast<double>(result.snake.sweeps)));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SnakeSlides", static_cast<double>(result.snake.slides)));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SnakeSplits", static_cast<double>(result.snake.splits)));

@@ -279,7 +279,13 @@ class KerfPluginTest(unittest.TestCase):
         moved = 19536 - int(overlap.max(axis=1).sum())
         self.assertGreater(moved, 0)
         self.assertLess(moved, 19536 // 20)
-        for proxy in (alone, refined, cuts, ensemble):
+        # The band is the filter Boundary Band Cut: after the ensemble without its band it gives
+        # the ensemble's labels.
+        unbanded = simple.EnsembleSegmentation(Input=camel, SegmentCount=8, BoundaryBand=0.0)
+        recut = simple.BoundaryBandCut(Input=unbanded)
+        self.assertEqual(int((labels(recut) != segments).sum()), 0)
+        self.assertGreater(servermanager.Fetch(recut).GetFieldData().GetArray("MovedFaces").GetValue(0), 0)
+        for proxy in (recut, unbanded, alone, refined, cuts, ensemble):
             simple.Delete(proxy)
 
     def test_geodesic_distance_on_a_sphere(self):
