@@ -1,4 +1,4 @@
-// Benchmarks of hierarchical face clustering (Garland et al.): building the merge tree and cutting it at k, at 100k and 1M triangles.
+// Benchmarks of automatic segmentation: hierarchical face clustering (Garland et al.) at 100k and 1M triangles, and the ensemble with its reference at a psb-dev model's size.
 //
 // On the cube dumbbell of the harmonic-cut benchmarks (kerf::benchmarks::MakeBenchmarkDumbbell,
 // 99,372 and 1,002,252 triangles):
@@ -8,12 +8,23 @@
 //   BM_FaceClusterGraph/<size>       kerf::FaceGraph, the dual graph the methods share
 //   BM_FaceClusterSlide/<size>       cutHierarchyAtCount on the built tree for k = 2..21, the
 //                                    cost of sliding k without recomputing
+// and, on the 22,188-triangle dumbbell (a psb-dev model's size; k = 6):
+//   BM_EnsembleSegmentation/22k      kerf::segmentByEnsemble with its defaults on a new Surface
+//                                    each time (nothing cached): the flagship's whole cost
+//   BM_ConsensusCutSegmentation/22k  kerf::segmentByConsensusCuts the same way, its costliest
+//                                    member and the reference its cost is quoted against
+//   BM_BoundaryBandCut/22k           kerf::refineSegmentBoundaries of the ensemble's labels
+//                                    without its band (computed once): the band's own cost
 // The meshes are built once per size, outside the timed loops.
 #include "KerfBenchmarks.h"
 #include "BenchmarkMeshes.h"
 
+#include "Segmentation/BoundaryRefinement.h"
+#include "Segmentation/ConsensusCutSegmentation.h"
+#include "Segmentation/EnsembleSegmentation.h"
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
+#include "Session/Surface.h"
 
 #include <benchmark/benchmark.h>
 
@@ -112,6 +123,55 @@ void clusterSlideBenchmark(benchmark::State& state, const ClusterSize& size)
     setCounters);
 }
 
+// The ensemble and its reference on the 22,188-triangle dumbbell, k = 6.
+constexpr ClusterSize EnsembleSize{ "22k", 43, 2.0 };
+constexpr int EnsembleSegments = 6;
+
+void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly)
+{
+  kerf::benchmarks::RunOnScene(
+    state, []() -> const ClusterScene& { return sceneOfSize(EnsembleSize); },
+    [consensusCutsOnly](benchmark::State& st, const ClusterScene& scene) {
+      int segments = 0;
+      for (auto _ : st)
+      {
+        const kerf::Surface surface(scene.mesh);
+        const std::vector<int> labels = consensusCutsOnly
+          ? kerf::segmentByConsensusCuts(surface, EnsembleSegments, kerf::ConsensusCutOptions()).labels
+          : kerf::segmentByEnsemble(surface, EnsembleSegments, kerf::EnsembleSegmentationOptions()).labels;
+        segments = *std::max_element(labels.begin(), labels.end()) + 1;
+        benchmark::DoNotOptimize(labels.data());
+      }
+      if (segments != EnsembleSegments)
+      {
+        kerf::benchmarks::Fail(st, std::to_string(segments) + " segments, not " + std::to_string(EnsembleSegments));
+      }
+    },
+    setCounters);
+}
+
+void bandCutBenchmark(benchmark::State& state)
+{
+  kerf::benchmarks::RunOnScene(
+    state, []() -> const ClusterScene& { return sceneOfSize(EnsembleSize); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      const kerf::Surface surface(scene.mesh);
+      kerf::EnsembleSegmentationOptions unbanded;
+      unbanded.refinement.bandWidth = 0.0;
+      const std::vector<int> labels = kerf::segmentByEnsemble(surface, EnsembleSegments, unbanded).labels;
+      int moved = 0;
+      for (auto _ : st)
+      {
+        const kerf::BoundaryRefinementResult result =
+          kerf::refineSegmentBoundaries(*scene.graph, labels, kerf::BoundaryRefinementOptions());
+        moved = result.movedFaces;
+        benchmark::DoNotOptimize(result.labels.data());
+      }
+      st.counters["moved"] = moved;
+    },
+    setCounters);
+}
+
 } // namespace
 
 namespace kerf
@@ -121,6 +181,18 @@ namespace benchmarks
 
 void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
 {
+  for (benchmark::internal::Benchmark* registered : {
+         benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false),
+         benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true),
+         benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
+       })
+  {
+    registered->Unit(benchmark::kMillisecond)->UseRealTime();
+    if (useSizeMinimumTimes)
+    {
+      registered->MinTime(EnsembleSize.minimumSeconds);
+    }
+  }
   for (const ClusterSize& size : Sizes)
   {
     const std::string label = size.label;
