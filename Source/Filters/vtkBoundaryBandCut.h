@@ -14,12 +14,15 @@
  *
  * Output: the surface with the re-cut labels in the cell array of the input's name, numbered 0..
  * by first face, every segment one connected set of faces and no more segments than the input
- * had; field data "SegmentCount", "RecutBoundaries" (pairs of segments whose boundary was re-cut)
- * and "MovedFaces" (faces whose segment changed).
+ * had distinct labels (a label in several pieces is split, and the smallest pieces merged into
+ * their neighbours, as every Kerf segmentation ends); with BoundaryBand 0 the labels pass through
+ * as given. Field data "SegmentCount", "RecutBoundaries" (pairs of segments whose boundary was
+ * re-cut) and "MovedFaces" (faces the cuts gave to the other side).
  *
  * Errors (vtkErrorMacro, return 0; the output stays empty): a missing label array, labels that
  * are not integers >= 0, surfaces refused by validation (NaN coordinates, triangles repeating a
- * point), a negative or non-finite BoundaryBand or ConvexWeight.
+ * point, non-manifold edges or vertices, inconsistent orientation), a negative or non-finite
+ * BoundaryBand or ConvexWeight.
  * Documentation/filters/AutomaticSegmentation.md has the details and the measurements.
  */
 #ifndef vtkBoundaryBandCut_h

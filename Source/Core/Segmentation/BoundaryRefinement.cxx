@@ -42,7 +42,8 @@ BoundaryRefinementResult refineSegmentBoundaries(
   {
     return result;
   }
-  const int k = *std::max_element(labels.begin(), labels.end()) + 1;
+  // At most as many segments as the input has labels (they need not be contiguous).
+  const int k = static_cast<int>(std::set<int>(labels.begin(), labels.end()).size());
 
   // Katz and Tal 2003: a dual edge's angular distance, eta (1 - cos alpha), eta < 1 where convex;
   // the cut's capacity falls with it, so boundaries take concave creases.
@@ -137,7 +138,7 @@ BoundaryRefinementResult refineSegmentBoundaries(
         const int g = graph.opposite(e, f);
         if (node[g] >= 0 && static_cast<std::size_t>(node[g]) < freed && g < f)
         {
-          continue; // an edge between freed faces is added from its larger face
+          continue; // an edge between freed faces is added from its smaller face
         }
         if (node[g] < 0)
         {

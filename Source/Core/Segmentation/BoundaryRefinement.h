@@ -23,7 +23,7 @@ struct BoundaryRefinementResult
 {
   std::vector<int> labels; ///< per face, numbered by first face
   int boundaries = 0;      ///< pairs of neighbouring segments whose boundary was re-cut
-  int movedFaces = 0;      ///< faces whose segment changed (before the final clean-up)
+  int movedFaces = 0;      ///< faces the cuts gave to the other side (the clean-up's merges not counted)
 };
 
 /// Throws kerf::Error unless the band and the convex weight are finite and non-negative.
@@ -36,10 +36,15 @@ void checkBoundaryRefinementOptions(const BoundaryRefinementOptions& options);
 /// their sides; a minimum cut (Boykov and Kolmogorov 2004) gives the freed faces to one side or the
 /// other, each dual edge cut costing its mesh edge's length over the mean, divided by 1 + its
 /// angular distance over the mean (1 - cos of the bend, times `convexWeight` where convex). A pair
-/// whose band swallows one of its segments whole keeps its boundary. The result is cleaned up like
-/// every method's (finalizeSegments): connected segments, at most k = the number of input labels.
-/// `labels` must number segments 0..k-1, each face labelled. Deterministic. Throws kerf::Error for
-/// labels of another size or negative, or a negative or non-finite band or weight.
+/// whose band swallows one of its segments whole keeps its boundary (the check is per pair: a piece
+/// of a segment in several pieces that lies inside the band goes to the pair's larger label). The
+/// pairs are those of the input labels; a contact an earlier cut creates is not re-cut. Where cuts
+/// cost the same, the one nearest the smaller label's side is taken. The result is cleaned up like every method's
+/// (finalizeSegments): connected segments, numbered by first face, at most as many as the input
+/// has distinct labels (any non-negative numbers); with `bandWidth` 0 the labels are returned as
+/// given. Cost: per pair, passes over all faces and dual edges and a Dijkstra search within the
+/// band, O(pairs (n + E)) plus the cuts. Deterministic. Throws kerf::Error for labels of another
+/// size or negative, or a negative or non-finite band or weight.
 BoundaryRefinementResult refineSegmentBoundaries(
   const FaceGraph& graph, const std::vector<int>& labels, const BoundaryRefinementOptions& options);
 
