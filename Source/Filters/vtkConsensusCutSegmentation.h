@@ -49,7 +49,7 @@ public:
   ///@}
 
   ///@{
-  /// Never more feature points than this. Default 20.
+  /// Never more feature points than this (every pair gives a field). Default 16.
   vtkSetMacro(MaximumFeaturePoints, int);
   vtkGetMacro(MaximumFeaturePoints, int);
   ///@}
@@ -83,7 +83,7 @@ protected:
 
   int SegmentCount = 6;
   int ExtraFeaturePoints = 8;
-  int MaximumFeaturePoints = 20;
+  int MaximumFeaturePoints = 16;
   double MinimumSegmentArea = 0.01;
   double WalkDepth = 0.3;
   char* SegmentArrayName = nullptr;

@@ -395,6 +395,8 @@ MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*
   options.refinement.bandWidth = parameters.number("band", options.refinement.bandWidth);
   options.refinement.convexWeight = parameters.number("convex-weight", options.refinement.convexWeight);
   options.consensusCuts.walkDepth = parameters.number("walk-depth", options.consensusCuts.walkDepth);
+  options.consensusCuts.maximumFeaturePoints =
+    static_cast<int>(parameters.positive("points", options.consensusCuts.maximumFeaturePoints));
   return { segmentByEnsemble(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
@@ -625,7 +627,7 @@ const std::vector<SegmentationMethod>& segmentationMethods()
     { "ensemble",
       "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on most (evidence accumulation, Fred and Jain 2005)",
       { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "area-weighted", "band", "convex-weight",
-        "walk-depth" },
+        "walk-depth", "points" },
       SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",
