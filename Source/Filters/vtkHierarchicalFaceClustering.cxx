@@ -42,6 +42,12 @@ int vtkHierarchicalFaceClustering::RequestData(
         kerf::HierarchicalClusteringOptions options;
         options.directionWeight = kerf::Finite(this->DirectionWeight, "DirectionWeight");
         options.shapeWeight = kerf::Finite(this->ShapeWeight, "ShapeWeight");
+        if (this->ExactClusterCount < 1 || this->BlockSize < 1)
+        {
+          throw kerf::Error("ExactClusterCount and BlockSize must be at least 1");
+        }
+        options.exactClusterCount = this->ExactClusterCount;
+        options.blockSize = this->BlockSize;
         if (this->SegmentCount < 0)
         {
           throw kerf::Error("SegmentCount must be 0 (cut at MaximumError) or positive");
@@ -74,5 +80,7 @@ void vtkHierarchicalFaceClustering::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumError: " << this->MaximumError << "\n";
   os << indent << "DirectionWeight: " << this->DirectionWeight << "\n";
   os << indent << "ShapeWeight: " << this->ShapeWeight << "\n";
+  os << indent << "ExactClusterCount: " << this->ExactClusterCount << "\n";
+  os << indent << "BlockSize: " << this->BlockSize << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

@@ -4,7 +4,10 @@
 // 99,372 and 1,002,252 triangles):
 //   BM_FaceClusterHierarchy/<size>   kerf::buildFaceClusterHierarchy (the dual graph built
 //                                    outside the timed loop) and a cut at k = 10: the whole
-//                                    method of survey section 3.3 for one k
+//                                    method of survey section 3.3 for one k, with its defaults
+//                                    (at 1M the contractions start in blocks: exactClusterCount)
+//   BM_FaceClusterHierarchyExact/<size>  the same in the paper's greedy order from the first
+//                                    face (exactClusterCount above the face count): the reference
 //   BM_FaceClusterGraph/<size>       kerf::FaceGraph, the dual graph the methods share
 //   BM_FaceClusterSlide/<size>       cutHierarchyAtCount on the built tree for k = 2..21, the
 //                                    cost of sliding k without recomputing
@@ -30,6 +33,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <map>
 #include <memory>
 #include <string>
@@ -71,15 +75,20 @@ void setCounters(benchmark::State& state, const ClusterScene& scene)
   state.counters["triangles"] = scene.mesh.faceCount();
 }
 
-void clusterHierarchyBenchmark(benchmark::State& state, const ClusterSize& size)
+void clusterHierarchyBenchmark(benchmark::State& state, const ClusterSize& size, bool exact)
 {
+  kerf::HierarchicalClusteringOptions options;
+  if (exact)
+  {
+    options.exactClusterCount = std::numeric_limits<int>::max();
+  }
   kerf::benchmarks::RunOnScene(
     state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
-    [](benchmark::State& st, const ClusterScene& scene) {
+    [options](benchmark::State& st, const ClusterScene& scene) {
       std::size_t clusters = 0;
       for (auto _ : st)
       {
-        const kerf::FaceClusterHierarchy tree = kerf::buildFaceClusterHierarchy(*scene.graph, kerf::HierarchicalClusteringOptions());
+        const kerf::FaceClusterHierarchy tree = kerf::buildFaceClusterHierarchy(*scene.graph, options);
         const std::vector<int> labels = kerf::cutHierarchyAtCount(tree, 10);
         clusters = static_cast<std::size_t>(*std::max_element(labels.begin(), labels.end()) + 1);
         benchmark::DoNotOptimize(labels.data());
@@ -197,7 +206,8 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
   {
     const std::string label = size.label;
     for (benchmark::internal::Benchmark* registered : {
-           benchmark::RegisterBenchmark(("BM_FaceClusterHierarchy/" + label).c_str(), clusterHierarchyBenchmark, size),
+           benchmark::RegisterBenchmark(("BM_FaceClusterHierarchy/" + label).c_str(), clusterHierarchyBenchmark, size, false),
+           benchmark::RegisterBenchmark(("BM_FaceClusterHierarchyExact/" + label).c_str(), clusterHierarchyBenchmark, size, true),
            benchmark::RegisterBenchmark(("BM_FaceClusterGraph/" + label).c_str(), clusterGraphBenchmark, size),
            benchmark::RegisterBenchmark(("BM_FaceClusterSlide/" + label).c_str(), clusterSlideBenchmark, size),
          })

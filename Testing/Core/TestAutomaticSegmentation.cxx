@@ -580,6 +580,155 @@ TEST(AutomaticSegmentation, FaceClusterHierarchyFollowsTheReferenceContractionOr
   }
 }
 
+// A closed cube of side 2 with `m` x `m` squares per side, two triangles each, and the side of
+// each triangle (0..5).
+std::pair<TriangleMesh, std::vector<int>> makeSubdividedCube(int m)
+{
+  std::vector<Vector3> points;
+  std::map<std::array<long, 3>, int> index; // integer coordinates 0..m per axis
+  std::vector<Triangle> triangles;
+  std::vector<int> sides;
+  const auto point = [&](std::array<long, 3> c) {
+    const auto found = index.find(c);
+    if (found != index.end())
+    {
+      return found->second;
+    }
+    points.push_back(Vector3(2.0 * c[0] / m - 1.0, 2.0 * c[1] / m - 1.0, 2.0 * c[2] / m - 1.0));
+    return index[c] = static_cast<int>(points.size()) - 1;
+  };
+  for (int side = 0; side < 6; ++side)
+  {
+    const int axis = side / 2, u = (axis + 1) % 3, v = (axis + 2) % 3;
+    const bool high = side % 2 == 1;
+    for (int i = 0; i < m; ++i)
+    {
+      for (int j = 0; j < m; ++j)
+      {
+        std::array<int, 4> corner;
+        for (int c = 0; c < 4; ++c)
+        {
+          std::array<long, 3> at{};
+          at[axis] = high ? m : 0;
+          at[u] = i + (c == 1 || c == 2);
+          at[v] = j + (c >= 2);
+          corner[c] = point(at);
+        }
+        // Outward orientation: (u, v, axis) is right-handed, so the high side keeps the order.
+        if (high)
+        {
+          triangles.push_back({ corner[0], corner[1], corner[2] });
+          triangles.push_back({ corner[0], corner[2], corner[3] });
+        }
+        else
+        {
+          triangles.push_back({ corner[0], corner[2], corner[1] });
+          triangles.push_back({ corner[0], corner[3], corner[2] });
+        }
+        sides.push_back(side);
+        sides.push_back(side);
+      }
+    }
+  }
+  return { TriangleMesh(points, triangles), sides };
+}
+
+// Every node of a merge tree is joined at most once, after it exists; n - c merges for c components.
+void expectCompleteTree(const FaceClusterHierarchy& tree, int components, const std::string& name)
+{
+  const int n = tree.faceCount;
+  ASSERT_EQ(tree.merges.size(), static_cast<std::size_t>(n - components)) << name;
+  std::vector<char> joined(static_cast<std::size_t>(2 * n), 0);
+  for (std::size_t i = 0; i < tree.merges.size(); ++i)
+  {
+    for (int child : tree.merges[i])
+    {
+      ASSERT_GE(child, 0) << name;
+      ASSERT_LT(child, n + static_cast<int>(i)) << name << ": merge " << i << " joins a node made later";
+      ASSERT_FALSE(joined[static_cast<std::size_t>(child)]) << name << ": node " << child << " joined twice";
+      joined[static_cast<std::size_t>(child)] = 1;
+    }
+    EXPECT_TRUE(std::isfinite(tree.costs[i])) << name;
+  }
+}
+
+// Above exactClusterCount faces the contractions start in blocks: the tree stays complete and
+// deterministic, a cube still comes apart into its six sides, a single block gives the tree of
+// the paper's order, and sizes below 1 are refused.
+TEST(AutomaticSegmentation, FaceClusteringInBlocks)
+{
+  const auto [cubeMesh, sides] = makeSubdividedCube(8); // 768 triangles
+  const FaceGraph cube(cubeMesh);
+  HierarchicalClusteringOptions blocked;
+  blocked.blockSize = 64;
+  blocked.exactClusterCount = 96; // 8 clusters left in each block of 64
+  const FaceClusterHierarchy tree = buildFaceClusterHierarchy(cube, blocked);
+  expectCompleteTree(tree, 1, "cube in blocks");
+  const FaceClusterHierarchy again = buildFaceClusterHierarchy(cube, blocked);
+  EXPECT_EQ(again.merges, tree.merges);
+  EXPECT_EQ(again.costs, tree.costs);
+  // The six sides: exactly in the paper's order; in blocks, measured 0.0026 (two triangles on the
+  // wrong side of an edge, where a block's clusters were cut off by its border).
+  const FaceClusterHierarchy exact = buildFaceClusterHierarchy(cube, HierarchicalClusteringOptions());
+  EXPECT_EQ(compareSegmentations(cubeMesh, cutHierarchyAtCount(exact, 6), sides).randIndexError, 0.0);
+  EXPECT_LE(compareSegmentations(cubeMesh, cutHierarchyAtCount(tree, 6), sides).randIndexError, 0.003);
+  // The blocks changed the order: the tree is not the paper's.
+  EXPECT_NE(tree.merges, exact.merges);
+
+  // One block holding every face: the greedy stops at exactClusterCount clusters and starts again
+  // on them, which leaves the paper's order (checked on meshes whose dual graphs are connected).
+  const std::vector<std::pair<std::string, TriangleMesh>> meshes = {
+    { "fingers", makeProtrusions(FingerCount, FingerLength, FingerWidth, 3) },
+    { "lobes", makeDumbbell(LobesHalfLength, LobeRadii, NeckHeight, NeckDepth, 3) },
+  };
+  for (const auto& [name, mesh] : meshes)
+  {
+    const FaceGraph graph(mesh);
+    HierarchicalClusteringOptions oneBlock;
+    oneBlock.blockSize = graph.faceCount();
+    oneBlock.exactClusterCount = graph.faceCount() / 10;
+    const FaceClusterHierarchy restarted = buildFaceClusterHierarchy(graph, oneBlock);
+    const FaceClusterHierarchy plain = buildFaceClusterHierarchy(graph, HierarchicalClusteringOptions());
+    expectCompleteTree(restarted, 1, name);
+    EXPECT_EQ(restarted.merges, plain.merges) << name;
+    ASSERT_EQ(restarted.costs.size(), plain.costs.size()) << name;
+    for (std::size_t i = 0; i < plain.costs.size(); ++i)
+    {
+      ASSERT_NEAR(restarted.costs[i], plain.costs[i], 1e-12 * (1.0 + std::abs(plain.costs[i]))) << name << ", merge " << i;
+    }
+    // Blocks of 64 faces: complete, and the fingers' baseline of the paper's order still holds.
+    HierarchicalClusteringOptions small;
+    small.blockSize = 64;
+    small.exactClusterCount = graph.faceCount() / 8;
+    expectCompleteTree(buildFaceClusterHierarchy(graph, small), 1, name + " in blocks of 64");
+  }
+
+  // Two components, each cut into blocks: one cluster each at the end.
+  std::vector<Vector3> points(cubeMesh.points().begin(), cubeMesh.points().end());
+  std::vector<Triangle> triangles(cubeMesh.triangles().begin(), cubeMesh.triangles().end());
+  const int offset = static_cast<int>(points.size());
+  for (const Vector3& p : cubeMesh.points())
+  {
+    points.push_back(p + Vector3(5.0, 0.0, 0.0));
+  }
+  for (const Triangle& t : cubeMesh.triangles())
+  {
+    triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const TriangleMesh twoCubes(points, triangles);
+  expectCompleteTree(buildFaceClusterHierarchy(FaceGraph(twoCubes), blocked), 2, "two cubes in blocks");
+
+  for (const int bad : { 0, -1 })
+  {
+    HierarchicalClusteringOptions refused;
+    refused.exactClusterCount = bad;
+    EXPECT_THROW(buildFaceClusterHierarchy(cube, refused), Error);
+    refused = HierarchicalClusteringOptions();
+    refused.blockSize = bad;
+    EXPECT_THROW(buildFaceClusterHierarchy(cube, refused), Error);
+  }
+}
+
 // The ensemble: its members' votes on the three shapes (thresholds: measured, with a small margin).
 TEST(AutomaticSegmentation, EnsembleOnTheThreeShapes)
 {

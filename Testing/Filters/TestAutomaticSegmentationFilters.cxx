@@ -326,6 +326,13 @@ int TestAutomaticSegmentationFilters(int, char*[])
   ok &= CheckSegmentation("Watershed", cube, Maker<vtkWatershedSegmentation>([](vtkWatershedSegmentation*) {}), 6, 0.0);
   ok &= CheckSegmentation("Hierarchical Face Clustering", cube,
     Maker<vtkHierarchicalFaceClustering>([](vtkHierarchicalFaceClustering* f) { f->SetSegmentCount(6); }), 6, 0.0);
+  ok &= CheckSegmentation("Hierarchical Face Clustering in blocks", cube,
+    Maker<vtkHierarchicalFaceClustering>([](vtkHierarchicalFaceClustering* f) {
+      f->SetSegmentCount(6);
+      f->SetExactClusterCount(24);
+      f->SetBlockSize(32);
+    }),
+    6, 0.0);
   ok &= CheckSegmentation("K-Means", cube,
     Maker<vtkKMeansSegmentation>([](vtkKMeansSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
   ok &= CheckSegmentation("Spectral", cube,
@@ -362,6 +369,12 @@ int TestAutomaticSegmentationFilters(int, char*[])
   vtkNew<vtkHierarchicalFaceClustering> negative;
   negative->SetSegmentCount(-1);
   ok &= CheckRefused(negative, cube.surface, "SegmentCount");
+  negative->SetSegmentCount(6);
+  negative->SetExactClusterCount(0);
+  ok &= CheckRefused(negative, cube.surface, "ExactClusterCount");
+  negative->SetExactClusterCount(100);
+  negative->SetBlockSize(0);
+  ok &= CheckRefused(negative, cube.surface, "BlockSize");
   vtkNew<vtkSpectralSegmentation> spectral;
   spectral->SetPatchCount(1);
   ok &= CheckRefused(spectral, cube.surface, "patch");

@@ -344,6 +344,8 @@ MethodOutput segmentByFaceClustering(const BenchmarkCase& c, const std::vector<i
   HierarchicalClusteringOptions options;
   options.directionWeight = parameters.positive("a1", options.directionWeight);
   options.shapeWeight = parameters.positive("a2", options.shapeWeight);
+  options.exactClusterCount = static_cast<int>(std::min(parameters.positive("exact", options.exactClusterCount), 2147483647.0));
+  options.blockSize = static_cast<int>(std::min(parameters.positive("block", options.blockSize), 2147483647.0));
   return { cutHierarchyAtCount(faceClusterHierarchy(*c.surface, options), requestedSegments(c)), 0 };
 }
 
@@ -614,7 +616,7 @@ const std::vector<SegmentationMethod>& segmentationMethods()
     { "watershed", "edge watershed of 1 - cos(dihedral angle), basins merged by depth down to k",
       { "depth" }, SegmentationMethod::Protocol::Automatic, segmentWithWatershed },
     { "face-clustering", "Garland et al. 2001's hierarchical face clustering cut at k clusters",
-      { "a1", "a2" }, SegmentationMethod::Protocol::Automatic, segmentByFaceClustering },
+      { "a1", "a2", "exact", "block" }, SegmentationMethod::Protocol::Automatic, segmentByFaceClustering },
     { "k-means", "Shlafman et al. 2002's k-means face clustering on the dual graph",
       { "delta" }, SegmentationMethod::Protocol::Automatic, segmentWithKMeans },
     { "spectral", "Liu and Zhang 2004's spectral clustering on a coarsened patch graph",

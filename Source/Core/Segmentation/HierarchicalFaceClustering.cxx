@@ -9,14 +9,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
+#include <queue>
 
 namespace kerf
 {
 
 std::string cacheKey(const HierarchicalClusteringOptions& options)
 {
-  return "a1=" + cacheKey(options.directionWeight) + " a2=" + cacheKey(options.shapeWeight);
+  return "a1=" + cacheKey(options.directionWeight) + " a2=" + cacheKey(options.shapeWeight) +
+    " exact=" + std::to_string(options.exactClusterCount) + " block=" + std::to_string(options.blockSize);
 }
 
 namespace
@@ -93,7 +96,8 @@ double contractionCost(const ClusterState& x, const ClusterState& y, double shar
 // By Lagrange duality (the trust-region subproblem; More and Sorensen 1983), every mu with D - mu I
 // positive definite gives f + mu - e^T (D - mu I)^{-1} e below it; mu follows More and Sorensen's
 // Newton iteration on 1 / |(D - mu I)^{-1} e| = 1 from the left, where each iterate is such a mu.
-// The factorization is backward stable, so the rounding stays near eps (f + |mu|), far below the margin.
+// The factorization (with reciprocal pivots) is backward stable, so the rounding stays near
+// eps (f + |mu|), far below the margin.
 double directionQuadricMinimumBound(const Eigen::Matrix3d& D, const Vector3& e, double f)
 {
   const double eNorm = e.norm();
@@ -111,30 +115,32 @@ double directionQuadricMinimumBound(const Eigen::Matrix3d& D, const Vector3& e, 
     {
       break;
     }
-    const double l00 = std::sqrt(m00), l10 = D(1, 0) / l00, l20 = D(2, 0) / l00;
+    const double l00 = std::sqrt(m00), r00 = 1.0 / l00, l10 = D(1, 0) * r00, l20 = D(2, 0) * r00;
     const double m11 = D(1, 1) - mu - l10 * l10;
     if (!(m11 > 0.0))
     {
       break;
     }
-    const double l11 = std::sqrt(m11), l21 = (D(2, 1) - l20 * l10) / l11;
+    const double l11 = std::sqrt(m11), r11 = 1.0 / l11, l21 = (D(2, 1) - l20 * l10) * r11;
     const double m22 = D(2, 2) - mu - l20 * l20 - l21 * l21;
     if (!(m22 > 0.0))
     {
       break;
     }
-    const double l22 = std::sqrt(m22);
+    const double r22 = 1.0 / std::sqrt(m22);
     // z = L^{-1} e, so e^T (D - mu I)^{-1} e = |z|^2; y = L^{-T} z.
-    const double z0 = e(0) / l00, z1 = (e(1) - l10 * z0) / l11, z2 = (e(2) - l20 * z0 - l21 * z1) / l22;
+    const double z0 = e(0) * r00, z1 = (e(1) - l10 * z0) * r11, z2 = (e(2) - l20 * z0 - l21 * z1) * r22;
     best = std::max(best, f + mu - (z0 * z0 + z1 * z1 + z2 * z2) - 1e-10 * (f + std::abs(mu)));
-    const double y2 = z2 / l22, y1 = (z1 - l21 * y2) / l11, y0 = (z0 - l10 * y1 - l20 * y2) / l00;
+    const double y2 = z2 * r22, y1 = (z1 - l21 * y2) * r11, y0 = (z0 - l10 * y1 - l20 * y2) * r00;
     const double yNorm = std::sqrt(y0 * y0 + y1 * y1 + y2 * y2);
-    if (std::abs(yNorm - 1.0) < 1e-9)
+    // Near |y| = 1 the dual value is flat (its derivative is 1 - |y|^2): stopping at 1e-3 loses
+    // about 1e-6 of |mu|, which costs no measurable cost evaluations.
+    if (std::abs(yNorm - 1.0) < 1e-3)
     {
       break;
     }
     // q = L^{-1} y; the Newton step of More and Sorensen (1983), equation 3.5 (lambda = -mu).
-    const double q0 = y0 / l00, q1 = (y1 - l10 * q0) / l11, q2 = (y2 - l20 * q0 - l21 * q1) / l22;
+    const double q0 = y0 * r00, q1 = (y1 - l10 * q0) * r11, q2 = (y2 - l20 * q0 - l21 * q1) * r22;
     mu -= (yNorm * yNorm / (q0 * q0 + q1 * q1 + q2 * q2)) * (yNorm - 1.0);
   }
   return best;
@@ -213,6 +219,14 @@ public:
     : Position(static_cast<std::size_t>(pairCount), -1)
   {
     this->Entries.reserve(static_cast<std::size_t>(pairCount));
+  }
+
+  /// Empties the heap for `pairCount` pairs, keeping its buffers.
+  void reset(int pairCount)
+  {
+    this->Entries.clear();
+    this->Entries.reserve(static_cast<std::size_t>(pairCount));
+    this->Position.assign(static_cast<std::size_t>(pairCount), -1);
   }
 
   bool empty() const { return this->Entries.empty(); }
@@ -349,6 +363,269 @@ std::vector<int> applyMerges(const FaceClusterHierarchy& hierarchy, std::size_t 
   }
   return numberByFirstFace(labels);
 }
+
+// One pair of adjacent clusters before contraction starts: slots x < y and their shared boundary.
+struct PairSeed
+{
+  int x, y;
+  double length;
+};
+
+// One contraction: the surviving slot, the absorbed one, and E.
+struct Contraction
+{
+  int keep, gone;
+  double cost;
+};
+
+// The greedy contraction of Garland et al. (2001) on clusters 0..s-1 (their states and summaries,
+// edited in place) joined by `seeds`: the least (cost, x, y) pair is contracted until `mergeLimit`
+// contractions are done, the least cost exceeds `costLimit`, or no pair is left. Buffers are kept
+// between runs (the blocks of a build).
+class ContractionRun
+{
+public:
+  long long evaluations = 0;
+  /// Keep the buffers of absorbed clusters' neighbour lists for the next run (small runs).
+  bool keepLists = false;
+
+  void run(HugePageVector<ClusterState>& clusters, HugePageVector<ClusterSummary>& summaries,
+    const HugePageVector<PairSeed>& seeds, std::size_t mergeLimit, double costLimit,
+    const HierarchicalClusteringOptions& options, HugePageVector<Contraction>& merges)
+  {
+    const int n = static_cast<int>(clusters.size());
+    // One record per pair of adjacent clusters, made from a seed; when a cluster is absorbed its
+    // records pass to the survivor, or fold into the survivor's record with the same neighbour.
+    HugePageVector<ClusterPair>& pairs = this->Pairs;
+    pairs.clear();
+    pairs.reserve(seeds.size());
+    if (this->Adjacency.size() < static_cast<std::size_t>(n))
+    {
+      this->Adjacency.resize(static_cast<std::size_t>(n));
+      this->NeighbourPair.resize(static_cast<std::size_t>(n), -1);
+      this->Mark.resize(static_cast<std::size_t>(n), -1);
+    }
+    std::vector<std::vector<int>>& adjacency = this->Adjacency; // the pairs of each cluster
+    for (int s = 0; s < n; ++s)
+    {
+      adjacency[s].clear();
+    }
+    const auto other = [&pairs](int pair, int slot) { return pairs[pair].x == slot ? pairs[pair].y : pairs[pair].x; };
+    for (const PairSeed& seed : seeds)
+    {
+      const int x = seed.x, y = seed.y;
+      // Two faces with two or three common edges (a closed pair of triangles) form one pair.
+      const auto twin = std::find_if(adjacency[x].begin(), adjacency[x].end(), [&](int q) { return other(q, x) == y; });
+      if (twin != adjacency[x].end())
+      {
+        pairs[*twin].length += seed.length;
+        continue;
+      }
+      adjacency[x].push_back(static_cast<int>(pairs.size()));
+      adjacency[y].push_back(static_cast<int>(pairs.size()));
+      pairs.push_back({ x, y, seed.length, 0.0, 0.0, false });
+    }
+
+    // Costs are evaluated lazily: a pair enters the heap keyed on a lower bound of its cost, which
+    // is computed only when the bound reaches the top. The popped exact entry is then the least
+    // (cost, x, y) of all pairs, as if every cost had been computed.
+    const auto bound = [&](int q) {
+      ClusterPair& p = pairs[q];
+      p.key = contractionCostLowerBound(summaries[p.x], summaries[p.y], p.length, options);
+      p.exact = false;
+      return PairHeap::Entry{ p.key, p.x, p.y, q };
+    };
+    PairHeap& heap = this->Heap;
+    heap.reset(static_cast<int>(pairs.size()));
+    for (int q = 0; q < static_cast<int>(pairs.size()); ++q)
+    {
+      heap.append(bound(q));
+    }
+    heap.heapify();
+
+    // For each neighbour of the surviving cluster, its pair with it, valid while mark == stamp.
+    std::vector<int>& neighbourPair = this->NeighbourPair;
+    std::vector<int>& mark = this->Mark;
+    std::size_t done = 0;
+    while (!heap.empty() && done < mergeLimit)
+    {
+      const int top = heap.top().pair;
+      ClusterPair& contracted = pairs[top];
+      if (!contracted.exact)
+      {
+        contracted.key = contractionCost(clusters[contracted.x], clusters[contracted.y], contracted.length, options,
+          contracted.smallestEigenvalue);
+        contracted.exact = true;
+        ++this->evaluations;
+        heap.update({ contracted.key, contracted.x, contracted.y, top });
+        continue;
+      }
+      if (contracted.key > costLimit)
+      {
+        break;
+      }
+      heap.remove(top);
+      // The larger neighbour list survives (ties: the smaller slot), so lists are copied
+      // O(n log n) times in all.
+      int keep = contracted.x, gone = contracted.y;
+      if (adjacency[gone].size() > adjacency[keep].size())
+      {
+        std::swap(keep, gone);
+      }
+      const double shared = contracted.length;
+      const int stamp = this->Stamp++;
+      ++done;
+      merges.push_back({ keep, gone, contracted.key });
+      clusters[keep].add(clusters[gone]);
+      clusters[keep].perimeter = clusters[keep].perimeter + clusters[gone].perimeter - 2.0 * shared;
+      summaries[keep] = ClusterSummary(clusters[keep], contracted.smallestEigenvalue,
+        directionQuadricMinimumBound(clusters[keep].D, clusters[keep].e, clusters[keep].f));
+
+      // The neighbours of `keep`, without the contracted pair.
+      std::vector<int>& kept = adjacency[keep];
+      kept.erase(std::find(kept.begin(), kept.end(), top));
+      for (int q : kept)
+      {
+        const int m = other(q, keep);
+        neighbourPair[m] = q;
+        mark[m] = stamp;
+      }
+      // The neighbours of `gone` now see `keep`: a common neighbour's two pairs fold into one.
+      for (int q : adjacency[gone])
+      {
+        if (q == top)
+        {
+          continue;
+        }
+        const int m = other(q, gone);
+        if (mark[m] == stamp)
+        {
+          ClusterPair& common = pairs[neighbourPair[m]];
+          common.length = common.length + pairs[q].length;
+          heap.remove(q);
+          std::vector<int>& list = adjacency[m];
+          *std::find(list.begin(), list.end(), q) = list.back();
+          list.pop_back();
+        }
+        else
+        {
+          pairs[q].x = std::min(keep, m);
+          pairs[q].y = std::max(keep, m);
+          kept.push_back(q);
+        }
+      }
+      if (this->keepLists)
+      {
+        adjacency[gone].clear(); // its buffer serves the next run
+      }
+      else
+      {
+        std::vector<int>().swap(adjacency[gone]);
+      }
+      // `keep` changed, so every cost of its pairs did.
+      for (int q : kept)
+      {
+        heap.update(bound(q));
+      }
+    }
+  }
+
+private:
+  struct ClusterPair
+  {
+    int x, y;                  // cluster slots, x < y
+    double length;             // shared boundary
+    double key;                // the cost if exact, else a lower bound of it
+    double smallestEigenvalue; // of the joined Z, once the cost is exact
+    bool exact;
+  };
+  HugePageVector<ClusterPair> Pairs;
+  std::vector<std::vector<int>> Adjacency;
+  PairHeap Heap{ 0 };
+  std::vector<int> NeighbourPair, Mark;
+  int Stamp = 0;
+};
+
+// A face as a cluster: its corners' fit quadric (positions moved by `centre` and scaled by `scale`)
+// and its area-weighted normal's direction quadric (Garland et al. 2001, section 3).
+ClusterState faceCluster(const FaceGraph& graph, int f, const Vector3& centre, double scale)
+{
+  const TriangleMesh& mesh = graph.mesh();
+  ClusterState s;
+  for (int v : mesh.triangle(f))
+  {
+    const Vector3 p = (mesh.point(v) - centre) * scale;
+    s.A += p * p.transpose();
+    s.b += p;
+    s.c += 1.0;
+  }
+  const double w = graph.area(f) * scale * scale;
+  const Vector3& normal = graph.normal(f);
+  s.D = w * normal * normal.transpose();
+  s.e = -w * normal;
+  s.f = w;
+  s.area = w;
+  s.perimeter = graph.perimeter(f) * scale;
+  return s;
+}
+
+// Appends a contraction of slots keep and gone to the tree, `node` holding each slot's tree node.
+void record(FaceClusterHierarchy& hierarchy, HugePageVector<int>& node, int keep, int gone, double cost)
+{
+  const int n = hierarchy.faceCount;
+  hierarchy.merges.push_back({ { std::min(node[keep], node[gone]), std::max(node[keep], node[gone]) } });
+  hierarchy.costs.push_back(cost);
+  node[keep] = n + static_cast<int>(hierarchy.merges.size()) - 1;
+}
+
+// One block in this many is contracted first to set the blocks' common cost threshold.
+constexpr std::size_t BlockSampleStride = 16;
+
+// Blocks of about `size` faces grown breadth-first over the dual graph from the smallest face
+// not yet taken: each block's faces in increasing order, blocks in order of their first seed.
+std::vector<std::vector<int>> growBlocks(const FaceGraph& graph, int size)
+{
+  const int n = graph.faceCount();
+  std::vector<int> blockOf(static_cast<std::size_t>(n), -1);
+  std::vector<int> sizes;
+  std::vector<int> queue;
+  queue.reserve(static_cast<std::size_t>(size));
+  for (int seed = 0; seed < n; ++seed)
+  {
+    if (blockOf[seed] >= 0)
+    {
+      continue;
+    }
+    const int block = static_cast<int>(sizes.size());
+    queue.clear();
+    queue.push_back(seed);
+    blockOf[seed] = block;
+    for (std::size_t head = 0; head < queue.size() && static_cast<int>(queue.size()) < size; ++head)
+    {
+      for (int e : graph.faceEdges(queue[head]))
+      {
+        const int g = e < 0 ? -1 : graph.opposite(e, queue[head]);
+        if (g >= 0 && blockOf[g] < 0 && static_cast<int>(queue.size()) < size)
+        {
+          blockOf[g] = block;
+          queue.push_back(g);
+        }
+      }
+    }
+    sizes.push_back(static_cast<int>(queue.size()));
+  }
+  std::vector<std::vector<int>> blocks(sizes.size());
+  for (std::size_t b = 0; b < sizes.size(); ++b)
+  {
+    blocks[b].reserve(static_cast<std::size_t>(sizes[b]));
+  }
+  for (int f = 0; f < n; ++f)
+  {
+    blocks[static_cast<std::size_t>(blockOf[f])].push_back(f);
+  }
+  return blocks;
+}
+
 } // namespace
 
 FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const HierarchicalClusteringOptions& options)
@@ -357,6 +634,10 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     !std::isfinite(options.shapeWeight))
   {
     throw Error("the clustering weights must be finite and non-negative");
+  }
+  if (options.exactClusterCount < 1 || options.blockSize < 1)
+  {
+    throw Error("the exact cluster count and the block size must be at least 1");
   }
   const TriangleMesh& mesh = graph.mesh();
   const int n = graph.faceCount();
@@ -379,154 +660,240 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   const Vector3 centre = 0.5 * (low + high);
   const double diagonal = (high - low).norm();
   const double scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
-  const double lengthScale = scale;
-
-  // The work buffers take huge pages (HugePages.h): at a million faces they fault in about 500 MB.
-  HugePageVector<ClusterState> clusters(n);
-  for (int f = 0; f < n; ++f)
-  {
-    ClusterState& s = clusters[f];
-    for (int v : mesh.triangle(f))
-    {
-      const Vector3 p = (mesh.point(v) - centre) * scale;
-      s.A += p * p.transpose();
-      s.b += p;
-      s.c += 1.0;
-    }
-    const double w = graph.area(f) * scale * scale;
-    const Vector3& normal = graph.normal(f);
-    s.D = w * normal * normal.transpose();
-    s.e = -w * normal;
-    s.f = w;
-    s.area = w;
-    s.perimeter = graph.perimeter(f) * lengthScale;
-  }
-  HugePageVector<ClusterSummary> summaries(clusters.begin(), clusters.end());
-
-  // One record per pair of adjacent clusters, made from a dual edge; when a cluster is absorbed its
-  // records pass to the survivor, or fold into the survivor's record with the same neighbour.
-  struct ClusterPair
-  {
-    int x, y;                  // cluster slots, x < y
-    double length;             // shared boundary
-    double key;                // the cost if exact, else a lower bound of it
-    double smallestEigenvalue; // of the joined Z, once the cost is exact
-    bool exact;
-  };
-  HugePageVector<ClusterPair> pairs;
-  pairs.reserve(static_cast<std::size_t>(graph.edgeCount()));
-  std::vector<std::vector<int>> adjacency(n); // the pairs of each cluster
-  const auto other = [&pairs](int pair, int slot) { return pairs[pair].x == slot ? pairs[pair].y : pairs[pair].x; };
-  for (int e = 0; e < graph.edgeCount(); ++e)
-  {
-    const DualEdge& dual = graph.edge(e);
-    const int x = dual.faces[0], y = dual.faces[1];
-    const double length = dual.length * lengthScale;
-    // Two faces with two or three common edges (a closed pair of triangles) form one pair.
-    const auto twin = std::find_if(adjacency[x].begin(), adjacency[x].end(), [&](int q) { return other(q, x) == y; });
-    if (twin != adjacency[x].end())
-    {
-      pairs[*twin].length += length;
-      continue;
-    }
-    adjacency[x].push_back(static_cast<int>(pairs.size()));
-    adjacency[y].push_back(static_cast<int>(pairs.size()));
-    pairs.push_back({ x, y, length, 0.0, 0.0, false });
-  }
-
-  // Costs are evaluated lazily: a pair enters the heap keyed on a lower bound of its cost, which
-  // is computed only when the bound reaches the top. The popped exact entry is then the least
-  // (cost, x, y) of all pairs, as if every cost had been computed.
-  const auto bound = [&](int q) {
-    ClusterPair& p = pairs[q];
-    p.key = contractionCostLowerBound(summaries[p.x], summaries[p.y], p.length, options);
-    p.exact = false;
-    return PairHeap::Entry{ p.key, p.x, p.y, q };
-  };
-  PairHeap heap(static_cast<int>(pairs.size()));
-  for (int q = 0; q < static_cast<int>(pairs.size()); ++q)
-  {
-    heap.append(bound(q));
-  }
-  heap.heapify();
-
-  std::vector<int> node(n);
-  std::iota(node.begin(), node.end(), 0);
-  // For each neighbour of the surviving cluster, its pair with it, valid while mark == merge index.
-  std::vector<int> neighbourPair(n, -1), mark(n, -1);
   hierarchy.merges.reserve(static_cast<std::size_t>(n) - 1);
   hierarchy.costs.reserve(static_cast<std::size_t>(n) - 1);
-  while (!heap.empty())
-  {
-    const int top = heap.top().pair;
-    ClusterPair& contracted = pairs[top];
-    if (!contracted.exact)
-    {
-      contracted.key = contractionCost(clusters[contracted.x], clusters[contracted.y], contracted.length, options,
-        contracted.smallestEigenvalue);
-      contracted.exact = true;
-      ++hierarchy.costEvaluations;
-      heap.update({ contracted.key, contracted.x, contracted.y, top });
-      continue;
-    }
-    heap.remove(top);
-    // The larger neighbour list survives (ties: the smaller slot), so lists are copied
-    // O(n log n) times in all.
-    int keep = contracted.x, gone = contracted.y;
-    if (adjacency[gone].size() > adjacency[keep].size())
-    {
-      std::swap(keep, gone);
-    }
-    const double shared = contracted.length;
-    const int mergeIndex = static_cast<int>(hierarchy.merges.size());
-    hierarchy.merges.push_back({ { std::min(node[keep], node[gone]), std::max(node[keep], node[gone]) } });
-    hierarchy.costs.push_back(contracted.key);
-    node[keep] = n + mergeIndex;
-    clusters[keep].add(clusters[gone]);
-    clusters[keep].perimeter = clusters[keep].perimeter + clusters[gone].perimeter - 2.0 * shared;
-    summaries[keep] = ClusterSummary(clusters[keep], contracted.smallestEigenvalue,
-      directionQuadricMinimumBound(clusters[keep].D, clusters[keep].e, clusters[keep].f));
+  HugePageVector<int> node(n);
+  std::iota(node.begin(), node.end(), 0);
+  ContractionRun contraction;
+  HugePageVector<Contraction> merges;
 
-    // The neighbours of `keep`, without the contracted pair.
-    std::vector<int>& kept = adjacency[keep];
-    kept.erase(std::find(kept.begin(), kept.end(), top));
-    for (int q : kept)
+  if (n <= options.exactClusterCount)
+  {
+    // The work buffers take huge pages (HugePages.h): at a million faces they fault in about 500 MB.
+    HugePageVector<ClusterState> clusters(n);
+    for (int f = 0; f < n; ++f)
     {
-      const int m = other(q, keep);
-      neighbourPair[m] = q;
-      mark[m] = mergeIndex;
+      clusters[f] = faceCluster(graph, f, centre, scale);
     }
-    // The neighbours of `gone` now see `keep`: a common neighbour's two pairs fold into one.
-    for (int q : adjacency[gone])
+    HugePageVector<ClusterSummary> summaries(clusters.begin(), clusters.end());
+    HugePageVector<PairSeed> seeds;
+    seeds.reserve(static_cast<std::size_t>(graph.edgeCount()));
+    for (const DualEdge& dual : graph.edges())
     {
-      if (q == top)
+      seeds.push_back({ dual.faces[0], dual.faces[1], dual.length * scale });
+    }
+    merges.reserve(static_cast<std::size_t>(n) - 1);
+    contraction.run(clusters, summaries, seeds, static_cast<std::size_t>(n), std::numeric_limits<double>::infinity(), options, merges);
+    for (const Contraction& m : merges)
+    {
+      record(hierarchy, node, m.keep, m.gone, m.cost);
+    }
+    hierarchy.costEvaluations = contraction.evaluations;
+    return hierarchy;
+  }
+
+  // Above exactClusterCount faces the contractions start inside blocks of nearby faces, each
+  // greedy on the pairs within it, until its least cost exceeds a threshold common to all blocks
+  // or it is down to half its share of exactClusterCount (so that a smooth block is not merged
+  // into block-shaped clusters). The threshold is the cost at which blocks sampled evenly (one in
+  // BlockSampleStride), contracted down to that floor, would leave their share: a block with sharp
+  // features keeps more clusters, a smooth one fewer, as in the greedy over the whole mesh. The
+  // greedy then runs on all clusters left.
+  const std::vector<std::vector<int>> blocks = growBlocks(graph, options.blockSize);
+  merges.reserve(static_cast<std::size_t>(n) - 1);
+  const auto floorOf = [&](const std::vector<int>& block) {
+    const long long size = static_cast<long long>(block.size());
+    const long long share = (size * options.exactClusterCount + n - 1) / n; // rounded up
+    return static_cast<int>(std::clamp((share + 1) / 2, 1LL, size));
+  };
+  HugePageVector<int> local(n, -1);
+  HugePageVector<ClusterState> blockClusters;
+  HugePageVector<ClusterSummary> blockSummaries;
+  HugePageVector<PairSeed> blockSeeds;
+  contraction.keepLists = true;
+  // Contracts one block (local slots in face order); its contractions are appended to `merges` in
+  // local slots.
+  const auto contractBlock = [&](const std::vector<int>& block, double costLimit) {
+    const int size = static_cast<int>(block.size());
+    blockClusters.resize(block.size());
+    blockSummaries.resize(block.size());
+    for (int i = 0; i < size; ++i)
+    {
+      local[block[i]] = i;
+      blockClusters[i] = faceCluster(graph, block[i], centre, scale);
+      blockSummaries[i] = ClusterSummary(blockClusters[i]);
+    }
+    blockSeeds.clear();
+    for (int i = 0; i < size; ++i)
+    {
+      for (int e : graph.faceEdges(block[i]))
       {
-        continue;
-      }
-      const int m = other(q, gone);
-      if (mark[m] == mergeIndex)
-      {
-        ClusterPair& common = pairs[neighbourPair[m]];
-        common.length = common.length + pairs[q].length;
-        heap.remove(q);
-        std::vector<int>& list = adjacency[m];
-        *std::find(list.begin(), list.end(), q) = list.back();
-        list.pop_back();
-      }
-      else
-      {
-        pairs[q].x = std::min(keep, m);
-        pairs[q].y = std::max(keep, m);
-        kept.push_back(q);
+        const int g = e < 0 ? -1 : graph.opposite(e, block[i]);
+        if (g > block[i] && local[g] >= 0)
+        {
+          blockSeeds.push_back({ i, local[g], graph.edge(e).length * scale });
+        }
       }
     }
-    std::vector<int>().swap(adjacency[gone]);
-    // `keep` changed, so every cost of its pairs did.
-    for (int q : kept)
+    for (int i = 0; i < size; ++i)
     {
-      heap.update(bound(q));
+      local[block[i]] = -1;
+    }
+    contraction.run(blockClusters, blockSummaries, blockSeeds, static_cast<std::size_t>(size - floorOf(block)),
+      costLimit, options, merges);
+  };
+
+  // The threshold, from the sampled blocks' running maxima of cost.
+  double threshold = std::numeric_limits<double>::infinity();
+  {
+    std::vector<double> runningMaxima;
+    long long sampledFaces = 0, sampledShare = 0;
+    for (std::size_t b = 0; b < blocks.size(); b += BlockSampleStride)
+    {
+      merges.clear();
+      contractBlock(blocks[b], std::numeric_limits<double>::infinity());
+      double runningMax = -std::numeric_limits<double>::infinity();
+      for (const Contraction& m : merges)
+      {
+        runningMax = std::max(runningMax, m.cost);
+        runningMaxima.push_back(runningMax);
+      }
+      sampledFaces += static_cast<long long>(blocks[b].size());
+      sampledShare += (static_cast<long long>(blocks[b].size()) * options.exactClusterCount + n - 1) / n;
+    }
+    merges.clear();
+    const long long needed = sampledFaces - sampledShare; // contractions that leave the sample's share
+    if (needed > 0 && needed <= static_cast<long long>(runningMaxima.size()))
+    {
+      std::nth_element(runningMaxima.begin(), runningMaxima.begin() + (needed - 1), runningMaxima.end());
+      threshold = runningMaxima[static_cast<std::size_t>(needed - 1)];
     }
   }
+
+  HugePageVector<int> parent(n); // slot -> the slot it was absorbed into (itself while alive)
+  std::iota(parent.begin(), parent.end(), 0);
+  std::vector<int> survivors;
+  HugePageVector<ClusterState> survivorClusters;
+  HugePageVector<ClusterSummary> survivorSummaries;
+  std::vector<std::size_t> blockEnd; // per block, the end of its contractions in `merges`
+  {
+    std::vector<char> absorbed;
+    for (const std::vector<int>& block : blocks)
+    {
+      const std::size_t first = merges.size();
+      contractBlock(block, threshold);
+      absorbed.assign(block.size(), 0);
+      for (std::size_t i = first; i < merges.size(); ++i)
+      {
+        Contraction& m = merges[i];
+        absorbed[m.gone] = 1;
+        m.keep = block[m.keep];
+        m.gone = block[m.gone];
+        parent[m.gone] = m.keep;
+      }
+      blockEnd.push_back(merges.size());
+      for (std::size_t i = 0; i < block.size(); ++i)
+      {
+        if (!absorbed[i])
+        {
+          survivors.push_back(block[i]);
+          survivorClusters.push_back(blockClusters[i]);
+          survivorSummaries.push_back(blockSummaries[i]);
+        }
+      }
+    }
+  }
+  // The blocks' contractions into the tree by their running maxima of cost (each block in its order).
+  {
+    using Next = std::pair<double, std::size_t>; // (running maximum, block)
+    std::priority_queue<Next, std::vector<Next>, std::greater<Next>> next;
+    std::vector<std::size_t> position(blocks.size());
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+    {
+      position[b] = b == 0 ? 0 : blockEnd[b - 1];
+      if (position[b] < blockEnd[b])
+      {
+        next.push({ merges[position[b]].cost, b });
+      }
+    }
+    while (!next.empty())
+    {
+      const auto [level, b] = next.top();
+      next.pop();
+      const Contraction& m = merges[position[b]++];
+      record(hierarchy, node, m.keep, m.gone, m.cost);
+      if (position[b] < blockEnd[b])
+      {
+        next.push({ std::max(level, merges[position[b]].cost), b });
+      }
+    }
+  }
+  // The clusters left, numbered in slot order, and their pairs (boundary lengths summed over dual
+  // edges in edge order).
+  std::vector<int> order(survivors.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return survivors[a] < survivors[b]; });
+  HugePageVector<ClusterState> clusters(survivors.size());
+  HugePageVector<ClusterSummary> summaries(survivors.size());
+  HugePageVector<int> rank(n, -1);
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    clusters[i] = survivorClusters[order[i]];
+    summaries[i] = survivorSummaries[order[i]];
+    rank[survivors[order[i]]] = static_cast<int>(i);
+  }
+  survivorClusters = {};
+  survivorSummaries = {};
+  const auto find = [&parent](int f) {
+    int root = f;
+    while (parent[root] != root)
+    {
+      root = parent[root];
+    }
+    while (parent[f] != root)
+    {
+      const int up = parent[f];
+      parent[f] = root;
+      f = up;
+    }
+    return root;
+  };
+  struct Crossing
+  {
+    int x, y, edge;
+  };
+  HugePageVector<Crossing> crossings;
+  for (int e = 0; e < graph.edgeCount(); ++e)
+  {
+    const int a = rank[find(graph.edge(e).faces[0])], b = rank[find(graph.edge(e).faces[1])];
+    if (a != b)
+    {
+      crossings.push_back({ std::min(a, b), std::max(a, b), e });
+    }
+  }
+  std::sort(crossings.begin(), crossings.end(),
+    [](const Crossing& p, const Crossing& q) { return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.edge < q.edge); });
+  HugePageVector<PairSeed> seeds;
+  for (const Crossing& c : crossings)
+  {
+    const double length = graph.edge(c.edge).length * scale;
+    if (!seeds.empty() && seeds.back().x == c.x && seeds.back().y == c.y)
+    {
+      seeds.back().length += length;
+    }
+    else
+    {
+      seeds.push_back({ c.x, c.y, length });
+    }
+  }
+  const std::size_t first = merges.size();
+  contraction.keepLists = false;
+  contraction.run(clusters, summaries, seeds, clusters.size(), std::numeric_limits<double>::infinity(), options, merges);
+  for (std::size_t i = first; i < merges.size(); ++i)
+  {
+    record(hierarchy, node, survivors[order[merges[i].keep]], survivors[order[merges[i].gone]], merges[i].cost);
+  }
+  hierarchy.costEvaluations = contraction.evaluations;
   return hierarchy;
 }
 

@@ -22,6 +22,17 @@ struct HierarchicalClusteringOptions
   /// squares of one plane into a 2:1 rectangle (E_shape = 0.11) costs more than joining faces
   /// across a right-angled crease, and a cube's six sides do not come out whole.
   double shapeWeight = 0.1;
+  /// Meshes of at most this many faces are contracted in the greedy order of the paper from the
+  /// first face on. On larger meshes the contractions start inside blocks of `blockSize` nearby
+  /// faces, each block greedy on the pairs within it down to its share of this count (its faces
+  /// times exactClusterCount / n, rounded up), the blocks' contractions interleaved by cost; the
+  /// greedy order then holds over the whole mesh from the clusters left (about this many). A cut
+  /// at k clusters with k at most that number comes from that part of the tree, on the blocks'
+  /// clusters. Default 100,000.
+  int exactClusterCount = 100000;
+  /// Faces per block where exactClusterCount applies, grown breadth-first over the dual graph.
+  /// Default 2048 (about 1 MB of quadrics and pairs: the block's contractions run in cache).
+  int blockSize = 2048;
 };
 
 /// A key naming these options (faceClusterHierarchy caches by it).
@@ -45,8 +56,10 @@ struct FaceClusterHierarchy
 /// with the smallest eigenvalue. One heap entry per adjacent pair, keyed on a lower bound of its
 /// cost until the bound reaches the top, where the cost is computed: the order is that of computing
 /// every cost, with about one cost computed per face. A merge bounds again every pair of the kept
-/// cluster, O(degree log n). Deterministic (ties by cluster slot). Throws kerf::Error for negative
-/// or NaN weights.
+/// cluster, O(degree log n). Above options.exactClusterCount faces the contractions start in
+/// blocks (HierarchicalClusteringOptions; Documentation/filters/AutomaticSegmentation.md, *Blocks
+/// above 100,000 triangles*). Deterministic (ties by cluster slot). Throws kerf::Error for negative
+/// or NaN weights and for a block size or exact cluster count below 1.
 FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const HierarchicalClusteringOptions& options);
 
 /// The tree for a surface, built on first use and cached on it (Surface::derived).
