@@ -653,8 +653,8 @@ void expectCompleteTree(const FaceClusterHierarchy& tree, int components, const 
 }
 
 // Above exactClusterCount faces the contractions start in blocks: the tree stays complete and
-// deterministic, a cube still comes apart into its six sides, a single block gives the tree of
-// the paper's order, and sizes below 1 are refused.
+// deterministic, a cube still comes apart into its six sides, a single block (or blocks of one
+// face) gives the tree of the paper's order, and sizes below 1 are refused.
 TEST(AutomaticSegmentation, FaceClusteringInBlocks)
 {
   const auto [cubeMesh, sides] = makeSubdividedCube(8); // 768 triangles
@@ -696,11 +696,20 @@ TEST(AutomaticSegmentation, FaceClusteringInBlocks)
     {
       ASSERT_NEAR(restarted.costs[i], plain.costs[i], 1e-12 * (1.0 + std::abs(plain.costs[i]))) << name << ", merge " << i;
     }
-    // Blocks of 64 faces: complete, and the fingers' baseline of the paper's order still holds.
+    // Blocks of one face contract nothing: the greedy on all faces, the paper's tree to the bit.
+    HierarchicalClusteringOptions single;
+    single.blockSize = 1;
+    single.exactClusterCount = graph.faceCount() / 10;
+    const FaceClusterHierarchy singles = buildFaceClusterHierarchy(graph, single);
+    EXPECT_EQ(singles.merges, plain.merges) << name;
+    EXPECT_EQ(singles.costs, plain.costs) << name;
+    // Blocks of 64 faces, and blocks contracted as far as they go: complete trees.
     HierarchicalClusteringOptions small;
     small.blockSize = 64;
     small.exactClusterCount = graph.faceCount() / 8;
     expectCompleteTree(buildFaceClusterHierarchy(graph, small), 1, name + " in blocks of 64");
+    small.exactClusterCount = 1;
+    expectCompleteTree(buildFaceClusterHierarchy(graph, small), 1, name + " in blocks of 64 down to one cluster");
   }
 
   // Two components, each cut into blocks: one cluster each at the end.
