@@ -63,7 +63,7 @@ public:
   /// Surfaces of at most this many triangles are contracted in the paper's greedy order from the
   /// first triangle on. On larger ones the contractions start inside blocks of BlockSize nearby
   /// triangles and the greedy order holds over the whole surface from about this many clusters
-  /// on (a cut at fewer clusters comes from that part of the tree). Default 100000.
+  /// on (a cut at fewer clusters comes from that part of the tree). Default 50000.
   vtkSetMacro(ExactClusterCount, int);
   vtkGetMacro(ExactClusterCount, int);
   ///@}
@@ -89,7 +89,7 @@ protected:
   double MaximumError = 0.1;
   double DirectionWeight = 1;
   double ShapeWeight = 0.1;
-  int ExactClusterCount = 100000;
+  int ExactClusterCount = 50000;
   int BlockSize = 2048;
   char* SegmentArrayName = nullptr;
 

@@ -5,7 +5,8 @@
 //   BM_FaceClusterHierarchy/<size>   kerf::buildFaceClusterHierarchy (the dual graph built
 //                                    outside the timed loop) and a cut at k = 10: the whole
 //                                    method of survey section 3.3 for one k, with its defaults
-//                                    (at 1M the contractions start in blocks: exactClusterCount)
+//                                    (above 50,000 triangles the contractions start in blocks:
+//                                    exactClusterCount)
 //   BM_FaceClusterHierarchyExact/<size>  the same in the paper's greedy order from the first
 //                                    face (exactClusterCount above the face count): the reference
 //   BM_FaceClusterGraph/<size>       kerf::FaceGraph, the dual graph the methods share

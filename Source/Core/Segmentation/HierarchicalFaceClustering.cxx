@@ -423,16 +423,18 @@ public:
       }
       adjacency[x].push_back(static_cast<int>(pairs.size()));
       adjacency[y].push_back(static_cast<int>(pairs.size()));
-      pairs.push_back({ x, y, seed.length, 0.0, 0.0, false });
+      pairs.push_back({ x, y, seed.length, 0.0, 0.0, 0.0, false });
     }
 
     // Costs are evaluated lazily: a pair enters the heap keyed on a lower bound of its cost, which
     // is computed only when the bound reaches the top. The popped exact entry is then the least
-    // (cost, x, y) of all pairs, as if every cost had been computed.
+    // (cost, x, y) of all pairs, as if every cost had been computed. A key may also lag below its
+    // pair's bound (kept when a merge raised the bound); it is raised when it reaches the top.
     const auto bound = [&](int q) {
       ClusterPair& p = pairs[q];
       p.key = contractionCostLowerBound(summaries[p.x], summaries[p.y], p.length, options);
       p.exact = false;
+      p.heapKey = p.key;
       return PairHeap::Entry{ p.key, p.x, p.y, q };
     };
     PairHeap& heap = this->Heap;
@@ -451,11 +453,19 @@ public:
     {
       const int top = heap.top().pair;
       ClusterPair& contracted = pairs[top];
+      if (contracted.key > heap.top().key)
+      {
+        // A key left below the pair's bound: raised to it now that it is on top.
+        contracted.heapKey = contracted.key;
+        heap.update({ contracted.key, contracted.x, contracted.y, top });
+        continue;
+      }
       if (!contracted.exact)
       {
         contracted.key = contractionCost(clusters[contracted.x], clusters[contracted.y], contracted.length, options,
           contracted.smallestEigenvalue);
         contracted.exact = true;
+        contracted.heapKey = contracted.key;
         ++this->evaluations;
         heap.update({ contracted.key, contracted.x, contracted.y, top });
         continue;
@@ -484,6 +494,7 @@ public:
       // The neighbours of `keep`, without the contracted pair.
       std::vector<int>& kept = adjacency[keep];
       kept.erase(std::find(kept.begin(), kept.end(), top));
+      const std::size_t own = kept.size(); // pairs whose slots stay as they are
       for (int q : kept)
       {
         const int m = other(q, keep);
@@ -523,9 +534,21 @@ public:
         std::vector<int>().swap(adjacency[gone]);
       }
       // `keep` changed, so every cost of its pairs did.
-      for (int q : kept)
+      for (std::size_t i = 0; i < kept.size(); ++i)
       {
-        heap.update(bound(q));
+        const int q = kept[i];
+        ClusterPair& p = pairs[q];
+        const double heapKey = p.heapKey;
+        const PairHeap::Entry entry = bound(q);
+        // A key at or below the new bound still bounds the cost from below, which is all the order
+        // needs: the entry stays where it is (same slots, so ties break the same way) and is raised
+        // when it reaches the top.
+        if (i < own && heapKey <= entry.key)
+        {
+          p.heapKey = heapKey;
+          continue;
+        }
+        heap.update(entry);
       }
     }
   }
@@ -537,6 +560,7 @@ private:
     double length;             // shared boundary
     double key;                // the cost if exact, else a lower bound of it
     double smallestEigenvalue; // of the joined Z, once the cost is exact
+    double heapKey;            // the key of its heap entry: `key`, or a lower one left from before
     bool exact;
   };
   HugePageVector<ClusterPair> Pairs;
@@ -662,8 +686,6 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   const double scale = diagonal > 0.0 ? 1.0 / diagonal : 1.0;
   hierarchy.merges.reserve(static_cast<std::size_t>(n) - 1);
   hierarchy.costs.reserve(static_cast<std::size_t>(n) - 1);
-  HugePageVector<int> node(n);
-  std::iota(node.begin(), node.end(), 0);
   ContractionRun contraction;
   HugePageVector<Contraction> merges;
 
@@ -684,6 +706,8 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     }
     merges.reserve(static_cast<std::size_t>(n) - 1);
     contraction.run(clusters, summaries, seeds, static_cast<std::size_t>(n), std::numeric_limits<double>::infinity(), options, merges);
+    HugePageVector<int> node(n);
+    std::iota(node.begin(), node.end(), 0);
     for (const Contraction& m : merges)
     {
       record(hierarchy, node, m.keep, m.gone, m.cost);
@@ -770,40 +794,60 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     }
   }
 
-  HugePageVector<int> parent(n); // slot -> the slot it was absorbed into (itself while alive)
-  std::iota(parent.begin(), parent.end(), 0);
-  std::vector<int> survivors;
+  // Each block's contractions, their two children written as tree nodes: a face, or -(1 + p) for
+  // the node made by the contraction at position p of `merges` (numbered once the blocks
+  // interleave). The clusters left: their first face, node, state, and each face's cluster.
+  std::vector<int> survivors, survivorNodes;
   HugePageVector<ClusterState> survivorClusters;
   HugePageVector<ClusterSummary> survivorSummaries;
+  HugePageVector<int> clusterOf(n); // per face, its cluster's index in `survivors`
   std::vector<std::size_t> blockEnd; // per block, the end of its contractions in `merges`
   {
-    std::vector<char> absorbed;
+    std::vector<int> localNode, localParent, localSurvivor;
     for (const std::vector<int>& block : blocks)
     {
       const std::size_t first = merges.size();
       contractBlock(block, threshold);
-      absorbed.assign(block.size(), 0);
+      const int size = static_cast<int>(block.size());
+      localNode.assign(block.begin(), block.end());
+      localParent.resize(block.size());
+      std::iota(localParent.begin(), localParent.end(), 0);
       for (std::size_t i = first; i < merges.size(); ++i)
       {
         Contraction& m = merges[i];
-        absorbed[m.gone] = 1;
-        m.keep = block[m.keep];
-        m.gone = block[m.gone];
-        parent[m.gone] = m.keep;
+        const int keep = m.keep, gone = m.gone;
+        m.keep = localNode[keep];
+        m.gone = localNode[gone];
+        localNode[keep] = -1 - static_cast<int>(i);
+        localParent[gone] = keep;
       }
       blockEnd.push_back(merges.size());
-      for (std::size_t i = 0; i < block.size(); ++i)
+      localSurvivor.assign(block.size(), -1);
+      for (int i = 0; i < size; ++i)
       {
-        if (!absorbed[i])
+        if (localParent[i] == i)
         {
+          localSurvivor[i] = static_cast<int>(survivors.size());
           survivors.push_back(block[i]);
+          survivorNodes.push_back(localNode[i]);
           survivorClusters.push_back(blockClusters[i]);
           survivorSummaries.push_back(blockSummaries[i]);
         }
       }
+      for (int i = 0; i < size; ++i)
+      {
+        int root = i;
+        while (localParent[root] != root)
+        {
+          root = localParent[root];
+        }
+        clusterOf[block[i]] = localSurvivor[root];
+      }
     }
   }
   // The blocks' contractions into the tree by their running maxima of cost (each block in its order).
+  HugePageVector<int> treeIndex(merges.size()); // per position in `merges`, its merge in the tree
+  const auto treeNode = [&](int child) { return child >= 0 ? child : n + treeIndex[static_cast<std::size_t>(-1 - child)]; };
   {
     using Next = std::pair<double, std::size_t>; // (running maximum, block)
     std::priority_queue<Next, std::vector<Next>, std::greater<Next>> next;
@@ -820,8 +864,12 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
     {
       const auto [level, b] = next.top();
       next.pop();
-      const Contraction& m = merges[position[b]++];
-      record(hierarchy, node, m.keep, m.gone, m.cost);
+      const std::size_t at = position[b]++;
+      const Contraction& m = merges[at];
+      const int x = treeNode(m.keep), y = treeNode(m.gone);
+      treeIndex[at] = static_cast<int>(hierarchy.merges.size());
+      hierarchy.merges.push_back({ { std::min(x, y), std::max(x, y) } });
+      hierarchy.costs.push_back(m.cost);
       if (position[b] < blockEnd[b])
       {
         next.push({ std::max(level, merges[position[b]].cost), b });
@@ -835,29 +883,16 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   std::sort(order.begin(), order.end(), [&](int a, int b) { return survivors[a] < survivors[b]; });
   HugePageVector<ClusterState> clusters(survivors.size());
   HugePageVector<ClusterSummary> summaries(survivors.size());
-  HugePageVector<int> rank(n, -1);
+  HugePageVector<int> rank(survivors.size()), clusterNode(survivors.size());
   for (std::size_t i = 0; i < order.size(); ++i)
   {
     clusters[i] = survivorClusters[order[i]];
     summaries[i] = survivorSummaries[order[i]];
-    rank[survivors[order[i]]] = static_cast<int>(i);
+    clusterNode[i] = treeNode(survivorNodes[order[i]]);
+    rank[order[i]] = static_cast<int>(i);
   }
   survivorClusters = {};
   survivorSummaries = {};
-  const auto find = [&parent](int f) {
-    int root = f;
-    while (parent[root] != root)
-    {
-      root = parent[root];
-    }
-    while (parent[f] != root)
-    {
-      const int up = parent[f];
-      parent[f] = root;
-      f = up;
-    }
-    return root;
-  };
   struct Crossing
   {
     int x, y, edge;
@@ -865,7 +900,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   HugePageVector<Crossing> crossings;
   for (int e = 0; e < graph.edgeCount(); ++e)
   {
-    const int a = rank[find(graph.edge(e).faces[0])], b = rank[find(graph.edge(e).faces[1])];
+    const int a = rank[clusterOf[graph.edge(e).faces[0]]], b = rank[clusterOf[graph.edge(e).faces[1]]];
     if (a != b)
     {
       crossings.push_back({ std::min(a, b), std::max(a, b), e });
@@ -891,7 +926,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   contraction.run(clusters, summaries, seeds, clusters.size(), std::numeric_limits<double>::infinity(), options, merges);
   for (std::size_t i = first; i < merges.size(); ++i)
   {
-    record(hierarchy, node, survivors[order[merges[i].keep]], survivors[order[merges[i].gone]], merges[i].cost);
+    record(hierarchy, clusterNode, merges[i].keep, merges[i].gone, merges[i].cost);
   }
   hierarchy.costEvaluations = contraction.evaluations;
   return hierarchy;

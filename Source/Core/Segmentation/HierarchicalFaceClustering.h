@@ -28,8 +28,8 @@ struct HierarchicalClusteringOptions
   /// times exactClusterCount / n, rounded up), the blocks' contractions interleaved by cost; the
   /// greedy order then holds over the whole mesh from the clusters left (about this many). A cut
   /// at k clusters with k at most that number comes from that part of the tree, on the blocks'
-  /// clusters. Default 100,000.
-  int exactClusterCount = 100000;
+  /// clusters. Default 50,000 (every psb-dev model is smaller).
+  int exactClusterCount = 50000;
   /// Faces per block where exactClusterCount applies, grown breadth-first over the dual graph.
   /// Default 2048 (about 1 MB of quadrics and pairs: the block's contractions run in cache).
   int blockSize = 2048;
@@ -58,7 +58,7 @@ struct FaceClusterHierarchy
 /// every cost, with about one cost computed per face. A merge bounds again every pair of the kept
 /// cluster, O(degree log n). Above options.exactClusterCount faces the contractions start in
 /// blocks (HierarchicalClusteringOptions; Documentation/filters/AutomaticSegmentation.md, *Blocks
-/// above 100,000 triangles*). Deterministic (ties by cluster slot). Throws kerf::Error for negative
+/// above 50,000 triangles*). Deterministic (ties by cluster slot). Throws kerf::Error for negative
 /// or NaN weights and for a block size or exact cluster count below 1.
 FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const HierarchicalClusteringOptions& options);
 
