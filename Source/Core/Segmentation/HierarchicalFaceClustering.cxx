@@ -725,10 +725,13 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   // greedy then runs on all clusters left.
   const std::vector<std::vector<int>> blocks = growBlocks(graph, options.blockSize);
   merges.reserve(static_cast<std::size_t>(n) - 1);
+  // A block's share of exactClusterCount (its faces times exactClusterCount / n, rounded up), and
+  // its floor: half the share, at least one cluster.
+  const auto shareOf = [&](const std::vector<int>& block) {
+    return (static_cast<long long>(block.size()) * options.exactClusterCount + n - 1) / n;
+  };
   const auto floorOf = [&](const std::vector<int>& block) {
-    const long long size = static_cast<long long>(block.size());
-    const long long share = (size * options.exactClusterCount + n - 1) / n; // rounded up
-    return static_cast<int>(std::clamp((share + 1) / 2, 1LL, size));
+    return static_cast<int>(std::clamp((shareOf(block) + 1) / 2, 1LL, static_cast<long long>(block.size())));
   };
   HugePageVector<int> local(n, -1);
   HugePageVector<ClusterState> blockClusters;
@@ -783,7 +786,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
         runningMaxima.push_back(runningMax);
       }
       sampledFaces += static_cast<long long>(blocks[b].size());
-      sampledShare += (static_cast<long long>(blocks[b].size()) * options.exactClusterCount + n - 1) / n;
+      sampledShare += shareOf(blocks[b]);
     }
     merges.clear();
     const long long needed = sampledFaces - sampledShare; // contractions that leave the sample's share
