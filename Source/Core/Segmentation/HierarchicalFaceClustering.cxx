@@ -593,13 +593,18 @@ ClusterState faceCluster(const FaceGraph& graph, int f, const Vector3& centre, d
   return s;
 }
 
-// Appends a contraction of slots keep and gone to the tree, `node` holding each slot's tree node.
+// Appends the merge of tree nodes a and b at `cost`; returns the new node.
+int appendMerge(FaceClusterHierarchy& hierarchy, int a, int b, double cost)
+{
+  hierarchy.merges.push_back({ { std::min(a, b), std::max(a, b) } });
+  hierarchy.costs.push_back(cost);
+  return hierarchy.faceCount + static_cast<int>(hierarchy.merges.size()) - 1;
+}
+
+// Appends a contraction of slots keep and gone, `node` holding each slot's tree node.
 void record(FaceClusterHierarchy& hierarchy, HugePageVector<int>& node, int keep, int gone, double cost)
 {
-  const int n = hierarchy.faceCount;
-  hierarchy.merges.push_back({ { std::min(node[keep], node[gone]), std::max(node[keep], node[gone]) } });
-  hierarchy.costs.push_back(cost);
-  node[keep] = n + static_cast<int>(hierarchy.merges.size()) - 1;
+  node[keep] = appendMerge(hierarchy, node[keep], node[gone], cost);
 }
 
 // One block in this many is contracted first to set the blocks' common cost threshold.
@@ -869,10 +874,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
       next.pop();
       const std::size_t at = position[b]++;
       const Contraction& m = merges[at];
-      const int x = treeNode(m.keep), y = treeNode(m.gone);
-      treeIndex[at] = static_cast<int>(hierarchy.merges.size());
-      hierarchy.merges.push_back({ { std::min(x, y), std::max(x, y) } });
-      hierarchy.costs.push_back(m.cost);
+      treeIndex[at] = appendMerge(hierarchy, treeNode(m.keep), treeNode(m.gone), m.cost) - n;
       if (position[b] < blockEnd[b])
       {
         next.push({ std::max(level, merges[position[b]].cost), b });
