@@ -1393,6 +1393,48 @@ TEST(StrokeConstraints, StrokeAroundACylinder)
   }
 }
 
+TEST(StrokeConstraints, SparseStrokeFollowsTheSphere)
+{
+  // Three points a third of the equator apart on a sphere of radius 0.5: each chord passes 0.25
+  // from the surface, far beyond the allowed distance, so the samples are placed along the
+  // surface instead, at the chords' fractions of each great-circle arc.
+  const double radius = 0.5;
+  const TriangleMesh sphere = makeIcosphere(radius, 5);
+  const ClosestPointLocator locator(sphere);
+  const std::vector<Vector3> normals = computeVertexNormals(sphere);
+  std::vector<Vector3> stroke;
+  for (int i = 0; i < 3; ++i)
+  {
+    const double angle = 2.0 * Pi * i / 3.0;
+    stroke.emplace_back(radius * std::cos(angle), radius * std::sin(angle), 0.0);
+  }
+  StrokeOptions options;
+  options.offset = 0.005 * 2.0 * std::sqrt(3.0) * radius;
+  options.maximumDistance = 0.05 * 2.0 * std::sqrt(3.0) * radius;
+  const StrokeConstraintSet set = strokeConstraints(sphere, locator, normals, { stroke }, options);
+  ASSERT_EQ(static_cast<int>(set.strokeSamples.size()), 2 * options.samplesPerSegment);
+  // The icosphere's triangles lie inside the sphere by at most radius (1 - cos(edge / 2r)).
+  const double chordDepth = 0.002 * radius;
+  for (std::size_t i = 0; i < set.strokeSamples.size(); ++i)
+  {
+    const Vector3& p = set.strokeSamples[i];
+    EXPECT_NEAR(p.norm(), radius, chordDepth) << "sample " << i;
+    EXPECT_NEAR(p.z(), 0.0, 1e-3 * radius) << "sample " << i;
+    // Sample k of segment j at longitude (j + (k + 1/2) / 4) * 120 degrees.
+    const double expected = 120.0 * (static_cast<double>(i / 4) + (static_cast<double>(i % 4) + 0.5) / 4.0);
+    EXPECT_NEAR(std::atan2(p.y(), p.x()) * 180.0 / Pi + (expected > 180.0 ? 360.0 : 0.0), expected, 1.0) << "sample " << i;
+  }
+  for (std::size_t i = 0; i < set.positions.size(); ++i)
+  {
+    EXPECT_NEAR(set.positions[i].norm(), radius, chordDepth) << "constraint " << i;
+  }
+  // The stroke's own points are still held to the allowed distance.
+  std::vector<Vector3> away = stroke;
+  away[1] *= 1.5;
+  expectKerfError([&] { strokeConstraints(sphere, locator, normals, { away }, options); },
+    "stroke 0 point 1 is");
+}
+
 // ---------------------------------------------------------------------------------------------
 // Closest points.
 

@@ -24,7 +24,8 @@ struct StrokeOptions
   /// The iso-value I the cut should follow: constraints get I + 1 on one side and I - 1 on the
   /// other (0 for a new cut; the current value to refine a cut).
   double isoValue = 0.0;
-  /// Stroke samples farther than this from the surface are refused (length units).
+  /// Stroke points farther than this from the surface are refused, and segments whose chord
+  /// strays farther are followed along the surface (length units; 0: no limit, chords kept).
   double maximumDistance = 0.0;
 };
 
@@ -41,7 +42,12 @@ struct StrokeConstraintSet
 /// +/- offset along n x t (n the interpolated vertex normal, t the stroke direction: tangent to
 /// the surface and orthogonal to the stroke), projects both points onto the surface again and
 /// gives them I + 1 and I - 1. Samples where the stroke runs along the normal are skipped.
-/// Throws kerf::Error for a sample farther than maximumDistance from the surface, a stroke
+/// A stroke drawn on the surface stays on it: where a segment's chord strays farther than
+/// maximumDistance from the surface (sparse points round a curved part), its samples are placed
+/// at the same fractions of its length along the surface instead, the chord's midpoint moved to
+/// the nearest surface point and each half followed in turn until it stays within half of
+/// maximumDistance.
+/// Throws kerf::Error for a stroke point farther than maximumDistance from the surface, a stroke
 /// with fewer than two distinct points, NaN coordinates, or no constraint at all.
 StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPointLocator& locator,
   const std::vector<Vector3>& vertexNormals, const std::vector<std::vector<Vector3>>& strokes,
