@@ -51,6 +51,26 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
   return strokes;
 }
 
+PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray,
+  const DrawnStrokeList& drawn, const std::vector<std::pair<int, const StrokePointList*>>& typed,
+  const Surface& surface)
+{
+  PanelLabelledStrokes read;
+  if (strokeInput)
+  {
+    read.strokes = ReadLabelledStrokes(strokeInput, labelArray);
+    return read;
+  }
+  read = PanelLabelled(drawn, typed, surface);
+  if (read.strokes.empty())
+  {
+    throw Error("there are no strokes: draw a stroke for each part (in ParaView: hold Ctrl and drag over the part, "
+                "its label chosen in the panel or with the number keys over the view) or connect labelled polylines "
+                "to the Strokes input");
+  }
+  return read;
+}
+
 RegionGrowingOptions ReadGrowingOptions(vtkStrokeGrowingAlgorithm* algorithm, double diagonal)
 {
   RegionGrowingOptions growing;

@@ -2,8 +2,10 @@
 // labelled strokes read from polylines, the growing options, boundaries written as polylines.
 #pragma once
 
+#include "KerfDrawnInput.h"
 #include "Segmentation/EasyMeshCut.h"
 
+#include <utility>
 #include <vector>
 
 class vtkPolyData;
@@ -17,6 +19,13 @@ namespace kerf
 /// Throws kerf::Error for no line and no vertex, a missing or malformed array, or a label that is
 /// negative or not an integer.
 std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* labelArray);
+
+/// The labelled strokes of a filter that grows parts: those of `strokeInput` (ReadLabelledStrokes)
+/// when it is connected, else those of its panel (PanelLabelled, the typed strokes `typed` where
+/// no stroke of their label is drawn). Throws kerf::Error when there is no stroke.
+PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray,
+  const DrawnStrokeList& drawn, const std::vector<std::pair<int, const StrokePointList*>>& typed,
+  const Surface& surface);
 
 /// The growing options from a filter's properties: the metric (w, w*, augmentation 0-2, per edge)
 /// and the stroke points' farthest projection (MaximumProjectionDistance times `diagonal`), NaN

@@ -1,6 +1,8 @@
 // The shared parts of Kerf's filters: the exception border, input arrays and points, output helpers.
 #include "KerfFilterUtilities.h"
 
+#include "KerfDrawnInput.h"
+
 #include "Error.h"
 #include "Geodesic/SurfaceLocation.h"
 #include "Geometry/ClosestPoint.h"
@@ -201,7 +203,8 @@ double ProjectionLimit(double fraction, const Surface& surface, const char* para
   return limit > 0.0 ? limit : std::numeric_limits<double>::infinity();
 }
 
-DiscClicks ReadDiscClicks(const Surface& surface, vtkDiscClickAlgorithm* algorithm, vtkPointSet* input)
+DiscClicks ReadDiscClicks(
+  const Surface& surface, vtkDiscClickAlgorithm* algorithm, const DrawnDiscList& drawn, vtkPointSet* input)
 {
   const double diagonal = surface.mesh().boundingBoxDiagonal();
   const double absoluteRadius = algorithm->GetAbsoluteRadius();
@@ -213,6 +216,20 @@ DiscClicks ReadDiscClicks(const Surface& surface, vtkDiscClickAlgorithm* algorit
   clicks.tolerance = Finite(maximumProjection, "MaximumProjectionDistance") > 0.0
     ? maximumProjection
     : std::numeric_limits<double>::infinity();
+  if (!input && drawn.Count() > 0)
+  {
+    const std::vector<DrawnDisc> discs = drawn.Discs();
+    for (std::size_t i = 0; i < discs.size(); ++i)
+    {
+      const SurfacePoint click = PanelPointOnSurface(surface, discs[i].centre, "drawn disc " + std::to_string(i));
+      (discs[i].subtract ? clicks.subtracted : clicks.added).push_back({ surfacePosition(surface.mesh(), click), discs[i].radius });
+    }
+    if (clicks.added.empty())
+    {
+      throw Error("every drawn disc subtracts: draw one that adds (hold Ctrl without Shift and drag outward from a click)");
+    }
+    return clicks;
+  }
   if (!input)
   {
     const double* p = algorithm->GetClickPoint();
@@ -443,30 +460,6 @@ std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Su
   return positions;
 }
 
-std::vector<std::vector<Vector3>> ReadStrokes(
-  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface)
-{
-  std::vector<std::vector<Vector3>> strokes;
-  if (strokeInput)
-  {
-    strokes = ReadPolylines(strokeInput, "the stroke input");
-    if (strokes.empty())
-    {
-      throw Error("the stroke input holds no lines");
-    }
-  }
-  else if (panel.Count() > 0)
-  {
-    strokes.push_back(PanelPointsOnSurface(panel, surface, "stroke"));
-  }
-  else
-  {
-    throw Error("there is no stroke: place stroke points on the surface (in ParaView: point at the surface and "
-                "press P, Ctrl+P to add more) or connect polylines to the Strokes input");
-  }
-  return strokes;
-}
-
 std::vector<Vector3> ReadPoints(vtkPointSet* points)
 {
   std::vector<Vector3> coordinates(static_cast<std::size_t>(points ? points->GetNumberOfPoints() : 0));
@@ -602,6 +595,23 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::st
   array->SetName(name);
   array->InsertNextValue(value);
   return array;
+}
+
+void WriteSegmentSizes(const std::vector<int>& labels, vtkPolyData* output)
+{
+  std::vector<int> sizes;
+  for (int label : labels)
+  {
+    if (label >= 0)
+    {
+      if (static_cast<std::size_t>(label) >= sizes.size())
+      {
+        sizes.resize(static_cast<std::size_t>(label) + 1, 0);
+      }
+      ++sizes[static_cast<std::size_t>(label)];
+    }
+  }
+  output->GetFieldData()->AddArray(MakeIntArray("SegmentSizes", sizes));
 }
 
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values)

@@ -30,6 +30,8 @@ class vtkStrokeConstraintAlgorithm;
 namespace kerf
 {
 
+class DrawnDiscList;
+
 /// The border every RequestData runs inside: `body` does the work and throws kerf::Error (or
 /// anything else) on failure. Every exception stops here: it is reported with vtkErrorMacro as
 /// "<what>: <message>." and RunGuarded returns 0 (VTK's failure); otherwise the progress is set
@@ -86,10 +88,12 @@ struct DiscClicks
 /// The clicks of a filter with geodesic discs (its properties, see vtkDiscClickAlgorithm): each
 /// point of `clickInput` (input 1), with its own radius (the point array ClickRadiusArrayName, a
 /// fraction of the diagonal) when the input has that array, and subtracting its disc where the
-/// point array ClickSubtractArrayName is non-zero; without a click input, ClickPoint moved to the
-/// nearest surface point. Throws naming the parameter or the click for NaN parameters, a radius
-/// that is not positive, no click and only subtracting clicks.
-DiscClicks ReadDiscClicks(const Surface& surface, vtkDiscClickAlgorithm* algorithm, vtkPointSet* clickInput);
+/// point array ClickSubtractArrayName is non-zero; without a click input, the `drawn` discs where
+/// there are any, else ClickPoint; both moved to the nearest surface point. Throws naming the
+/// parameter or the click for NaN parameters, a radius that is not positive, no click and only
+/// subtracting clicks.
+DiscClicks ReadDiscClicks(
+  const Surface& surface, vtkDiscClickAlgorithm* algorithm, const DrawnDiscList& drawn, vtkPointSet* clickInput);
 
 /// The points of a point set (input 1 of a filter) on the surface, each projected and refused
 /// beyond `maximumDistance` (projectOntoSurface), named "<noun> <i>" in errors.
@@ -162,13 +166,6 @@ void SetPanelPoint(
 /// infinite or huge coordinates.
 std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Surface& surface, const std::string& noun);
 
-/// The strokes of a filter with strokes as polylines on input 1 or, without it, in its panel:
-/// the polylines, else the panel's points as one stroke, each moved to the nearest point of the
-/// surface (the panel's first points come from the input's bounds, not from the surface);
-/// throws when there is no stroke.
-std::vector<std::vector<Vector3>> ReadStrokes(
-  vtkPolyData* strokeInput, const StrokePointList& panel, const Surface& surface);
-
 /// The sampling of a vtkStrokeConstraintAlgorithm's strokes into constraints: samples per segment,
 /// offset (Offset times `diagonal`), its cap, the iso-value and the projection limit
 /// (MaximumProjectionDistance times `diagonal`); throws naming the parameter for NaN.
@@ -196,6 +193,11 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value)
 vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::string& value);
 /// A named int array holding `values`.
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
+
+/// The field array SegmentSizes of `output`: per label 0, 1, ... of `labels` (one per output
+/// cell), the number of cells that have it (cells labelled -1 are not counted). What the
+/// Information panel shows of a segmentation, and what its tests read.
+void WriteSegmentSizes(const std::vector<int>& labels, vtkPolyData* output);
 
 /// The body of an automatic-segmentation filter: checks `arrayName`, loads `input` into `surface`
 /// (validated against `requirements`), copies it to `output` with its arrays, runs `segment` (which

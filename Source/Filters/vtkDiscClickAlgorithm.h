@@ -5,8 +5,10 @@
  *
  * Input 0: the surface. Input 1 (optional): clicks, a vtkPointSet whose points each add a
  * geodesic disc, each moved to the nearest surface point and refused beyond
- * MaximumProjectionDistance; without it the click is ClickPoint, moved to the nearest surface
- * point whatever its distance (ParaView's handle starts at the input's bounds). A click's point
+ * MaximumProjectionDistance; without it the clicks are the discs drawn in the panel (DrawnDiscs:
+ * in ParaView, hold Ctrl, press on the surface and drag outward to set the radius; Shift too to
+ * subtract the disc) or, when none is drawn, the typed click ClickPoint; both are moved to the
+ * nearest surface point whatever their distance (the typed click starts at the input's bounds). A click's point
  * data may give its own radius (the array ClickRadiusArrayName, default "Radius", a fraction of
  * the diagonal like Radius) and make it subtract its disc instead of adding it (the array
  * ClickSubtractArrayName, default "Subtract": non-zero subtracts); without these arrays every
@@ -18,6 +20,13 @@
 #include "KerfFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
+#include <memory>
+
+namespace kerf
+{
+class DrawnDiscList;
+}
+
 class KERFFILTERS_EXPORT vtkDiscClickAlgorithm : public vtkPolyDataAlgorithm
 {
 public:
@@ -25,8 +34,20 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The click when input 1 is not connected, moved to the nearest surface point whatever its
-  /// distance (in ParaView it starts at the input's bounds: point at the surface and press P).
+  /// The discs drawn in the panel, each a click (x, y, z), its geodesic radius in the input's
+  /// units and whether it subtracts its disc (non-zero) from the union of the others. When any
+  /// is drawn they replace the typed click (ClickPoint with Radius or AbsoluteRadius). Default:
+  /// none.
+  void SetNumberOfDrawnDiscs(int count);
+  int GetNumberOfDrawnDiscs() const;
+  void SetDrawnDisc(int index, double x, double y, double z, double radius, double subtract);
+  void AddDrawnDisc(double x, double y, double z, double radius, bool subtract);
+  void RemoveAllDrawnDiscs();
+  ///@}
+
+  ///@{
+  /// The typed click, used when input 1 is not connected and no disc is drawn, moved to the
+  /// nearest surface point whatever its distance (in ParaView it starts at the input's bounds).
   /// Default (0, 0, 0).
   vtkSetVector3Macro(ClickPoint, double);
   vtkGetVector3Macro(ClickPoint, double);
@@ -74,6 +95,7 @@ protected:
   double MaximumProjectionDistance = 0.05;
   char* ClickRadiusArrayName = nullptr;
   char* ClickSubtractArrayName = nullptr;
+  std::unique_ptr<kerf::DrawnDiscList> DrawnDiscs;
 
 private:
   vtkDiscClickAlgorithm(const vtkDiscClickAlgorithm&) = delete;

@@ -73,38 +73,28 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     kerf::CheckOutputNames({ this->SegmentArrayName });
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
-    std::vector<kerf::LabelledStroke> strokes;
-    if (vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0))
-    {
-      strokes = kerf::ReadLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
-    }
-    else if (this->State->foreground.Count() > 0 && this->State->background.Count() > 0)
-    {
-      strokes.push_back({ 1, kerf::PanelPointsOnSurface(this->State->foreground, surface.GetSurface(), "foreground") });
-      strokes.push_back({ 0, kerf::PanelPointsOnSurface(this->State->background, surface.GetSurface(), "background") });
-    }
-    else
-    {
-      throw kerf::Error("there are no strokes: connect labelled polylines to input 1, or place foreground and "
-                        "background points (in ParaView: point at the surface and press P, Ctrl+P to add more)");
-    }
+    vtkPolyData* overrideInput = vtkPolyData::GetData(inputVector[2], 0);
+    const kerf::PanelLabelledStrokes strokes = kerf::ReadGrowingStrokes(vtkPolyData::GetData(inputVector[1], 0),
+      this->StrokeLabelArrayName, *this->DrawnStrokes, { { 1, &this->State->foreground }, { 0, &this->State->background } },
+      surface.GetSurface());
 
     kerf::EasyMeshCutOptions options;
     options.growing = kerf::ReadGrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
     options.refine = this->Refine;
     options.snake = kerf::SnakeOptionsFrom(
       this->SnakeIterations, this->SnakeConvergence, this->SnakeCurvatureOffset, this->SnakeSlideSamples);
-    if (vtkPolyData* overrides = vtkPolyData::GetData(inputVector[2], 0))
+    options.overrides = overrideInput ? kerf::ReadPolylines(overrideInput, "the override strokes") : strokes.overrides;
+    if (!options.overrides.empty())
     {
-      options.overrides = kerf::ReadPolylines(overrides, "the override strokes");
       options.overrideRadius = kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
     }
     this->UpdateProgress(0.1);
-    const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes, options);
+    const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes.strokes, options);
     this->UpdateProgress(0.9);
 
     surface.MakeOutput(input, output);
     output->GetCellData()->AddArray(kerf::MakeIntArray(this->SegmentArrayName, result.faceLabels));
+    kerf::WriteSegmentSizes(result.faceLabels, output);
     output->GetCellData()->SetActiveScalars(this->SegmentArrayName);
     output->GetPointData()->AddArray(kerf::MakeArray("IsophoticDistance", surface.ToInputPoints(result.distances)));
     if (!result.growing.probabilities.empty())

@@ -19,7 +19,8 @@
  * no stroke reaches: a component without strokes), the point array "IsophoticDistance" (the
  * metric distance to the nearest stroke, -1 where none reaches) and, with the random walks,
  * "Probability" (the probability of each point's grown label; where the cut gave a point its
- * second label, the larger of its two probabilities). Output 1: the boundaries between
+ * second label, the larger of its two probabilities), and the field data "SegmentSizes" (the
+ * faces of each label) and "SnakeSweeps". Output 1: the boundaries between
  * labels as polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller
  * label on the left seen from outside).
  *
@@ -78,10 +79,11 @@ public:
   ///@}
 
   ///@{
-  /// The strokes drawn in the panel, used when input 1 is not connected: the foreground stroke
-  /// (label 1) and the background stroke (label 0), each a polyline of one or more points (one
-  /// point is a click), moved to the nearest surface points whatever their distance (in ParaView
-  /// they start at the input's bounds; point at the surface and press P to place them there).
+  /// The typed strokes, used when input 1 is not connected for the labels without a drawn stroke
+  /// (vtkDrawnStrokeAlgorithm): the foreground stroke (label 1) and the background stroke
+  /// (label 0), each a polyline of one or more points (one point is a click), moved to the
+  /// nearest surface points whatever their distance (in ParaView they start at the input's
+  /// bounds).
   void SetNumberOfForegroundPoints(int count);
   int GetNumberOfForegroundPoints() const;
   void SetForegroundPoint(int index, double x, double y, double z);

@@ -2,6 +2,7 @@
 #include "vtkGeodesicDisc.h"
 
 #include "Geodesic/RoiScissor.h"
+#include "KerfDrawnInput.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -48,7 +49,7 @@ int vtkGeodesicDisc::RequestData(
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::ClickDistances& distances = this->State->surface.SessionFor(this->State->clickDistances);
     const kerf::DiscClicks clicks = kerf::ReadDiscClicks(distances.surface(),
-      this, vtkPointSet::GetData(inputVector[1], 0));
+      this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
     this->UpdateProgress(0.1);
     const kerf::GeodesicDiscs discs = kerf::geodesicDiscs(distances.surface(), clicks.added, clicks.subtracted,
       clicks.tolerance, kerf::HeatGeodesicOptions(), &distances);
@@ -62,6 +63,7 @@ int vtkGeodesicDisc::RequestData(
     output->GetPointData()->AddArray(kerf::MakeArray(this->DistanceArrayName, surface.ToInputPoints(discs.nearestAdded)));
     output->GetCellData()->AddArray(
       kerf::MakeArray(this->RegionArrayName, std::vector<unsigned char>(discs.faces.begin(), discs.faces.end())));
+    kerf::WriteSegmentSizes(std::vector<int>(discs.faces.begin(), discs.faces.end()), output);
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("RegionArea", discs.area));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("RegionAreaFraction", discs.area / discs.surfaceArea));
     output->GetFieldData()->AddArray(

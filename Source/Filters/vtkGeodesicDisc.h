@@ -16,7 +16,7 @@
  * Output: the surface with the point array "GeodesicDisc" (1 inside, 0 outside; the name is a
  * parameter, its active scalars), the cell array of the same name (the same rule at each face's
  * centroid, its distances averaged), the point array "ClickDistance" (the geodesic distance to
- * the nearest adding click; +infinity off its component) and the field data RegionArea,
+ * the nearest adding click; +infinity off its component) and the field data SegmentSizes (the faces outside and inside), RegionArea,
  * RegionAreaFraction (of the whole surface) and ClickDistanceFields (the distance fields this
  * filter has computed for its clicks on this surface, kept ones not counted again).
  *

@@ -24,6 +24,7 @@ struct vtkGeodesicPolyline::Internals
 {
   kerf::SurfaceInput surface;
   kerf::StrokePointList pathPoints;
+  kerf::StrokePointList drawnPoints;
   kerf::GeodesicLegCache legs; // moving one point retraces only its two legs
 };
 
@@ -50,6 +51,21 @@ void vtkGeodesicPolyline::SetPathPoint(int index, double x, double y, double z)
   kerf::SetPanelPoint(this, this->State->pathPoints, index, kerf::Vector3(x, y, z), "path");
 }
 
+void vtkGeodesicPolyline::SetNumberOfDrawnPoints(int count)
+{
+  kerf::SetPanelPointCount(this, this->State->drawnPoints, count, "clicked");
+}
+
+int vtkGeodesicPolyline::GetNumberOfDrawnPoints() const
+{
+  return this->State->drawnPoints.Count();
+}
+
+void vtkGeodesicPolyline::SetDrawnPoint(int index, double x, double y, double z)
+{
+  kerf::SetPanelPoint(this, this->State->drawnPoints, index, kerf::Vector3(x, y, z), "clicked");
+}
+
 int vtkGeodesicPolyline::FillInputPortInformation(int port, vtkInformation* info)
 {
   return kerf::FillSurfaceAndOptionalPointsPorts(port, info);
@@ -73,7 +89,9 @@ int vtkGeodesicPolyline::RequestData(
     }
     else
     {
-      for (const kerf::Vector3& point : this->State->pathPoints.Points())
+      const kerf::StrokePointList& panel =
+        this->State->drawnPoints.Count() > 0 ? this->State->drawnPoints : this->State->pathPoints;
+      for (const kerf::Vector3& point : panel.Points())
       {
         points.push_back(kerf::PanelPointOnSurface(surface, point, "path point " + std::to_string(points.size())));
       }
@@ -81,8 +99,8 @@ int vtkGeodesicPolyline::RequestData(
     if (points.empty())
     {
       throw kerf::Error(pointInput ? "the point input holds no point"
-                                   : "there are no path points: place them on the surface (in ParaView: point at the "
-                                     "surface and press P) or connect points to the Points input");
+                                   : "there are no path points: click them on the surface (in ParaView: hold Ctrl and "
+                                     "click), type them (PathPoints) or connect points to the Points input");
     }
     this->UpdateProgress(0.1);
 

@@ -7,9 +7,10 @@
  *
  * Input 0: the surface. Input 1 (optional): the points, a vtkPointSet whose points are taken in
  * their order, each moved to the nearest surface point and refused beyond
- * MaximumProjectionDistance. Without input 1 the points are those set with SetPathPoint (in
- * ParaView an interactive polyline whose points start at the input's bounds: point at the surface
- * and press P); they are moved to the nearest surface point whatever their distance.
+ * MaximumProjectionDistance. Without input 1 the points are those clicked in the panel
+ * (SetDrawnPoint; in ParaView: hold Ctrl and click on the surface) or, when none is clicked, the
+ * typed ones (SetPathPoint, at first the input's low-x and high-x sides); they are moved to the
+ * nearest surface point whatever their distance.
  *
  * Each leg, from one point to the next, is the streamline of the distance field from its first
  * point traced back from its second (SeamCut, section 2.2, Eq. 2): it crosses triangles and
@@ -48,8 +49,16 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The path's points when input 1 is not connected, in order (each moved to the nearest
-  /// surface point). Default: none.
+  /// The points clicked on the surface in the panel, in order; when any is clicked they replace
+  /// the typed path points. Default: none.
+  void SetNumberOfDrawnPoints(int count);
+  int GetNumberOfDrawnPoints() const;
+  void SetDrawnPoint(int index, double x, double y, double z);
+  ///@}
+
+  ///@{
+  /// The typed path points, used when input 1 is not connected and no point is clicked, in order
+  /// (each moved to the nearest surface point). Default: none.
   void SetNumberOfPathPoints(int count);
   int GetNumberOfPathPoints() const;
   void SetPathPoint(int index, double x, double y, double z);

@@ -21,6 +21,7 @@ struct vtkGeodesicSeam::Internals
 {
   kerf::SurfaceInput surface;
   std::unique_ptr<kerf::SeamSession> session;
+  kerf::StrokePointList drawnPoints;
 };
 
 vtkGeodesicSeam::vtkGeodesicSeam()
@@ -51,6 +52,21 @@ int vtkGeodesicSeam::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
+void vtkGeodesicSeam::SetNumberOfDrawnPoints(int count)
+{
+  kerf::SetPanelPointCount(this, this->State->drawnPoints, count, "clicked");
+}
+
+int vtkGeodesicSeam::GetNumberOfDrawnPoints() const
+{
+  return this->State->drawnPoints.Count();
+}
+
+void vtkGeodesicSeam::SetDrawnPoint(int index, double x, double y, double z)
+{
+  kerf::SetPanelPoint(this, this->State->drawnPoints, index, kerf::Vector3(x, y, z), "clicked");
+}
+
 int vtkGeodesicSeam::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -71,8 +87,10 @@ int vtkGeodesicSeam::RequestData(
     }
     const std::vector<kerf::SurfaceCurve> curves =
       kerf::PlaceLinesOnSurface(surface, lines, maximumDistance, "the cut input");
-    const kerf::SurfacePoint target = kerf::PanelPointOnSurface(
-      surface, kerf::Vector3(this->TargetPoint[0], this->TargetPoint[1], this->TargetPoint[2]), "the target point");
+    const kerf::Vector3 typed(this->TargetPoint[0], this->TargetPoint[1], this->TargetPoint[2]);
+    const std::vector<kerf::Vector3>& clicked = this->State->drawnPoints.Points();
+    const kerf::SurfacePoint target =
+      kerf::PanelPointOnSurface(surface, clicked.empty() ? typed : clicked.back(), "the target point");
     this->UpdateProgress(0.1);
 
     kerf::SeamOptions options;

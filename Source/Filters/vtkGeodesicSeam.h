@@ -40,9 +40,18 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
-  /// The seam's end away from the lines (the emitter), moved to the nearest surface point
-  /// whatever its distance (in ParaView it starts at the input's bounds: point at the surface and
-  /// press P). Default (0, 0, 0).
+  /// The seam's end away from the lines (the emitter) clicked on the surface in the panel (in
+  /// ParaView: hold Ctrl and click): the last clicked point, when any, replaces TargetPoint.
+  /// Default: none.
+  void SetNumberOfDrawnPoints(int count);
+  int GetNumberOfDrawnPoints() const;
+  void SetDrawnPoint(int index, double x, double y, double z);
+  ///@}
+
+  ///@{
+  /// The typed end of the seam away from the lines (the emitter), used when no point is clicked,
+  /// moved to the nearest surface point whatever its distance (in ParaView it starts at the
+  /// input's bounds). Default (0, 0, 0).
   vtkSetVector3Macro(TargetPoint, double);
   vtkGetVector3Macro(TargetPoint, double);
   ///@}

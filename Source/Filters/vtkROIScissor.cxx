@@ -2,6 +2,7 @@
 #include "vtkROIScissor.h"
 
 #include "Geodesic/RoiScissor.h"
+#include "KerfDrawnInput.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -51,7 +52,7 @@ int vtkROIScissor::RequestData(
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::ClickDistances& distances = this->State->surface.SessionFor(this->State->clickDistances);
     const kerf::DiscClicks clicks = kerf::ReadDiscClicks(distances.surface(),
-      this, vtkPointSet::GetData(inputVector[1], 0));
+      this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
     kerf::RoiScissorOptions options;
     options.innerFraction = kerf::Finite(this->InnerFraction, "InnerFraction");
     options.isolineCount = this->IsolineCount;
@@ -65,6 +66,7 @@ int vtkROIScissor::RequestData(
     const kerf::SurfaceInput& surface = this->State->surface;
     surface.MakeOutput(input, output);
     output->GetCellData()->AddArray(kerf::MakeIntArray(this->RegionArrayName, result.faceLabels));
+    kerf::WriteSegmentSizes(result.faceLabels, output);
     output->GetCellData()->SetActiveScalars(this->RegionArrayName);
     output->GetPointData()->AddArray(kerf::MakeArray("RoiField", surface.ToInputPoints(result.field)));
     output->GetPointData()->AddArray(kerf::MakeArray("RoiCandidate", surface.ToInputPoints(

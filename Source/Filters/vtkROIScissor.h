@@ -22,7 +22,7 @@
  * Output 0: the surface with the cell array "RoiRegion" (1 inside, 0 outside; the name is a
  * parameter, its active scalars), the point arrays "RoiField" (the harmonic field, NaN outside
  * the faces it was solved on) and "RoiCandidate" (1 inside the discs), and the field data
- * IsoValue and Score of the chosen isoline and ClickDistanceFields (the distance fields this
+ * IsoValue and Score of the chosen isoline, SegmentSizes (the faces outside and inside) and ClickDistanceFields (the distance fields this
  * filter has computed for its clicks on this surface, kept ones not counted again). Output 1: the boundary as closed polylines with the
  * cell arrays Length (under the metric), Closed and SelfCrossings.
  *

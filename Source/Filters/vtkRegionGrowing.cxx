@@ -36,22 +36,23 @@ int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputV
     kerf::CheckOutputNames({ this->SegmentArrayName });
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
-    vtkPolyData* strokeInput = vtkPolyData::GetData(inputVector[1], 0);
-    if (!strokeInput)
+    const kerf::PanelLabelledStrokes strokes = kerf::ReadGrowingStrokes(
+      vtkPolyData::GetData(inputVector[1], 0), this->StrokeLabelArrayName, *this->DrawnStrokes, {}, surface.GetSurface());
+    if (!strokes.overrides.empty())
     {
-      throw kerf::Error("there are no strokes: connect labelled polylines to input 1");
+      throw kerf::Error("override strokes (label -1) edit the boundaries of Easy Mesh Cut and Snake Refinement; Region "
+                        "Growing takes strokes of labels 0 and up");
     }
-    const std::vector<kerf::LabelledStroke> strokes = kerf::ReadLabelledStrokes(strokeInput, this->StrokeLabelArrayName);
-
     kerf::EasyMeshCutOptions options;
     options.growing = kerf::ReadGrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
     options.refine = false;
     this->UpdateProgress(0.1);
-    const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes, options);
+    const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes.strokes, options);
     this->UpdateProgress(0.9);
 
     surface.MakeOutput(input, output);
     output->GetCellData()->AddArray(kerf::MakeIntArray(this->SegmentArrayName, result.faceLabels));
+    kerf::WriteSegmentSizes(result.faceLabels, output);
     output->GetCellData()->SetActiveScalars(this->SegmentArrayName);
     output->GetPointData()->AddArray(
       kerf::MakeIntArray(this->SegmentArrayName, surface.ToInputPoints(result.growing.vertexLabels)));

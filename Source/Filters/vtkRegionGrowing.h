@@ -22,7 +22,7 @@
  * "IsophoticDistance" (the metric distance to the nearest stroke, -1 where none reaches) and, with
  * random walks, "Probability" (the probability of each point's label; where the cut gave a point
  * its second label, the larger of its two probabilities), field
- * data "UnreachableVertices". Output 1: the boundaries between labels along mesh edges, as
+ * data "UnreachableVertices" and "SegmentSizes" (the faces of each label). Output 1: the boundaries between labels along mesh edges, as
  * polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller label on
  * the left seen from outside).
  *

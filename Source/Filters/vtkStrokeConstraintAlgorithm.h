@@ -5,9 +5,11 @@
  * Abstract.
  *
  * Input 0: the surface. Input 1 (optional): the strokes, polylines near the surface (any number),
- * whose points are refused beyond MaximumProjectionDistance; without it the stroke is the panel's
- * points (SetStrokePoint; in ParaView an interactive polyline: point at the surface and press P
- * to place a point, Ctrl+P to add one), moved to the surface whatever their distance. Each stroke
+ * whose points are refused beyond MaximumProjectionDistance; without it the strokes are the
+ * drawn strokes (vtkDrawnStrokeAlgorithm; in ParaView: hold Ctrl and drag over the surface) or,
+ * when none is drawn, the typed stroke (SetStrokePoint), their points moved to the surface
+ * whatever their distance. Between its points a stroke follows the surface (see
+ * kerf::strokeConstraints). Each stroke
  * segment is resampled to SamplesPerSegment points; each sample, projected onto the surface, is
  * offset by +/- Offset along the surface, orthogonally to the stroke, and the two points get the
  * values IsoValue + 1 (left of the stroke, seen from outside) and IsoValue - 1.
@@ -17,7 +19,7 @@
 #define vtkStrokeConstraintAlgorithm_h
 
 #include "KerfFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkDrawnStrokeAlgorithm.h"
 
 #include <memory>
 
@@ -26,10 +28,10 @@ namespace kerf
 class StrokePointList;
 }
 
-class KERFFILTERS_EXPORT vtkStrokeConstraintAlgorithm : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkStrokeConstraintAlgorithm : public vtkDrawnStrokeAlgorithm
 {
 public:
-  vtkTypeMacro(vtkStrokeConstraintAlgorithm, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStrokeConstraintAlgorithm, vtkDrawnStrokeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -68,7 +70,8 @@ public:
   ///@}
 
   ///@{
-  /// The stroke's points when input 1 is not connected (one stroke).
+  /// The typed stroke's points (one stroke), used when input 1 is not connected and no stroke is
+  /// drawn.
   void SetNumberOfStrokePoints(int count);
   int GetNumberOfStrokePoints() const;
   void SetStrokePoint(int index, double x, double y, double z);

@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Harmonic/HarmonicCutSession.h"
+#include "KerfDrawnInput.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -49,7 +50,7 @@ int vtkStrokeConstraints::RequestData(
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
 
-    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, *this->StrokePoints, session.surface());
+    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, *this->DrawnStrokes, *this->StrokePoints, session.surface());
 
     const kerf::StrokeConstraintSet set = session.strokeConstraints(strokes, kerf::ReadStrokeOptions(this, diagonal));
 

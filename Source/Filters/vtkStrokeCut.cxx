@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Harmonic/HarmonicCutSession.h"
+#include "KerfDrawnInput.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -52,11 +53,13 @@ int vtkStrokeCut::RequestData(
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
     const std::vector<std::vector<kerf::Vector3>> strokes =
-      kerf::ReadStrokes(vtkPolyData::GetData(inputVector[1], 0), *this->StrokePoints, session.surface());
+      kerf::ReadStrokes(vtkPolyData::GetData(inputVector[1], 0), *this->DrawnStrokes, *this->StrokePoints, session.surface());
     this->UpdateProgress(0.1);
 
     kerf::FieldConstraints constraints;
     constraints.soft = session.strokeConstraints(strokes, kerf::ReadStrokeOptions(this, diagonal)).constraints;
+    // Components no stroke touches stay whole, on the stroke's +1 side.
+    session.holdUnconstrainedComponents(constraints, this->IsoValue + 1.0);
     kerf::HarmonicFieldOptions fieldOptions;
     fieldOptions.weights.weighting = static_cast<kerf::LaplacianWeighting>(this->Weighting);
     fieldOptions.softWeight = kerf::Finite(this->SoftConstraintWeight, "SoftConstraintWeight");
@@ -76,6 +79,7 @@ int vtkStrokeCut::RequestData(
     this->State->surface.MakeOutput(input, output);
     kerf::WriteField(this->State->surface, solution, constraints, "HarmonicField", output);
     output->GetCellData()->AddArray(kerf::MakeIntArray("Segment", cut.labels));
+    kerf::WriteSegmentSizes(cut.labels, output);
     output->GetCellData()->SetActiveScalars("Segment"); // what ParaView colours by after Apply
     kerf::WriteCutLines(cut, vtkPolyData::GetData(outputVector, 1));
   });

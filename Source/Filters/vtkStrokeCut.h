@@ -6,16 +6,20 @@
  *
  * The common case of the three-filter pipeline vtkStrokeConstraints -> vtkHarmonicField ->
  * vtkIsolineCut (which stays available for every other case), with the same Core
- * (kerf::HarmonicCutSession) and the same results. The stroke is the polylines of input 1 or,
- * without it, the points set with SetStrokePoint (in ParaView an interactive polyline: point at
- * the surface and press P to place a point, Ctrl+P to add one). Moving the stroke re-solves
- * with the kept factorization (an update); changing IsoValue only re-extracts the cut.
+ * (kerf::HarmonicCutSession) and the same results. The strokes are the polylines of input 1 or,
+ * without it, the strokes drawn in the panel (vtkDrawnStrokeAlgorithm; in ParaView: hold Ctrl and
+ * drag across the surface) or, when none is drawn, the typed stroke (SetStrokePoint). A new
+ * stroke re-solves with the kept factorization (an update); changing IsoValue only re-extracts
+ * the cut.
  *
  * Output 0: the surface with the point arrays "HarmonicField" and "HarmonicFieldClamped" (for
  * display, see vtkHarmonicField), the cell array "Segment" (the two sides of the cut, split
  * further into connected components; the active scalars, what ParaView colours by) and the
- * field data "SolverWork" and "RelativeResidual". Output 1: the cut as polylines (IsoValue,
+ * field data "SolverWork", "RelativeResidual" and "SegmentSizes" (the faces of each segment). Output 1: the cut as polylines (IsoValue,
  * Score, Length, Closed).
+ *
+ * On a surface of several connected components, the strokes cut the components they touch; the
+ * others stay whole (each one segment), as if on the strokes' +1 side.
  *
  * Errors (vtkErrorMacro, return 0): no stroke, a stroke with fewer than two distinct points or
  * farther from the surface than MaximumProjectionDistance, surfaces refused by validation (the

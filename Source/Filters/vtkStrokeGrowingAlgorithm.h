@@ -5,8 +5,11 @@
  *
  * Input 1 holds the strokes: polylines, or points of vertex cells (clicks), each with a label in
  * the cell array named by StrokeLabelArrayName; their points are moved to the nearest surface
- * points and refused beyond MaximumProjectionDistance (vtkEasyMeshCut also takes strokes drawn
- * in its panel when input 1 is not connected). Fronts grow from the strokes under the metric,
+ * points and refused beyond MaximumProjectionDistance. When input 1 is not connected, the strokes
+ * are those drawn in the panel (vtkDrawnStrokeAlgorithm, each with its label; in ParaView: hold
+ * Ctrl and drag over the surface, the label chosen in the panel or with the number keys), moved
+ * to the nearest surface points; vtkEasyMeshCut adds its typed foreground and background points
+ * for the labels 1 and 0 where no stroke of that label is drawn. Fronts grow from the strokes under the metric,
  * whose edge length grows with the change of the normal (NormalWeight) and, strongly, with
  * concave curvature (CurvatureWeight, CurvatureAugmentation).
  * BoundaryPlacement says where the boundaries between labels go: by default each vertex and
@@ -23,12 +26,12 @@
 #define vtkStrokeGrowingAlgorithm_h
 
 #include "KerfFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkDrawnStrokeAlgorithm.h"
 
-class KERFFILTERS_EXPORT vtkStrokeGrowingAlgorithm : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkStrokeGrowingAlgorithm : public vtkDrawnStrokeAlgorithm
 {
 public:
-  vtkTypeMacro(vtkStrokeGrowingAlgorithm, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStrokeGrowingAlgorithm, vtkDrawnStrokeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

@@ -245,7 +245,7 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(panelError < 0.012); // measured 0.0095, refined as above
     panel->SetNumberOfBackgroundPoints(0);
     int succeeded = 1;
-    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("place foreground and background") !=
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("at least two labels") !=
       std::string::npos);
     ok &= KERF_CHECK(succeeded == 0);
   }
@@ -292,6 +292,28 @@ int TestEasyMeshCutFilter(int, char*[])
     }
     std::cout << "override: " << beside << " boundary points beside the stroke, " << away << " away" << std::endl;
     ok &= KERF_CHECK(beside > 5 && away > 5);
+    // The same strokes drawn in the panel, the override as a stroke of label -1: the same parts
+    // and boundary.
+    vtkNew<vtkEasyMeshCut> drawn;
+    drawn->SetInputData(0, dumbbell);
+    drawn->SetOverrideRadius(0.15 / mesh.boundingBoxDiagonal());
+    for (const auto& [label, heights] : { std::make_pair(0, std::vector<double>{ -1.6, -1.5, -1.4 }),
+           std::make_pair(1, std::vector<double>{ 1.4, 1.5, 1.6 }) })
+    {
+      vtkNew<vtkPoints> stroke;
+      for (double z : heights)
+      {
+        stroke->InsertNextPoint(radius(z), 0.0, z);
+      }
+      drawn->AddDrawnStroke(stroke, label);
+    }
+    drawn->AddDrawnStroke(points, -1);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).empty());
+    ok &= KERF_CHECK(segmentsOf(drawn->GetOutput()) == segmentsOf(edited->GetOutput()));
+    ok &= KERF_CHECK(drawn->GetBoundary()->GetNumberOfPoints() == boundary->GetNumberOfPoints());
+    // A drawn label below -1 is refused, naming the stroke.
+    drawn->SetDrawnStrokeLabel(2, -2);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).find("drawn stroke 2 has the label -2") != std::string::npos);
     // An override away from every boundary is refused.
     points->SetPoint(0, radius(-1.5), 0.0, -1.5);
     for (int i = 1; i <= 16; ++i)

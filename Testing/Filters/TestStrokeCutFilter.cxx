@@ -15,6 +15,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 
 #include <cmath>
@@ -106,10 +107,91 @@ int TestStrokeCutFilter(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel).empty());
   ok &= KERF_CHECK(solverWork(panel->GetOutput()) != "factorization");
 
+  // Strokes drawn in the panel replace the typed stroke: the same twelve points drawn as two
+  // strokes (sizes 6 and 7, the seventh point repeated) cut where the typed ones do.
+  vtkNew<vtkStrokeCut> drawn;
+  drawn->SetInputData(cylinder);
+  drawn->SetStrokePoint(0, 0.0, 0.0, 0.5); // a typed stroke elsewhere, which the drawn ones replace
+  drawn->SetStrokePoint(1, 0.0, 1.0, 0.5);
+  vtkNew<vtkPoints> first, second;
+  for (int i = 0; i <= 12; ++i)
+  {
+    const double a = 2.0 * Pi * (i % 12) / 12.0;
+    (i <= 6 ? first : second)->InsertNextPoint(1.5 * std::cos(a), 1.5 * std::sin(a), 2.6);
+    if (i == 6)
+    {
+      second->InsertNextPoint(1.5 * std::cos(a), 1.5 * std::sin(a), 2.6);
+    }
+  }
+  drawn->AddDrawnStroke(first);
+  drawn->AddDrawnStroke(second);
+  ok &= KERF_CHECK(drawn->GetNumberOfDrawnStrokePoints() == 14 && drawn->GetNumberOfDrawnStrokeSizes() == 2);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).empty());
+  vtkNew<vtkStrokeCut> typed;
+  typed->SetInputData(cylinder);
+  for (int i = 0; i <= 12; ++i)
+  {
+    const double a = 2.0 * Pi * (i % 12) / 12.0;
+    typed->SetStrokePoint(i, 1.5 * std::cos(a), 1.5 * std::sin(a), 2.6);
+  }
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(typed).empty());
+  ok &= KERF_CHECK(sameArrays(drawn->GetOutput()->GetCellData()->GetArray("Segment"),
+    typed->GetOutput()->GetCellData()->GetArray("Segment")));
+  vtkDataArray* sizes = drawn->GetOutput()->GetFieldData()->GetArray("SegmentSizes");
+  ok &= KERF_CHECK(sizes && sizes->GetNumberOfTuples() == 2 &&
+    sizes->GetComponent(0, 0) + sizes->GetComponent(1, 0) == cylinder->GetNumberOfCells());
+  // Forgetting them brings the typed stroke back; sizes that do not add up are refused.
+  drawn->RemoveAllDrawnStrokes();
+  ok &= KERF_CHECK(drawn->GetNumberOfDrawnStrokePoints() == 0 && kerf::test::UpdateAndCaptureError(drawn).empty());
+  drawn->AddDrawnStroke(first);
+  drawn->SetDrawnStrokeSize(0, 5);
+  ok &= KERF_CHECK(
+    kerf::test::UpdateAndCaptureError(drawn).find("add up to 5 points, but 7 are drawn") != std::string::npos);
+
+  // On a surface of two components, a stroke on one cuts it and leaves the other whole.
+  vtkSmartPointer<vtkPolyData> twoTubes = kerf::test::ToPolyData(kerf::makeCylinder(1.0, 5.0, 32, 21));
+  {
+    const vtkIdType pointCount = twoTubes->GetNumberOfPoints();
+    vtkNew<vtkPoints> points;
+    points->DeepCopy(twoTubes->GetPoints());
+    vtkNew<vtkCellArray> triangles;
+    triangles->DeepCopy(twoTubes->GetPolys());
+    for (vtkIdType i = 0; i < pointCount; ++i)
+    {
+      double p[3];
+      twoTubes->GetPoint(i, p);
+      points->InsertNextPoint(p[0] + 4.0, p[1], p[2]);
+    }
+    for (vtkIdType c = 0; c < twoTubes->GetNumberOfPolys(); ++c)
+    {
+      vtkIdType size;
+      const vtkIdType* ids;
+      twoTubes->GetPolys()->GetCellAtId(c, size, ids);
+      const vtkIdType shifted[3] = { ids[0] + pointCount, ids[1] + pointCount, ids[2] + pointCount };
+      triangles->InsertNextCell(3, shifted);
+    }
+    twoTubes = vtkSmartPointer<vtkPolyData>::New();
+    twoTubes->SetPoints(points);
+    twoTubes->SetPolys(triangles);
+  }
+  vtkNew<vtkStrokeCut> one;
+  one->SetInputData(twoTubes);
+  one->AddDrawnStroke(first);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(one).empty());
+  vtkDataArray* twoSizes = one->GetOutput()->GetFieldData()->GetArray("SegmentSizes");
+  ok &= KERF_CHECK(twoSizes && twoSizes->GetNumberOfTuples() == 3);
+  if (twoSizes && twoSizes->GetNumberOfTuples() == 3)
+  {
+    // The untouched tube is one segment of all its faces.
+    const double tube = 0.5 * twoTubes->GetNumberOfCells();
+    ok &= KERF_CHECK(twoSizes->GetComponent(0, 0) == tube || twoSizes->GetComponent(1, 0) == tube ||
+      twoSizes->GetComponent(2, 0) == tube);
+  }
+
   // Errors name the cause, in the panel's words.
   vtkNew<vtkStrokeCut> none;
   none->SetInputData(cylinder);
-  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(none).find("press P") != std::string::npos);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(none).find("hold Ctrl and drag") != std::string::npos);
   vtkNew<vtkStrokeCut> huge;
   huge->SetInputData(cylinder);
   huge->SetStrokePoint(0, 1e300, 0, 0);

@@ -18,7 +18,8 @@ SKIPPED = {"SetInputConnection", "SetInputData", "SetInputArrayToProcess", "SetE
            "SetGlobalWarningDisplay", "SetProgressText", "SetProgressShiftScale", "SetContainerAlgorithm",
            "SetAbortExecute", "SetAbortExecuteAndUpdateTime", "SetNoPriority", "SetReleaseDataFlag",
            "SetDefaultExecutivePrototype", "SetObjectName"}
-ABSTRACT_BASES = {"vtkDiscClickAlgorithm", "vtkStrokeConstraintAlgorithm", "vtkStrokeGrowingAlgorithm"}
+ABSTRACT_BASES = {
+    "vtkDiscClickAlgorithm", "vtkDrawnStrokeAlgorithm", "vtkStrokeConstraintAlgorithm", "vtkStrokeGrowingAlgorithm"}
 
 
 def capture_update(algorithm):

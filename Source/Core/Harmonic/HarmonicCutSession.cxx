@@ -57,6 +57,39 @@ void HarmonicCutSession::addHardValues(
   }
 }
 
+int HarmonicCutSession::holdUnconstrainedComponents(FieldConstraints& constraints, double value) const
+{
+  const TriangleMesh& mesh = this->mesh();
+  std::vector<char> constrained(static_cast<std::size_t>(mesh.componentCount()), 0);
+  for (const int v : constraints.dirichletVertices)
+  {
+    if (v >= 0 && v < mesh.vertexCount() && mesh.vertexComponent(v) >= 0)
+    {
+      constrained[static_cast<std::size_t>(mesh.vertexComponent(v))] = 1;
+    }
+  }
+  for (const SoftConstraint& s : constraints.soft)
+  {
+    if (s.face >= 0 && s.face < mesh.faceCount())
+    {
+      constrained[static_cast<std::size_t>(mesh.faceComponent(s.face))] = 1;
+    }
+  }
+  int held = 0;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const int c = mesh.vertexComponent(v);
+    if (c >= 0 && !constrained[static_cast<std::size_t>(c)])
+    {
+      constrained[static_cast<std::size_t>(c)] = 1;
+      constraints.dirichletVertices.push_back(v);
+      constraints.dirichletValues.push_back(value);
+      ++held;
+    }
+  }
+  return held;
+}
+
 void HarmonicCutSession::projectConstraints(const std::vector<Vector3>& points, const std::vector<double>& values,
   const ConstraintPlacement& placement, FieldConstraints& constraints) const
 {

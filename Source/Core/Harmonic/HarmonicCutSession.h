@@ -81,6 +81,12 @@ public:
   void addHardValues(const std::vector<int>& vertices, const std::vector<double>& values,
     FieldConstraints& constraints) const;
 
+  /// Gives each connected component without any constraint a hard `value` at its first vertex,
+  /// so that its field is that constant instead of undefined: a stroke then cuts the components
+  /// it touches and leaves the others whole (with `value` off the cut's iso-value, no isoline
+  /// crosses them). Returns how many components it held.
+  int holdUnconstrainedComponents(FieldConstraints& constraints, double value) const;
+
   /// Places value constraints at points: each point is projected onto the surface and becomes a
   /// soft constraint there, or a hard value at the vertex it snaps to. Throws kerf::Error naming
   /// the point for NaN or infinite coordinates or values and for points farther than allowed.

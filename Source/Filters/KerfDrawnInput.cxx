@@ -1,0 +1,301 @@
+// Drawn strokes, discs and points of a filter's panel: their lists, setters, and the strokes they give.
+#include "KerfDrawnInput.h"
+
+#include "Error.h"
+
+#include <vtkAlgorithm.h>
+
+#include <cmath>
+#include <set>
+
+namespace kerf
+{
+
+namespace
+{
+void checkCount(long long count, const char* what)
+{
+  if (count > StrokePointList::MaximumCount)
+  {
+    throw Error(std::string("a panel holds at most ") + std::to_string(StrokePointList::MaximumCount) + " " + what +
+      ", not " + std::to_string(count));
+  }
+}
+
+// Resizes `list` to `count` entries of `fill` (a negative count leaves it); true when it changed.
+template <typename List, typename Value>
+bool resize(List& list, int count, const Value& fill, const char* what)
+{
+  checkCount(count, what);
+  if (count < 0 || static_cast<std::size_t>(count) == list.size())
+  {
+    return false;
+  }
+  list.resize(static_cast<std::size_t>(count), fill);
+  return true;
+}
+
+// Sets entry `index` of `list`, growing it with `fill` (a negative index is ignored); true when it
+// changed.
+template <typename List, typename Value>
+bool assign(List& list, int index, const Value& value, const Value& fill, const char* what)
+{
+  if (index < 0)
+  {
+    return false;
+  }
+  checkCount(static_cast<long long>(index) + 1, what);
+  if (static_cast<std::size_t>(index) >= list.size())
+  {
+    list.resize(static_cast<std::size_t>(index) + 1, fill);
+  }
+  if (list[static_cast<std::size_t>(index)] == value)
+  {
+    return false;
+  }
+  list[static_cast<std::size_t>(index)] = value;
+  return true;
+}
+
+// Runs a setter inside the setter's border and marks the algorithm modified when it changed.
+template <typename Change>
+void setAndMark(vtkAlgorithm* algorithm, const std::string& what, const Change& change)
+{
+  GuardSetter(algorithm, what.c_str(), [&]() {
+    if (change())
+    {
+      algorithm->Modified();
+    }
+  });
+}
+} // namespace
+
+bool PanelIntegerList::SetCount(int count)
+{
+  return resize(this->List, count, 0, "numbers");
+}
+
+bool PanelIntegerList::Set(int index, int value)
+{
+  return assign(this->List, index, value, 0, "numbers");
+}
+
+void SetPanelIntegerCount(vtkAlgorithm* algorithm, PanelIntegerList& list, int count, const std::string& noun)
+{
+  setAndMark(algorithm, "Cannot set the number of " + noun, [&]() { return list.SetCount(count); });
+}
+
+void SetPanelInteger(vtkAlgorithm* algorithm, PanelIntegerList& list, int index, int value, const std::string& noun)
+{
+  setAndMark(algorithm, "Cannot set a " + noun, [&]() { return list.Set(index, value); });
+}
+
+std::vector<DrawnStroke> DrawnStrokeList::Strokes() const
+{
+  const std::vector<Vector3>& points = this->Points.Points();
+  std::vector<int> sizes = this->Sizes.Values();
+  if (sizes.empty() && !points.empty())
+  {
+    sizes.push_back(static_cast<int>(points.size()));
+  }
+  long long total = 0;
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+  {
+    if (sizes[s] < 1)
+    {
+      throw Error("drawn stroke " + std::to_string(s) + " has " + std::to_string(sizes[s]) +
+        " points (DrawnStrokeSizes); every stroke has at least one");
+    }
+    total += sizes[s];
+  }
+  if (total != static_cast<long long>(points.size()))
+  {
+    throw Error("the drawn strokes' sizes (DrawnStrokeSizes) add up to " + std::to_string(total) + " points, but " +
+      std::to_string(points.size()) + " are drawn (DrawnStrokePoints)");
+  }
+  const std::vector<int>& labels = this->Labels.Values();
+  if (!labels.empty() && labels.size() != sizes.size())
+  {
+    throw Error("there are " + std::to_string(labels.size()) + " drawn stroke labels (DrawnStrokeLabels) for " +
+      std::to_string(sizes.size()) + " strokes");
+  }
+  std::vector<DrawnStroke> strokes(sizes.size());
+  std::size_t next = 0;
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+  {
+    strokes[s].points.assign(points.begin() + static_cast<std::ptrdiff_t>(next),
+      points.begin() + static_cast<std::ptrdiff_t>(next + static_cast<std::size_t>(sizes[s])));
+    strokes[s].label = labels.empty() ? 0 : labels[s];
+    next += static_cast<std::size_t>(sizes[s]);
+  }
+  return strokes;
+}
+
+bool DrawnStrokeList::Add(const std::vector<Vector3>& points, int label)
+{
+  if (points.empty())
+  {
+    return false;
+  }
+  // Sizes and labels for every earlier stroke first, so that the new one is a stroke of its own.
+  const std::vector<DrawnStroke> before = this->Strokes();
+  this->Sizes.SetCount(static_cast<int>(before.size()));
+  this->Labels.SetCount(static_cast<int>(before.size()));
+  for (std::size_t s = 0; s < before.size(); ++s)
+  {
+    this->Sizes.Set(static_cast<int>(s), static_cast<int>(before[s].points.size()));
+    this->Labels.Set(static_cast<int>(s), before[s].label);
+  }
+  int next = this->Points.Count();
+  for (const Vector3& p : points)
+  {
+    this->Points.Set(next++, p);
+  }
+  this->Sizes.Set(this->Sizes.Count(), static_cast<int>(points.size()));
+  this->Labels.Set(this->Labels.Count(), label);
+  return true;
+}
+
+bool DrawnStrokeList::Clear()
+{
+  const bool changed = this->Points.Count() > 0 || this->Sizes.Count() > 0 || this->Labels.Count() > 0;
+  this->Points.SetCount(0);
+  this->Sizes.SetCount(0);
+  this->Labels.SetCount(0);
+  return changed;
+}
+
+bool DrawnDiscList::SetCount(int count)
+{
+  return resize(this->List, count, std::array<double, 5>{}, "discs");
+}
+
+bool DrawnDiscList::Set(int index, const std::array<double, 5>& disc)
+{
+  return assign(this->List, index, disc, std::array<double, 5>{}, "discs");
+}
+
+std::vector<DrawnDisc> DrawnDiscList::Discs() const
+{
+  std::vector<DrawnDisc> discs;
+  for (std::size_t i = 0; i < this->List.size(); ++i)
+  {
+    const std::array<double, 5>& d = this->List[i];
+    DrawnDisc disc;
+    disc.centre = Vector3(d[0], d[1], d[2]);
+    if (!disc.centre.allFinite() || disc.centre.cwiseAbs().maxCoeff() > CoordinateLimit)
+    {
+      throw Error("drawn disc " + std::to_string(i) + " has a centre with NaN, infinite or huge coordinates");
+    }
+    if (!(std::isfinite(d[3]) && d[3] > 0.0))
+    {
+      throw Error("drawn disc " + std::to_string(i) + " has the radius " + std::to_string(d[3]) +
+        "; drag outward from the click to give it a positive radius");
+    }
+    disc.radius = d[3];
+    disc.subtract = d[4] != 0.0;
+    discs.push_back(disc);
+  }
+  return discs;
+}
+
+void SetPanelDiscCount(vtkAlgorithm* algorithm, DrawnDiscList& list, int count)
+{
+  setAndMark(algorithm, "Cannot set the number of drawn discs", [&]() { return list.SetCount(count); });
+}
+
+void SetPanelDisc(vtkAlgorithm* algorithm, DrawnDiscList& list, int index, const std::array<double, 5>& disc)
+{
+  setAndMark(algorithm, "Cannot set a drawn disc", [&]() { return list.Set(index, disc); });
+}
+
+namespace
+{
+// A drawn stroke's points moved to the nearest surface points ("drawn stroke <s> point <i>").
+std::vector<Vector3> onSurface(const Surface& surface, const DrawnStroke& stroke, std::size_t index)
+{
+  std::vector<Vector3> placed;
+  for (std::size_t i = 0; i < stroke.points.size(); ++i)
+  {
+    placed.push_back(surfacePosition(surface.mesh(),
+      PanelPointOnSurface(surface, stroke.points[i],
+        "drawn stroke " + std::to_string(index) + " point " + std::to_string(i))));
+  }
+  return placed;
+}
+} // namespace
+
+std::vector<std::vector<Vector3>> PanelStrokes(
+  const DrawnStrokeList& drawn, const StrokePointList& typed, const Surface& surface)
+{
+  std::vector<std::vector<Vector3>> strokes;
+  if (!drawn.Empty())
+  {
+    const std::vector<DrawnStroke> list = drawn.Strokes();
+    for (std::size_t s = 0; s < list.size(); ++s)
+    {
+      strokes.push_back(onSurface(surface, list[s], s));
+    }
+  }
+  else if (typed.Count() > 0)
+  {
+    strokes.push_back(PanelPointsOnSurface(typed, surface, "stroke"));
+  }
+  return strokes;
+}
+
+std::vector<std::vector<Vector3>> ReadStrokes(
+  vtkPolyData* strokeInput, const DrawnStrokeList& drawn, const StrokePointList& typed, const Surface& surface)
+{
+  if (strokeInput)
+  {
+    std::vector<std::vector<Vector3>> strokes = ReadPolylines(strokeInput, "the stroke input");
+    if (strokes.empty())
+    {
+      throw Error("the stroke input holds no lines");
+    }
+    return strokes;
+  }
+  std::vector<std::vector<Vector3>> strokes = PanelStrokes(drawn, typed, surface);
+  if (strokes.empty())
+  {
+    throw Error("there is no stroke: draw one (in ParaView: hold Ctrl and drag across the surface), type its points "
+                "(StrokePoints) or connect polylines to the Strokes input");
+  }
+  return strokes;
+}
+
+PanelLabelledStrokes PanelLabelled(const DrawnStrokeList& drawn,
+  const std::vector<std::pair<int, const StrokePointList*>>& typed, const Surface& surface)
+{
+  PanelLabelledStrokes out;
+  std::set<int> drawnLabels;
+  const std::vector<DrawnStroke> list = drawn.Empty() ? std::vector<DrawnStroke>() : drawn.Strokes();
+  for (std::size_t s = 0; s < list.size(); ++s)
+  {
+    const int label = list[s].label;
+    if (label < OverrideStrokeLabel)
+    {
+      throw Error("drawn stroke " + std::to_string(s) + " has the label " + std::to_string(label) +
+        "; labels are 0 and up (background 0, foreground 1), or -1 for an override stroke");
+    }
+    if (label == OverrideStrokeLabel)
+    {
+      out.overrides.push_back(onSurface(surface, list[s], s));
+      continue;
+    }
+    drawnLabels.insert(label);
+    out.strokes.push_back({ label, onSurface(surface, list[s], s) });
+  }
+  for (const auto& [label, points] : typed)
+  {
+    if (points && points->Count() > 0 && drawnLabels.count(label) == 0)
+    {
+      out.strokes.push_back({ label,
+        PanelPointsOnSurface(*points, surface, label == 1 ? "foreground" : label == 0 ? "background" : "typed stroke") });
+    }
+  }
+  return out;
+}
+
+} // namespace kerf
