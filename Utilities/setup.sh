@@ -10,6 +10,8 @@ packages=(
   # ParaView 5.11 with its own VTK, its Python modules, and the Qt development files its CMake needs
   paraview paraview-dev python3-paraview qtbase5-dev qttools5-dev libqt5svg5-dev
   qtxmlpatterns5-dev-tools
+  # the plugin's panels link ParaView's Qt components, whose CMake package wants these too
+  libqt5opengl5-dev libhdf5-dev libnetcdf-dev
   # development files of the libraries ParaView's VTK links, which its CMake package looks for
   libopenmpi-dev libdouble-conversion-dev liblz4-dev liblzma-dev libjpeg-dev libtiff-dev
   libpng-dev libfreetype-dev libglew-dev libgl2ps-dev libutfcpp-dev libxml2-dev libexpat1-dev

@@ -15,12 +15,20 @@ SOURCE = os.environ["KERF_SOURCE_DIR"]
 PROPERTY_TAGS = ("IntVectorProperty", "DoubleVectorProperty", "StringVectorProperty")
 
 
+# The sketch widget's proxies (SketchWidget.xml) are not made by users: the panel sets them up,
+# and ParaView's vtk3DWidgetRepresentation is not Kerf's.
+WIDGET_GROUPS = ("representations", "3d_widgets", "3d_widget_representations")
+
+
 def proxies():
-    """(file, proxy element) for every proxy with a class."""
+    """(file, proxy element) for every proxy with a class, the widget's aside."""
     for path in sorted(glob.glob(os.path.join(SOURCE, "Plugins", "ParaView", "*.xml"))):
-        for proxy in ElementTree.parse(path).getroot().iter():
-            if proxy.get("class"):
-                yield os.path.basename(path), proxy
+        for group in ElementTree.parse(path).getroot().iter("ProxyGroup"):
+            if group.get("name") in WIDGET_GROUPS:
+                continue
+            for proxy in group.iter():
+                if proxy.get("class"):
+                    yield os.path.basename(path), proxy
 
 
 def defaults(element):

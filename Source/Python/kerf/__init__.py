@@ -11,6 +11,7 @@ from vtkmodules import vtkCommonCore, vtkCommonDataModel, vtkCommonExecutionMode
 
 from .KerfIO import *  # noqa: F401,F403
 from .KerfFilters import *  # noqa: F401,F403
+from .KerfWidgets import *  # noqa: F401,F403
 from .KerfEvaluation import *  # noqa: F401,F403
 
 __version__ = "0.1.0"
