@@ -38,6 +38,7 @@
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -333,6 +334,7 @@ void pqKerfSketchPropertyWidget::setStatus(const QString& text, bool problem)
   {
     this->Status->setText(text);
     this->Status->setStyleSheet(problem ? "color: #b03000;" : "");
+    this->fitToPanel();
   }
 }
 
@@ -522,8 +524,46 @@ bool pqKerfSketchPropertyWidget::overView(QObject* watched) const
   return viewWidget->rect().contains(viewWidget->mapFromGlobal(QCursor::pos()));
 }
 
+void pqKerfSketchPropertyWidget::showEvent(QShowEvent* event)
+{
+  this->Superclass::showEvent(event);
+  for (QWidget* parent = this->parentWidget(); parent && !this->PanelViewport; parent = parent->parentWidget())
+  {
+    if (QScrollArea* area = qobject_cast<QScrollArea*>(parent))
+    {
+      this->PanelViewport = area->viewport();
+    }
+  }
+  this->fitToPanel();
+}
+
+// The panel's other rows may be wider than what shows of it: this widget keeps within what shows,
+// its help and status line wrapped, so that nothing of it is cut off.
+void pqKerfSketchPropertyWidget::fitToPanel()
+{
+  if (!this->PanelViewport)
+  {
+    return;
+  }
+  const int width = std::max(120, this->PanelViewport->width() - this->mapTo(this->PanelViewport, QPoint(0, 0)).x() - 8);
+  this->setMaximumWidth(width);
+  for (QLabel* label : { this->Help.data(), this->Status.data() })
+  {
+    if (label)
+    {
+      label->setMaximumWidth(width);
+      // The panel's layout does not ask a label for its height at a new width: say it.
+      label->setMinimumHeight(label->text().isEmpty() ? 0 : label->heightForWidth(width));
+    }
+  }
+}
+
 bool pqKerfSketchPropertyWidget::eventFilter(QObject* watched, QEvent* event)
 {
+  if (event->type() == QEvent::Resize && watched == this->PanelViewport)
+  {
+    this->fitToPanel();
+  }
   if ((event->type() != QEvent::KeyPress && event->type() != QEvent::ShortcutOverride) || !this->isSelected() ||
     !this->isWidgetVisible())
   {

@@ -56,6 +56,9 @@ public:
 
   bool eventFilter(QObject* watched, QEvent* event) override;
 
+protected:
+  void showEvent(QShowEvent* event) override;
+
 Q_SIGNALS:
   void drawnChanged();
 
@@ -77,6 +80,7 @@ private:
   void showMessage(vtkObject* caller, unsigned long event, void* data);
   void setStatus(const QString& text, bool problem);
   bool overView(QObject* watched) const;
+  void fitToPanel();
 
   int Mode;
   bool Labelled = false;
@@ -86,6 +90,7 @@ private:
   QPointer<QComboBox> Label;
   QPointer<QCheckBox> Follow;
   QPointer<QPushButton> UndoButton;
+  QPointer<QWidget> PanelViewport;
   QElapsedTimer Since;
   bool Timing = false;
   unsigned long MessageObserver = 0;

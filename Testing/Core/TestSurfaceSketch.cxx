@@ -111,15 +111,18 @@ TEST(SurfaceSketch, StrokeIsSplitWhereItLeavesTheSurfaceOrCrossesAContour)
   const DepthImage twoBalls = render({ left, right });
   SurfaceStrokeTracer apart(twoBalls, 40, 100);
   apart.moveTo(160, 100);
-  ASSERT_EQ(apart.pieces().size(), 2u);
-  for (const Vector3& p : apart.pieces()[0])
-  {
-    EXPECT_LE(offSurface(p, left), 0.01);
-  }
-  for (const Vector3& p : apart.pieces()[1])
-  {
-    EXPECT_LE(offSurface(p, right), 0.01);
-  }
+  // Every point of each piece on the ball it should be on.
+  auto expectOn = [](const SurfaceStrokeTracer& tracer, const std::vector<Ball>& balls) {
+    ASSERT_EQ(tracer.pieces().size(), balls.size());
+    for (std::size_t i = 0; i < balls.size(); ++i)
+    {
+      for (const Vector3& p : tracer.pieces()[i])
+      {
+        EXPECT_LE(offSurface(p, balls[i]), 0.01) << "piece " << i;
+      }
+    }
+  };
+  expectOn(apart, { left, right });
   // A small ball in front of a large one: across the small one's contour the depth jumps, so the
   // stroke has three pieces (large, small, large) although it never leaves the surface.
   const Ball back{ Vector3(0.0, 0.0, -0.5), 1.0 };
@@ -127,18 +130,7 @@ TEST(SurfaceSketch, StrokeIsSplitWhereItLeavesTheSurfaceOrCrossesAContour)
   const DepthImage nested = render({ back, front });
   SurfaceStrokeTracer across(nested, 50, 100);
   across.moveTo(150, 100);
-  ASSERT_EQ(across.pieces().size(), 3u);
-  for (const Vector3& p : across.pieces()[1])
-  {
-    EXPECT_LE(offSurface(p, front), 0.01);
-  }
-  for (int piece : { 0, 2 })
-  {
-    for (const Vector3& p : across.pieces()[piece])
-    {
-      EXPECT_LE(offSurface(p, back), 0.01);
-    }
-  }
+  expectOn(across, { back, front, back });
   // Pressed and released on the background: nothing.
   SurfaceStrokeTracer miss(nested, 3, 3);
   miss.moveTo(5, 4);
