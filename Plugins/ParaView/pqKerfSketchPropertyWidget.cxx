@@ -20,6 +20,7 @@
 #include "vtkCommand.h"
 #include "vtkPointSet.h"
 #include "vtkOutputWindow.h"
+#include "vtkPVLogger.h"
 #include "vtkPVDataInformation.h"
 #include "vtkPVXMLElement.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
@@ -180,8 +181,12 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
   pqSettings* settings = pqApplicationCore::instance()->settings();
   const QString key = QString("Kerf/Follow/%1").arg(smproxy->GetXMLName());
   this->Follow->setChecked(settings->value(key, true).toBool());
-  QObject::connect(this->Follow, &QCheckBox::toggled, [key](bool on) {
+  QObject::connect(this->Follow, &QCheckBox::toggled, [this, key](bool on) {
     pqApplicationCore::instance()->settings()->setValue(key, on);
+    if (vtkKerfSketchWidget* widget = this->sketchWidget())
+    {
+      widget->SetRenderAfterChange(!on); // the apply renders
+    }
   });
   layout->addWidget(this->Follow);
   this->Status = new QLabel(this);
@@ -223,6 +228,7 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
   {
     this->MessageObserver = sketchWidget->AddObserver(
       vtkKerfSketchWidget::MessageEvent, this, &pqKerfSketchPropertyWidget::showMessage);
+    sketchWidget->SetRenderAfterChange(!this->Follow->isChecked());
   }
   qApp->installEventFilter(this);
   this->setWidgetVisible(true);
@@ -374,6 +380,7 @@ void pqKerfSketchPropertyWidget::gestureEnded()
     if (points > 0 && points < minimumPoints)
     {
       this->setStatus(tr("Click %1 more point(s): the filter needs %2.").arg(minimumPoints - points).arg(minimumPoints), false);
+      this->render(); // the widget leaves it to the apply, which waits
       return;
     }
     if (representation->GetNumberOfStrokes() > 0 && representation->GetNumberOfLabels() < minimumLabels)
@@ -381,6 +388,7 @@ void pqKerfSketchPropertyWidget::gestureEnded()
       this->setStatus(tr("Draw a stroke of another label (the keys 0-9 over the view): the parts need %1 labels.")
                         .arg(minimumLabels),
         false);
+      this->render();
       return;
     }
   }
@@ -408,7 +416,11 @@ void pqKerfSketchPropertyWidget::applyNow()
     this->connect(view, SIGNAL(endRender()), SLOT(rendered()), Qt::UniqueConnection);
   }
   this->Timing = true;
+  const qint64 queued = this->Since.elapsed();
   panel->apply();
+  this->AppliedAt = this->Since.elapsed();
+  vtkVLogF(PARAVIEW_LOG_APPLICATION_VERBOSITY(), "Kerf sketch: apply from %lld to %lld ms after the gesture",
+    static_cast<long long>(queued), static_cast<long long>(this->AppliedAt));
   if (pqView* view = this->view())
   {
     view->render();
@@ -423,6 +435,8 @@ void pqKerfSketchPropertyWidget::rendered()
   }
   this->Timing = false;
   const qint64 ms = this->Since.elapsed();
+  vtkVLogF(PARAVIEW_LOG_APPLICATION_VERBOSITY(), "Kerf sketch: shown %lld ms after the gesture (render %lld ms)",
+    static_cast<long long>(ms), static_cast<long long>(ms - this->AppliedAt));
   vtkSMSourceProxy* source = vtkSMSourceProxy::SafeDownCast(this->proxy());
   vtkPVDataInformation* information = source ? source->GetDataInformation(0) : nullptr;
   if (information && information->GetNumberOfCells() == 0)

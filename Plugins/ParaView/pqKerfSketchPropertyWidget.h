@@ -93,6 +93,7 @@ private:
   QPointer<QWidget> PanelViewport;
   QElapsedTimer Since;
   bool Timing = false;
+  qint64 AppliedAt = 0;
   unsigned long MessageObserver = 0;
 };
 

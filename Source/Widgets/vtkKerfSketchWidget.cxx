@@ -109,7 +109,10 @@ void vtkKerfSketchWidget::EndAction(vtkAbstractWidget* widget)
   self->LastChanged = outcome == vtkKerfSketchRepresentation::GESTURE_CHANGED;
   self->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
   self->Say(representation->GetMessage());
-  self->Render();
+  if (!self->LastChanged || self->RenderAfterChange)
+  {
+    self->Render();
+  }
 }
 
 void vtkKerfSketchWidget::KeyAction(vtkAbstractWidget* widget)
@@ -150,7 +153,10 @@ void vtkKerfSketchWidget::Changed(bool changed)
   {
     this->InvokeEvent(vtkCommand::StartInteractionEvent, nullptr);
     this->InvokeEvent(vtkCommand::EndInteractionEvent, nullptr);
-    this->Render();
+    if (this->RenderAfterChange)
+    {
+      this->Render();
+    }
   }
 }
 
@@ -208,6 +214,7 @@ void vtkKerfSketchWidget::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "DrawWithoutModifier: " << this->DrawWithoutModifier << "\n";
+  os << indent << "RenderAfterChange: " << this->RenderAfterChange << "\n";
   os << indent << "LastChanged: " << this->LastChanged << "\n";
   os << indent << "Message: " << this->Message << "\n";
 }

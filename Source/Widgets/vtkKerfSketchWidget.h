@@ -54,6 +54,15 @@ public:
   ///@}
 
   ///@{
+  /// Render the view when a gesture, Undo or Clear changes the drawn input. Default on; off where
+  /// something else renders right after anyway (ParaView's panel applies the filter, which
+  /// renders), so that the view is not drawn twice.
+  vtkSetMacro(RenderAfterChange, bool);
+  vtkGetMacro(RenderAfterChange, bool);
+  vtkBooleanMacro(RenderAfterChange, bool);
+  ///@}
+
+  ///@{
   /// Take back the last change; forget every drawn stroke, disc and point. Each invokes
   /// StartInteractionEvent and EndInteractionEvent when it changes something.
   void Undo();
@@ -89,6 +98,7 @@ protected:
   void Say(const std::string& message);
 
   bool DrawWithoutModifier = false;
+  bool RenderAfterChange = true;
   bool Drawing = false;
   bool LastChanged = false;
   std::string Message;

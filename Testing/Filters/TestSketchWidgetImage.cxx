@@ -240,6 +240,15 @@ int TestSketchWidgetImage(int argc, char* argv[])
   mouse.click(5, 5);
   ok &= KERF_CHECK(said.find("missed the surface") != std::string::npos);
 
+  // Nothing shown in the view (the surface hidden, or its source not yet applied): the widget
+  // says so.
+  actor->VisibilityOff();
+  sketch->SetMode(vtkKerfSketchRepresentation::STROKES); // (whose strokes were cleared above)
+  window->Render();
+  mouse.drag(100, 150, 200, 150);
+  ok &= KERF_CHECK(!widget->GetLastChanged() && said.find("Nothing is shown to draw on") != std::string::npos);
+  actor->VisibilityOn();
+
   // The picture: the discs' rims on the sphere (orange adding, blue subtracting), the point.
   sketch->SetMode(vtkKerfSketchRepresentation::DISCS);
   window->Render();
