@@ -120,7 +120,9 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
   // The panel: two lines of help, the label, the buttons, the toggle, what happened last.
   QVBoxLayout* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  this->Help = new QLabel(helpText(mode, this->Labelled), this);
+  this->Help = new QLabel(
+    sketch && sketch->GetAttribute("help") ? QString::fromUtf8(sketch->GetAttribute("help")) : helpText(mode, this->Labelled),
+    this);
   this->Help->setObjectName("Help");
   this->Help->setWordWrap(true);
   layout->addWidget(this->Help);

@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "KerfEasyMeshCutting.h"
+#include "KerfDrawnInput.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"
 
@@ -65,6 +66,16 @@ int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inpu
     if (vtkPolyData* overrides = vtkPolyData::GetData(inputVector[1], 0))
     {
       options.overrides = kerf::ReadPolylines(overrides, "the override strokes");
+    }
+    else if (!this->DrawnStrokes->Empty())
+    {
+      for (const kerf::DrawnStroke& stroke : this->DrawnStrokes->Strokes())
+      {
+        options.overrides.push_back(stroke.points);
+      }
+    }
+    if (!options.overrides.empty())
+    {
       options.overrideRadius = kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
     }
     this->UpdateProgress(0.1);

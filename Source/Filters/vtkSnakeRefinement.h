@@ -11,7 +11,9 @@
  * inside triangles and cannot cross; points where three labels meet and the mesh's border stay
  * fixed. Input 1 (optional): override strokes, polylines drawn where the boundary should run
  * (section 5.2): after the refinement each replaces the part of the boundary within
- * OverrideRadius of it by itself.
+ * OverrideRadius of it by itself. Without input 1 the override strokes are those drawn in the
+ * panel (vtkDrawnStrokeAlgorithm; in ParaView: hold Ctrl and drag along where the boundary should
+ * run), their labels unused.
  *
  * Output 0: the surface with the refined labels in the cell array of the input's name (a triangle
  * the snake crosses takes the label holding the larger part of its area), field data
@@ -28,15 +30,15 @@
 #define vtkSnakeRefinement_h
 
 #include "KerfFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkDrawnStrokeAlgorithm.h"
 
 #include <memory>
 
-class KERFFILTERS_EXPORT vtkSnakeRefinement : public vtkPolyDataAlgorithm
+class KERFFILTERS_EXPORT vtkSnakeRefinement : public vtkDrawnStrokeAlgorithm
 {
 public:
   static vtkSnakeRefinement* New();
-  vtkTypeMacro(vtkSnakeRefinement, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSnakeRefinement, vtkDrawnStrokeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{

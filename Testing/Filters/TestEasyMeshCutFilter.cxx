@@ -311,6 +311,16 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).empty());
     ok &= KERF_CHECK(segmentsOf(drawn->GetOutput()) == segmentsOf(edited->GetOutput()));
     ok &= KERF_CHECK(drawn->GetBoundary()->GetNumberOfPoints() == boundary->GetNumberOfPoints());
+    // Snake Refinement takes the override as input 1 or drawn in its panel, with the same result.
+    GrowAndRefine byInput(dumbbell, twoStrokes);
+    byInput.snake->SetInputData(1, override);
+    byInput.snake->SetOverrideRadius(0.15 / mesh.boundingBoxDiagonal());
+    GrowAndRefine byPanel(dumbbell, twoStrokes);
+    byPanel.snake->AddDrawnStroke(points);
+    byPanel.snake->SetOverrideRadius(0.15 / mesh.boundingBoxDiagonal());
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(byInput.snake).empty());
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(byPanel.snake).empty());
+    ok &= KERF_CHECK(segmentsOf(byPanel.snake->GetOutput()) == segmentsOf(byInput.snake->GetOutput()));
     // A drawn label below -1 is refused, naming the stroke.
     drawn->SetDrawnStrokeLabel(2, -2);
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).find("drawn stroke 2 has the label -2") != std::string::npos);
