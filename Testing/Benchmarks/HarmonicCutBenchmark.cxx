@@ -26,6 +26,10 @@
 //   BM_HarmonicCutRefinement/<size>          a new refinement stroke at the slid cut's value,
 //                                            its constraints appended to the first stroke's
 //                                            (SolverWork "update"), and its cut
+//   BM_StrokeCutDrawnStroke/<size>           a new stroke drawn in Stroke Cut's panel (its
+//                                            DrawnStrokePoints, what the sketch widget sets):
+//                                            vtkStrokeCut alone, with its defaults (the automatic
+//                                            formulation), the segments and the cut
 // Each size's surface, weights and constraints are built once, outside the timed loops, and kept
 // while that size runs, with the last solver of BM_HarmonicFactorization (BM_HarmonicSolve
 // solves with it; the next three read its field) and the filter pipeline (its mesh conversion
@@ -36,6 +40,7 @@
 #include "vtkHarmonicField.h"
 #include "vtkIsolineCut.h"
 #include "vtkStrokeConstraints.h"
+#include "vtkStrokeCut.h"
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
@@ -495,6 +500,41 @@ void harmonicCutNewStroke(benchmark::State& state, HarmonicScene& scene)
   alternateStrokes(state, pipeline, pipeline.stroke, pipeline.strokePoints, "a new stroke");
 }
 
+void strokeCutDrawnStroke(benchmark::State& state, HarmonicScene& scene)
+{
+  vtkNew<vtkStrokeCut> cut;
+  cut->SetInputData(scene.polyData);
+  auto draw = [&cut](const std::vector<kerf::Vector3>& stroke) {
+    cut->SetNumberOfDrawnStrokePoints(static_cast<int>(stroke.size()));
+    for (std::size_t i = 0; i < stroke.size(); ++i)
+    {
+      cut->SetDrawnStrokePoint(static_cast<int>(i), stroke[i].x(), stroke[i].y(), stroke[i].z());
+    }
+  };
+  draw(scene.strokes.around[1]);
+  cut->Update(); // the first time: mesh conversion and factorization
+  bool updatedEveryTime = true;
+  std::size_t which = 0;
+  for (auto _ : state)
+  {
+    draw(scene.strokes.around[which]);
+    cut->Update();
+    vtkStringArray* work =
+      vtkStringArray::SafeDownCast(cut->GetOutput()->GetFieldData()->GetAbstractArray("SolverWork"));
+    updatedEveryTime = updatedEveryTime && work && work->GetValue(0) == "update";
+    which = 1 - which;
+  }
+  vtkDataArray* sizes = cut->GetOutput()->GetFieldData()->GetArray("SegmentSizes");
+  if (!updatedEveryTime)
+  {
+    Fail(state, "a new drawn stroke did not only update the factorization");
+  }
+  else if (!sizes || sizes->GetNumberOfTuples() != 2 || cut->GetCut()->GetNumberOfLines() != 1)
+  {
+    Fail(state, "the drawn stroke does not cut the dumbbell in two");
+  }
+}
+
 void harmonicCutSliding(benchmark::State& state, HarmonicScene& scene)
 {
   CutPipeline& pipeline = pipelineOf(scene);
@@ -558,6 +598,7 @@ void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes)
     { "BM_HarmonicCutNewStroke", harmonicCutNewStroke },
     { "BM_HarmonicCutSliding", harmonicCutSliding },
     { "BM_HarmonicCutRefinement", harmonicCutRefinement },
+    { "BM_StrokeCutDrawnStroke", strokeCutDrawnStroke },
   };
   for (const CutSize& size : Sizes)
   {

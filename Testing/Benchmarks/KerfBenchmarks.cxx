@@ -80,6 +80,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterChartParameterizationBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterEasyMeshCuttingBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterAutomaticSegmentationBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterSketchBenchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return kerf::benchmarks::AnyBenchmarkFailed() ? 1 : 0;
