@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Evaluation/SegmentationMetrics.h"
+#include "Evaluation/SimulatedClicks.h"
 #include "Evaluation/SimulatedStrokes.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "IO/MeshFormats.h"
@@ -555,6 +556,32 @@ MethodOutput segmentWithRegionGrowing(
   return output;
 }
 
+// ROI Scissor with a simulated user (kerf::selectByClicks): each connected piece of the input
+// human's segments but the largest selected in turn, extremities first, by a click at the middle
+// of its spine with a radius that holds it, then corrected by added or subtracted discs while the
+// region is wrong; each region cut from what earlier regions left, the largest piece the rest.
+MethodOutput segmentWithRoiScissor(const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters)
+{
+  SimulatedClickOptions options;
+  options.radiusMargin = parameters.positive("margin", options.radiusMargin);
+  options.clicksPerPiece = wholeNumber(parameters, "clicks", options.clicksPerPiece);
+  options.correctionThreshold = parameters.number("threshold", options.correctionThreshold);
+  options.surfaceThreshold = parameters.number("surface-threshold", options.surfaceThreshold);
+  options.spineDepth = parameters.positive("depth", options.spineDepth);
+  const std::string placement = parameters.text("placement", "spine-middle");
+  const std::string order = parameters.text("order", "extremities");
+  if ((placement != "spine-middle" && placement != "innermost") || (order != "extremities" && order != "smallest"))
+  {
+    throw Error("the method parameters 'placement' (spine-middle, innermost) and 'order' (extremities, smallest) "
+                "got '" + placement + "' and '" + order + "'");
+  }
+  options.placement = placement == "innermost" ? SimulatedClickPlacement::Innermost : SimulatedClickPlacement::SpineMiddle;
+  options.order = order == "smallest" ? SimulatedClickOrder::SmallestFirst : SimulatedClickOrder::Extremities;
+  options.includeClaimed = wholeNumber(parameters, "hanging", 1) != 0;
+  const ClickedSegmentation selected = selectByClicks(c.surface, *input, options);
+  return { selected.labels, static_cast<int>(selected.clicks.size()) };
+}
+
 std::string quoted(const std::string& text)
 {
   std::string out = "\"";
@@ -648,6 +675,10 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, true);
       } },
+    { "roi-scissor",
+      "ROI Scissor from simulated clicks: each piece of the input human but the largest, extremities first, by a click at the middle of its spine, corrected by added or subtracted discs; each region cut from what the earlier left",
+      { "margin", "clicks", "threshold", "surface-threshold", "placement", "order", "hanging", "depth" },
+      SegmentationMethod::Protocol::Interactive, segmentWithRoiScissor },
   };
   return methods;
 }
