@@ -28,6 +28,10 @@
  *   to faces at least this fraction as far inside as the innermost), corrections (3), overrides
  *   (0: rounds of override strokes along the input human's boundaries), override-radius (0.02),
  *   spacing (0.03).
+ * - "roi-scissor": ROI Scissor from simulated clicks (kerf::selectByClicks), each human in turn
+ *   giving the input: each piece of a segment but the largest selected by a click with a disc
+ *   that holds it, corrected by added or subtracted discs while its region is wrong; the largest
+ *   piece is the rest (Documentation/filters/SegmentationMetrics.md lists its parameters).
  *
  * With an OutputDirectory the runner writes results.csv (one row per model), summary.csv (means
  * per category and overall) and, with WritePictures, pictures/N.png (the method's segmentation
