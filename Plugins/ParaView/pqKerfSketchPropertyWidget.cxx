@@ -36,6 +36,10 @@
 #include <QCursor>
 #include <QHBoxLayout>
 #include <QKeyEvent>
+#include <QAbstractSpinBox>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QTextEdit>
 #include <QLabel>
 #include <QPixmap>
 #include <QPushButton>
@@ -116,6 +120,10 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
     sketch->GetScalarAttribute("overrides", &overrides);
   }
   widget->UpdateVTKObjects();
+  if (vtkKerfSketchRepresentation* representation = this->representation())
+  {
+    representation->SetAllowOverride(overrides != 0);
+  }
 
   // The panel: two lines of help, the label, the buttons, the toggle, what happened last.
   QVBoxLayout* layout = new QVBoxLayout(this);
@@ -231,6 +239,8 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
     this->MessageObserver = sketchWidget->AddObserver(
       vtkKerfSketchWidget::MessageEvent, this, &pqKerfSketchPropertyWidget::showMessage);
     sketchWidget->SetRenderAfterChange(!this->Follow->isChecked());
+    // A label chosen in the view (a key the panel did not see): the panel shows it too.
+    this->LabelObserver = sketchWidget->AddObserver(vtkCommand::ModifiedEvent, this, &pqKerfSketchPropertyWidget::showLabel);
   }
   qApp->installEventFilter(this);
   this->setWidgetVisible(true);
@@ -238,15 +248,36 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
 
 pqKerfSketchPropertyWidget::~pqKerfSketchPropertyWidget()
 {
+  qApp->removeEventFilter(this);
   if (vtkKerfSketchWidget* widget = this->sketchWidget())
   {
     widget->RemoveObserver(this->MessageObserver);
+    widget->RemoveObserver(this->LabelObserver);
   }
 }
 
 vtkKerfSketchWidget* pqKerfSketchPropertyWidget::sketchWidget() const
 {
   return vtkKerfSketchWidget::SafeDownCast(this->widgetProxy()->GetWidget());
+}
+
+vtkKerfSketchRepresentation* pqKerfSketchPropertyWidget::representation() const
+{
+  vtkSMProxy* proxy = this->widgetProxy()->GetRepresentationProxy();
+  return proxy ? vtkKerfSketchRepresentation::SafeDownCast(proxy->GetClientSideObject()) : nullptr;
+}
+
+void pqKerfSketchPropertyWidget::showLabel()
+{
+  vtkKerfSketchRepresentation* representation = this->representation();
+  if (this->Label && representation)
+  {
+    const int index = this->Label->findData(representation->GetCurrentLabel());
+    if (index >= 0 && index != this->Label->currentIndex())
+    {
+      this->Label->setCurrentIndex(index);
+    }
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -371,8 +402,7 @@ void pqKerfSketchPropertyWidget::gestureEnded()
   // What the filter needs before it can run at all (a path two points, Region Growing two labels):
   // until then the gesture waits, rather than each one failing.
   vtkPVXMLElement* sketch = hint(this->propertyGroup(), "KerfSketch");
-  vtkKerfSketchRepresentation* representation = vtkKerfSketchRepresentation::SafeDownCast(
-    this->widgetProxy()->GetRepresentationProxy()->GetClientSideObject());
+  vtkKerfSketchRepresentation* representation = this->representation();
   int minimumPoints = 0, minimumLabels = 0;
   if (sketch && representation)
   {
@@ -516,7 +546,10 @@ void pqKerfSketchPropertyWidget::useSelection()
   {
     widget->AddDiscAround(cells->GetPoints());
   }
-  this->setStatus(tr("%1 selected cells taken.").arg(cells->GetNumberOfPoints()), false);
+  if (widget->GetLastChanged())
+  {
+    this->setStatus(tr("%1 selected cells taken.").arg(cells->GetNumberOfPoints()), false);
+  }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -586,10 +619,19 @@ bool pqKerfSketchPropertyWidget::eventFilter(QObject* watched, QEvent* event)
     return this->Superclass::eventFilter(watched, event);
   }
   QKeyEvent* key = static_cast<QKeyEvent*>(event);
-  const bool undo = key->key() == Qt::Key_Z && (key->modifiers() & Qt::ControlModifier);
-  const bool digit = this->Labelled && key->modifiers() == Qt::NoModifier && key->key() >= Qt::Key_0 &&
+  // Ctrl+Z alone (Ctrl+Shift+Z is redo), digits and O unmodified; never a key typed into a text
+  // field or a spin box that has the focus.
+  const Qt::KeyboardModifiers modifiers = key->modifiers() & ~Qt::KeypadModifier;
+  QWidget* focus = QApplication::focusWidget();
+  if (focus && (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
+                 qobject_cast<QTextEdit*>(focus) || qobject_cast<QPlainTextEdit*>(focus)))
+  {
+    return this->Superclass::eventFilter(watched, event);
+  }
+  const bool undo = key->key() == Qt::Key_Z && modifiers == Qt::ControlModifier;
+  const bool digit = this->Labelled && modifiers == Qt::NoModifier && key->key() >= Qt::Key_0 &&
     key->key() <= Qt::Key_9;
-  const bool override = this->Labelled && key->modifiers() == Qt::NoModifier && key->key() == Qt::Key_O &&
+  const bool override = this->Labelled && modifiers == Qt::NoModifier && key->key() == Qt::Key_O &&
     this->Label && this->Label->findData(-1) >= 0;
   if (!(undo || digit || override) || !this->overView(watched))
   {

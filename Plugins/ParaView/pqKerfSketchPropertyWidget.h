@@ -13,6 +13,7 @@ class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPushButton;
+class vtkKerfSketchRepresentation;
 class vtkKerfSketchWidget;
 class vtkObject;
 
@@ -60,6 +61,9 @@ protected:
   void showEvent(QShowEvent* event) override;
 
 Q_SIGNALS:
+  /// The notify signal of the drawn-input properties, which only ever come from the server
+  /// manager (the widget sets the filter's properties; Apply commits what these hold): never
+  /// emitted.
   void drawnChanged();
 
 protected Q_SLOTS:
@@ -77,6 +81,8 @@ private Q_SLOTS:
 
 private:
   vtkKerfSketchWidget* sketchWidget() const;
+  vtkKerfSketchRepresentation* representation() const;
+  void showLabel();
   void showMessage(vtkObject* caller, unsigned long event, void* data);
   void setStatus(const QString& text, bool problem);
   bool overView(QObject* watched) const;
@@ -95,6 +101,7 @@ private:
   bool Timing = false;
   qint64 AppliedAt = 0;
   unsigned long MessageObserver = 0;
+  unsigned long LabelObserver = 0;
 };
 
 #endif

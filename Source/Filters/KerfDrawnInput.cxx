@@ -92,43 +92,7 @@ void SetPanelInteger(vtkAlgorithm* algorithm, PanelIntegerList& list, int index,
 
 std::vector<DrawnStroke> DrawnStrokeList::Strokes() const
 {
-  const std::vector<Vector3>& points = this->Points.Points();
-  std::vector<int> sizes = this->Sizes.Values();
-  if (sizes.empty() && !points.empty())
-  {
-    sizes.push_back(static_cast<int>(points.size()));
-  }
-  long long total = 0;
-  for (std::size_t s = 0; s < sizes.size(); ++s)
-  {
-    if (sizes[s] < 1)
-    {
-      throw Error("drawn stroke " + std::to_string(s) + " has " + std::to_string(sizes[s]) +
-        " points (DrawnStrokeSizes); every stroke has at least one");
-    }
-    total += sizes[s];
-  }
-  if (total != static_cast<long long>(points.size()))
-  {
-    throw Error("the drawn strokes' sizes (DrawnStrokeSizes) add up to " + std::to_string(total) + " points, but " +
-      std::to_string(points.size()) + " are drawn (DrawnStrokePoints)");
-  }
-  const std::vector<int>& labels = this->Labels.Values();
-  if (!labels.empty() && labels.size() != sizes.size())
-  {
-    throw Error("there are " + std::to_string(labels.size()) + " drawn stroke labels (DrawnStrokeLabels) for " +
-      std::to_string(sizes.size()) + " strokes");
-  }
-  std::vector<DrawnStroke> strokes(sizes.size());
-  std::size_t next = 0;
-  for (std::size_t s = 0; s < sizes.size(); ++s)
-  {
-    strokes[s].points.assign(points.begin() + static_cast<std::ptrdiff_t>(next),
-      points.begin() + static_cast<std::ptrdiff_t>(next + static_cast<std::size_t>(sizes[s])));
-    strokes[s].label = labels.empty() ? 0 : labels[s];
-    next += static_cast<std::size_t>(sizes[s]);
-  }
-  return strokes;
+  return splitDrawnStrokes(this->Points.Points(), this->Sizes.Values(), this->Labels.Values());
 }
 
 bool DrawnStrokeList::Add(const std::vector<Vector3>& points, int label)
@@ -137,8 +101,10 @@ bool DrawnStrokeList::Add(const std::vector<Vector3>& points, int label)
   {
     return false;
   }
-  // Sizes and labels for every earlier stroke first, so that the new one is a stroke of its own.
+  // Sizes and labels for every earlier stroke first, so that the new one is a stroke of its own;
+  // everything is checked before anything changes.
   const std::vector<DrawnStroke> before = this->Strokes();
+  checkCount(static_cast<long long>(this->Points.Count()) + static_cast<long long>(points.size()), "points");
   this->Sizes.SetCount(static_cast<int>(before.size()));
   this->Labels.SetCount(static_cast<int>(before.size()));
   for (std::size_t s = 0; s < before.size(); ++s)
@@ -209,10 +175,7 @@ void SetPanelDisc(vtkAlgorithm* algorithm, DrawnDiscList& list, int index, const
   setAndMark(algorithm, "Cannot set a drawn disc", [&]() { return list.Set(index, disc); });
 }
 
-namespace
-{
-// A drawn stroke's points moved to the nearest surface points ("drawn stroke <s> point <i>").
-std::vector<Vector3> onSurface(const Surface& surface, const DrawnStroke& stroke, std::size_t index)
+std::vector<Vector3> DrawnStrokeOnSurface(const Surface& surface, const DrawnStroke& stroke, std::size_t index)
 {
   std::vector<Vector3> placed;
   for (std::size_t i = 0; i < stroke.points.size(); ++i)
@@ -223,7 +186,20 @@ std::vector<Vector3> onSurface(const Surface& surface, const DrawnStroke& stroke
   }
   return placed;
 }
-} // namespace
+
+std::vector<std::vector<Vector3>> PanelOverrideStrokes(const DrawnStrokeList& drawn, const Surface& surface, bool every)
+{
+  std::vector<std::vector<Vector3>> overrides;
+  const std::vector<DrawnStroke> list = drawn.Empty() ? std::vector<DrawnStroke>() : drawn.Strokes();
+  for (std::size_t s = 0; s < list.size(); ++s)
+  {
+    if (every || list[s].label == OverrideStrokeLabel)
+    {
+      overrides.push_back(DrawnStrokeOnSurface(surface, list[s], s));
+    }
+  }
+  return overrides;
+}
 
 std::vector<std::vector<Vector3>> PanelStrokes(
   const DrawnStrokeList& drawn, const StrokePointList& typed, const Surface& surface)
@@ -234,7 +210,7 @@ std::vector<std::vector<Vector3>> PanelStrokes(
     const std::vector<DrawnStroke> list = drawn.Strokes();
     for (std::size_t s = 0; s < list.size(); ++s)
     {
-      strokes.push_back(onSurface(surface, list[s], s));
+      strokes.push_back(DrawnStrokeOnSurface(surface, list[s], s));
     }
   }
   else if (typed.Count() > 0)
@@ -281,12 +257,12 @@ PanelLabelledStrokes PanelLabelled(const DrawnStrokeList& drawn,
     }
     if (label == OverrideStrokeLabel)
     {
-      out.overrides.push_back(onSurface(surface, list[s], s));
-      continue;
+      continue; // PanelOverrideStrokes' below
     }
     drawnLabels.insert(label);
-    out.strokes.push_back({ label, onSurface(surface, list[s], s) });
+    out.strokes.push_back({ label, DrawnStrokeOnSurface(surface, list[s], s) });
   }
+  out.overrides = PanelOverrideStrokes(drawn, surface, false);
   for (const auto& [label, points] : typed)
   {
     if (points && points->Count() > 0 && drawnLabels.count(label) == 0)

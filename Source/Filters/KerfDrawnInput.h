@@ -3,6 +3,7 @@
 
 #include "KerfFilterUtilities.h"
 #include "Segmentation/RegionGrowing.h"
+#include "Sketch/SurfaceSketch.h"
 
 #include <array>
 #include <string>
@@ -36,12 +37,6 @@ void SetPanelInteger(vtkAlgorithm* algorithm, PanelIntegerList& list, int index,
 /// The label of a drawn override stroke (Easy Mesh Cut's boundary editing): not a part's label.
 constexpr int OverrideStrokeLabel = -1;
 
-/// A stroke drawn in a panel, with its label.
-struct DrawnStroke
-{
-  std::vector<Vector3> points;
-  int label = 0;
-};
 
 /// The strokes drawn in a filter's panel (Kerf's sketch widget in ParaView): the points of every
 /// stroke one after another, the number of points of each (all the points one stroke when there
@@ -54,10 +49,12 @@ public:
   PanelIntegerList Labels;
 
   bool Empty() const { return this->Points.Count() == 0; }
-  /// The strokes in order. Throws kerf::Error when the sizes do not add up to the number of
-  /// points or one is below 1, or when there are labels but not one per stroke.
+  /// The strokes in order (kerf::splitDrawnStrokes). Throws kerf::Error when the sizes do not add
+  /// up to the number of points or one is below 1, or when there are labels but not one per stroke.
   std::vector<DrawnStroke> Strokes() const;
   /// Appends a stroke of `points` with `label`; true when it changed the list (no points: false).
+  /// Throws kerf::Error, changing nothing, when the list would hold more than
+  /// StrokePointList::MaximumCount points or its lists do not agree.
   bool Add(const std::vector<Vector3>& points, int label);
   /// Forgets every stroke; true when there was one.
   bool Clear();
@@ -101,6 +98,14 @@ std::vector<std::vector<Vector3>> PanelStrokes(
 /// polylines, else PanelStrokes; throws kerf::Error when there is no stroke.
 std::vector<std::vector<Vector3>> ReadStrokes(
   vtkPolyData* strokeInput, const DrawnStrokeList& drawn, const StrokePointList& typed, const Surface& surface);
+
+/// The points of a panel's drawn strokes moved to the nearest points of the surface (named "drawn
+/// stroke <s> point <i>" in errors).
+std::vector<Vector3> DrawnStrokeOnSurface(const Surface& surface, const DrawnStroke& stroke, std::size_t index);
+
+/// A panel's drawn strokes labelled OverrideStrokeLabel (all of them with `every`), on the surface:
+/// override strokes for the filters that edit boundaries.
+std::vector<std::vector<Vector3>> PanelOverrideStrokes(const DrawnStrokeList& drawn, const Surface& surface, bool every);
 
 /// Labelled strokes from a panel and the override strokes among them.
 struct PanelLabelledStrokes

@@ -58,7 +58,9 @@ PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* la
   PanelLabelledStrokes read;
   if (strokeInput)
   {
+    // Strokes from the input; override strokes drawn in the panel still edit the boundaries.
     read.strokes = ReadLabelledStrokes(strokeInput, labelArray);
+    read.overrides = PanelOverrideStrokes(drawn, surface, false);
     return read;
   }
   read = PanelLabelled(drawn, typed, surface);

@@ -22,7 +22,8 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
 
 /// The labelled strokes of a filter that grows parts: those of `strokeInput` (ReadLabelledStrokes)
 /// when it is connected, else those of its panel (PanelLabelled, the typed strokes `typed` where
-/// no stroke of their label is drawn). Throws kerf::Error when there is no stroke.
+/// no stroke of their label is drawn); the override strokes drawn in the panel either way.
+/// Throws kerf::Error when there is no stroke.
 PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray,
   const DrawnStrokeList& drawn, const std::vector<std::pair<int, const StrokePointList*>>& typed,
   const Surface& surface);

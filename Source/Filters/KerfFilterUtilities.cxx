@@ -37,6 +37,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <new>
 
 namespace kerf
@@ -599,17 +600,19 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::st
 
 void WriteSegmentSizes(const std::vector<int>& labels, vtkPolyData* output)
 {
-  std::vector<int> sizes;
+  // Labels may be any numbers (a user's stroke labels): counted by label, not by index.
+  std::map<int, int> counts;
   for (int label : labels)
   {
     if (label >= 0)
     {
-      if (static_cast<std::size_t>(label) >= sizes.size())
-      {
-        sizes.resize(static_cast<std::size_t>(label) + 1, 0);
-      }
-      ++sizes[static_cast<std::size_t>(label)];
+      ++counts[label];
     }
+  }
+  std::vector<int> sizes;
+  for (const auto& [label, count] : counts)
+  {
+    sizes.push_back(count);
   }
   output->GetFieldData()->AddArray(MakeIntArray("SegmentSizes", sizes));
 }

@@ -194,8 +194,9 @@ vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, const std::st
 /// A named int array holding `values`.
 vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vector<int>& values);
 
-/// The field array SegmentSizes of `output`: per label 0, 1, ... of `labels` (one per output
-/// cell), the number of cells that have it (cells labelled -1 are not counted). What the
+/// The field array SegmentSizes of `output`: per label of `labels` (one per output cell) that some
+/// cell has, in increasing order of label, the number of cells that have it (cells labelled -1 are
+/// not counted). What the
 /// Information panel shows of a segmentation, and what its tests read.
 void WriteSegmentSizes(const std::vector<int>& labels, vtkPolyData* output);
 

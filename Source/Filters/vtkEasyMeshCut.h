@@ -4,7 +4,9 @@
  *
  * Each stroke (a polyline of input 1, or a point of a vertex cell: a click) carries a label in the cell array named by
  * StrokeLabelArrayName: foreground 1 and background 0 cut out one part; more labels cut out more
- * parts. Without input 1, the foreground and background strokes drawn in the panel are used.
+ * parts. Without input 1, the strokes drawn in the panel (vtkDrawnStrokeAlgorithm, each with its
+ * label), with the typed foreground and background points for the labels 1 and 0 where no stroke
+ * of that label is drawn.
  * Fronts grow from the strokes under the improved isophotic metric (Ji et al. 2006, sections 3
  * and 4.2), a length that grows with the change of the normal and, strongly, with concave
  * curvature; where the boundaries go is BoundaryPlacement's choice (vtkStrokeGrowingAlgorithm):
@@ -12,8 +14,9 @@
  * then a minimum cut through the band where the walks hesitate (CutBand), or the paper's rule,
  * each vertex to its nearest stroke. With Refine, the
  * boundaries are then moved as snakes to where they are short, smooth and curved (section 5.1).
- * Override strokes (polylines of the optional input 2) then edit the boundary (section 5.2): each
- * replaces the part of the boundary within OverrideRadius of it by itself.
+ * Override strokes (polylines of the optional input 2, else the drawn strokes of label -1) then
+ * edit the boundary (section 5.2): each replaces the part of the boundary within OverrideRadius of
+ * it by itself.
  *
  * Output 0: the surface with the cell array SegmentArrayName (the label of each triangle, -1 where
  * no stroke reaches: a component without strokes), the point array "IsophoticDistance" (the

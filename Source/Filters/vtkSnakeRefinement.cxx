@@ -67,12 +67,9 @@ int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inpu
     {
       options.overrides = kerf::ReadPolylines(overrides, "the override strokes");
     }
-    else if (!this->DrawnStrokes->Empty())
+    else
     {
-      for (const kerf::DrawnStroke& stroke : this->DrawnStrokes->Strokes())
-      {
-        options.overrides.push_back(stroke.points);
-      }
+      options.overrides = kerf::PanelOverrideStrokes(*this->DrawnStrokes, surface.GetSurface(), true);
     }
     if (!options.overrides.empty())
     {

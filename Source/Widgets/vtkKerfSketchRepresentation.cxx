@@ -1,9 +1,12 @@
 // vtkKerfSketchRepresentation: the drawn strokes, discs and points, the gestures that make them on the view's depth buffer, and their display.
 #include "vtkKerfSketchRepresentation.h"
 
+#include "Error.h"
 #include "Sketch/SurfaceSketch.h"
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkMatrix4x4.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -44,44 +47,29 @@ struct Drawn
   std::vector<Vector3> points;
 };
 
-struct Stroke
-{
-  std::vector<Vector3> points;
-  int label = 0;
-};
+using Stroke = kerf::DrawnStroke;
 
-// The strokes of flat lists: sizes that do not add up to the points make one stroke of all of
-// them (the filter says what is wrong; the display shows what there is).
+// The most entries a list takes, as a filter's panel lists (kerf::StrokePointList).
+constexpr int MaximumEntries = 10000000;
+
+// The strokes of flat lists (kerf::splitDrawnStrokes); lists that do not agree (while ParaView
+// sets them one after another, or from a script) show all the points as one stroke: the filter
+// says what is wrong, the display shows what there is.
 std::vector<Stroke> strokesOf(const Drawn& drawn)
 {
-  std::vector<Stroke> strokes;
-  long long total = 0;
-  bool valid = true;
-  for (int size : drawn.strokeSizes)
+  try
   {
-    valid = valid && size > 0;
-    total += size;
+    return kerf::splitDrawnStrokes(drawn.strokePoints, drawn.strokeSizes,
+      drawn.strokeLabels.size() == drawn.strokeSizes.size() ? drawn.strokeLabels : std::vector<int>());
   }
-  valid = valid && total == static_cast<long long>(drawn.strokePoints.size());
-  if (!valid || drawn.strokeSizes.empty())
+  catch (const kerf::Error&)
   {
-    if (!drawn.strokePoints.empty())
+    if (drawn.strokePoints.empty())
     {
-      strokes.push_back({ drawn.strokePoints, drawn.strokeLabels.empty() ? 0 : drawn.strokeLabels[0] });
+      return {};
     }
-    return strokes;
+    return { Stroke{ drawn.strokePoints, drawn.strokeLabels.empty() ? 0 : drawn.strokeLabels[0] } };
   }
-  std::size_t next = 0;
-  for (std::size_t s = 0; s < drawn.strokeSizes.size(); ++s)
-  {
-    Stroke stroke;
-    stroke.points.assign(drawn.strokePoints.begin() + static_cast<std::ptrdiff_t>(next),
-      drawn.strokePoints.begin() + static_cast<std::ptrdiff_t>(next + static_cast<std::size_t>(drawn.strokeSizes[s])));
-    stroke.label = s < drawn.strokeLabels.size() ? drawn.strokeLabels[s] : 0;
-    next += static_cast<std::size_t>(drawn.strokeSizes[s]);
-    strokes.push_back(stroke);
-  }
-  return strokes;
 }
 
 void setStrokes(Drawn& drawn, const std::vector<Stroke>& strokes)
@@ -97,27 +85,46 @@ void setStrokes(Drawn& drawn, const std::vector<Stroke>& strokes)
   }
 }
 
-template <typename T>
-void resizeList(std::vector<T>& list, int count, const T& fill)
+// What a setter did to a list.
+enum class ListChange
 {
-  if (count >= 0 && count <= (1 << 28))
+  Refused,
+  Same,
+  Changed
+};
+
+template <typename T>
+ListChange resizeList(std::vector<T>& list, int count, const T& fill)
+{
+  if (count < 0 || count > MaximumEntries)
   {
-    list.resize(static_cast<std::size_t>(count), fill);
+    return ListChange::Refused;
   }
+  if (static_cast<std::size_t>(count) == list.size())
+  {
+    return ListChange::Same;
+  }
+  list.resize(static_cast<std::size_t>(count), fill);
+  return ListChange::Changed;
 }
 
 template <typename T>
-void setEntry(std::vector<T>& list, int index, const T& value, const T& fill)
+ListChange setEntry(std::vector<T>& list, int index, const T& value, const T& fill)
 {
-  if (index < 0 || index >= (1 << 28))
+  if (index < 0 || index >= MaximumEntries)
   {
-    return;
+    return ListChange::Refused;
   }
   if (static_cast<std::size_t>(index) >= list.size())
   {
     list.resize(static_cast<std::size_t>(index) + 1, fill);
   }
+  else if (list[static_cast<std::size_t>(index)] == value)
+  {
+    return ListChange::Same;
+  }
   list[static_cast<std::size_t>(index)] = value;
+  return ListChange::Changed;
 }
 
 // Three circles of `radius` about `centre` in the axis planes: a disc known only by its click and
@@ -272,7 +279,7 @@ struct vtkKerfSketchRepresentation::Internals
   void remember(int maximum)
   {
     this->undo.push_back(this->drawn);
-    if (static_cast<int>(this->undo.size()) > maximum)
+    while (!this->undo.empty() && static_cast<int>(this->undo.size()) > maximum)
     {
       this->undo.erase(this->undo.begin());
     }
@@ -290,6 +297,16 @@ vtkKerfSketchRepresentation::vtkKerfSketchRepresentation()
 }
 
 vtkKerfSketchRepresentation::~vtkKerfSketchRepresentation() = default;
+
+void vtkKerfSketchRepresentation::SetCurrentLabel(int label)
+{
+  const int allowed = std::clamp(label, this->AllowOverride ? -1 : 0, 99);
+  if (allowed != this->CurrentLabel)
+  {
+    this->CurrentLabel = allowed;
+    this->Modified();
+  }
+}
 
 void vtkKerfSketchRepresentation::LabelColor(int label, bool labelled, double rgb[3])
 {
@@ -319,14 +336,12 @@ void vtkKerfSketchRepresentation::LabelColor(int label, bool labelled, double rg
 
 void vtkKerfSketchRepresentation::SetNumberOfStrokePoints(int count)
 {
-  resizeList(this->State->drawn.strokePoints, count, Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->drawn.strokePoints, count, Vector3(Vector3::Zero()))), true);
 }
 
 void vtkKerfSketchRepresentation::SetStrokePoint(int index, double x, double y, double z)
 {
-  setEntry(this->State->drawn.strokePoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.strokePoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), true);
 }
 
 vtkDoubleArray* vtkKerfSketchRepresentation::GetStrokePoints()
@@ -342,14 +357,12 @@ vtkDoubleArray* vtkKerfSketchRepresentation::GetStrokePoints()
 
 void vtkKerfSketchRepresentation::SetNumberOfStrokeSizes(int count)
 {
-  resizeList(this->State->drawn.strokeSizes, count, 0);
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->drawn.strokeSizes, count, 0)), true);
 }
 
 void vtkKerfSketchRepresentation::SetStrokeSize(int index, int size)
 {
-  setEntry(this->State->drawn.strokeSizes, index, size, 0);
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.strokeSizes, index, size, 0)), true);
 }
 
 namespace
@@ -372,14 +385,12 @@ vtkIntArray* vtkKerfSketchRepresentation::GetStrokeSizes()
 
 void vtkKerfSketchRepresentation::SetNumberOfStrokeLabels(int count)
 {
-  resizeList(this->State->drawn.strokeLabels, count, 0);
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->drawn.strokeLabels, count, 0)), true);
 }
 
 void vtkKerfSketchRepresentation::SetStrokeLabel(int index, int label)
 {
-  setEntry(this->State->drawn.strokeLabels, index, label, 0);
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.strokeLabels, index, label, 0)), true);
 }
 
 vtkIntArray* vtkKerfSketchRepresentation::GetStrokeLabels()
@@ -390,6 +401,25 @@ vtkIntArray* vtkKerfSketchRepresentation::GetStrokeLabels()
 int vtkKerfSketchRepresentation::GetNumberOfStrokes()
 {
   return static_cast<int>(strokesOf(this->State->drawn).size());
+}
+
+void vtkKerfSketchRepresentation::ListChanged(int change, bool drawn)
+{
+  if (change == static_cast<int>(ListChange::Refused))
+  {
+    vtkErrorMacro(<< "a sketch list holds 0 to " << MaximumEntries << " entries: the value is refused");
+    return;
+  }
+  if (change == static_cast<int>(ListChange::Changed))
+  {
+    this->Modified();
+    // Set from outside (ParaView's Reset or Undo, a state file, a script): the earlier states
+    // Undo would restore are no longer what the user drew.
+    if (drawn && !this->State->active)
+    {
+      this->State->undo.clear();
+    }
+  }
 }
 
 int vtkKerfSketchRepresentation::GetNumberOfLabels()
@@ -407,9 +437,9 @@ int vtkKerfSketchRepresentation::GetNumberOfLabels()
 
 void vtkKerfSketchRepresentation::SetNumberOfDiscs(int count)
 {
-  resizeList(this->State->drawn.discs, count, std::array<double, 5>{});
+  this->ListChanged(static_cast<int>(resizeList(this->State->drawn.discs, count, std::array<double, 5>{})), true);
   resizeList(this->State->drawn.rims, count, std::vector<Vector3>());
-  this->Modified();
+
 }
 
 void vtkKerfSketchRepresentation::SetDisc(int index, double x, double y, double z, double radius, double subtract)
@@ -420,9 +450,9 @@ void vtkKerfSketchRepresentation::SetDisc(int index, double x, double y, double 
   {
     return; // the same disc again (its rim stays)
   }
-  setEntry(this->State->drawn.discs, index, disc, std::array<double, 5>{});
+  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.discs, index, disc, std::array<double, 5>{})), true);
   setEntry(this->State->drawn.rims, index, std::vector<Vector3>(), std::vector<Vector3>());
-  this->Modified();
+
 }
 
 vtkDoubleArray* vtkKerfSketchRepresentation::GetDiscs()
@@ -443,14 +473,12 @@ int vtkKerfSketchRepresentation::GetNumberOfDiscs()
 
 void vtkKerfSketchRepresentation::SetNumberOfClickedPoints(int count)
 {
-  resizeList(this->State->drawn.points, count, Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->drawn.points, count, Vector3(Vector3::Zero()))), true);
 }
 
 void vtkKerfSketchRepresentation::SetClickedPoint(int index, double x, double y, double z)
 {
-  setEntry(this->State->drawn.points, index, Vector3(x, y, z), Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.points, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), true);
 }
 
 vtkDoubleArray* vtkKerfSketchRepresentation::GetClickedPoints()
@@ -471,38 +499,32 @@ int vtkKerfSketchRepresentation::GetNumberOfClickedPoints()
 
 void vtkKerfSketchRepresentation::SetNumberOfTypedStrokePoints(int count)
 {
-  resizeList(this->State->typedStroke, count, Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->typedStroke, count, Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetTypedStrokePoint(int index, double x, double y, double z)
 {
-  setEntry(this->State->typedStroke, index, Vector3(x, y, z), Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->typedStroke, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetNumberOfTypedForegroundPoints(int count)
 {
-  resizeList(this->State->typedForeground, count, Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->typedForeground, count, Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetTypedForegroundPoint(int index, double x, double y, double z)
 {
-  setEntry(this->State->typedForeground, index, Vector3(x, y, z), Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->typedForeground, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetNumberOfTypedBackgroundPoints(int count)
 {
-  resizeList(this->State->typedBackground, count, Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->typedBackground, count, Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetTypedBackgroundPoint(int index, double x, double y, double z)
 {
-  setEntry(this->State->typedBackground, index, Vector3(x, y, z), Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->typedBackground, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetTypedDiscCenter(double x, double y, double z)
@@ -520,14 +542,12 @@ void vtkKerfSketchRepresentation::SetTypedDiscRadius(double radius)
 
 void vtkKerfSketchRepresentation::SetNumberOfTypedPoints(int count)
 {
-  resizeList(this->State->typedPoints, count, Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(resizeList(this->State->typedPoints, count, Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetTypedPoint(int index, double x, double y, double z)
 {
-  setEntry(this->State->typedPoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()));
-  this->Modified();
+  this->ListChanged(static_cast<int>(setEntry(this->State->typedPoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -535,6 +555,34 @@ void vtkKerfSketchRepresentation::SetTypedPoint(int index, double x, double y, d
 
 namespace
 {
+// The map from display coordinates and depth to space that vtkRenderer::DisplayToWorld applies, for
+// the renderer's viewport and camera now: the display's pixels to the viewport's [-1, 1] range,
+// then the inverse of the camera's composite projection (depths 0 to 1). Taken once per gesture:
+// the camera does not move while drawing.
+Eigen::Matrix4d displayToWorld(vtkRenderer* renderer)
+{
+  const int* size = renderer->GetRenderWindow()->GetSize();
+  const double* viewport = renderer->GetViewport();
+  const double width = (viewport[2] - viewport[0]) * size[0];
+  const double height = (viewport[3] - viewport[1]) * size[1];
+  Eigen::Matrix4d toView = Eigen::Matrix4d::Identity();
+  toView(0, 0) = 2.0 / width;
+  toView(0, 3) = -2.0 * viewport[0] * size[0] / width - 1.0;
+  toView(1, 1) = 2.0 / height;
+  toView(1, 3) = -2.0 * viewport[1] * size[1] / height - 1.0;
+  vtkMatrix4x4* projection =
+    renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), 0.0, 1.0);
+  Eigen::Matrix4d worldToView;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      worldToView(i, j) = projection->GetElement(i, j);
+    }
+  }
+  return worldToView.inverse() * toView;
+}
+
 // The display position of a world point, and its depth.
 Vector3 toDisplay(vtkRenderer* renderer, const Vector3& p)
 {
@@ -552,23 +600,51 @@ double segmentDistance2D(double x, double y, const Vector3& a, const Vector3& b)
   return std::hypot(x - a.x() - t * dx, y - a.y() - t * dy);
 }
 
-// The index of the polyline (or point) nearest to display position (x, y) within `tolerance`
-// pixels, or -1.
-int nearestOnScreen(vtkRenderer* renderer, const std::vector<std::vector<Vector3>>& polylines, double x, double y,
-  double tolerance)
+// Whether a point shows in the view: in front of the camera and not behind the visible surface
+// (farther along the view than the surface under it by more than a few pixels, which its tube
+// or dot does not reach).
+bool visible(vtkRenderer* renderer, const kerf::DepthImage& image, const Vector3& p, const Vector3& display)
+{
+  if (!(display.z() >= 0.0 && display.z() <= 1.0))
+  {
+    return false;
+  }
+  const std::optional<double> depth = image.depth(display.x(), display.y());
+  if (!depth)
+  {
+    return true; // the background or off the image: nothing in front of it
+  }
+  const Vector3 surface = *image.surfacePoint(display.x(), display.y());
+  double direction[3];
+  renderer->GetActiveCamera()->GetDirectionOfProjection(direction);
+  const double beyond = (p - surface).dot(Vector3(direction[0], direction[1], direction[2]));
+  return beyond <= 8.0 * image.pixelSize(display.x(), display.y(), *depth);
+}
+
+// The index of the visible polyline (or point) nearest to display position (x, y) within
+// `tolerance` pixels, or -1.
+int nearestOnScreen(vtkRenderer* renderer, const kerf::DepthImage& image,
+  const std::vector<std::vector<Vector3>>& polylines, double x, double y, double tolerance)
 {
   int nearest = -1;
   double best = tolerance;
   for (std::size_t i = 0; i < polylines.size(); ++i)
   {
     std::vector<Vector3> screen;
+    std::vector<char> shown;
     for (const Vector3& p : polylines[i])
     {
       screen.push_back(toDisplay(renderer, p));
+      shown.push_back(visible(renderer, image, p, screen.back()));
     }
     for (std::size_t k = 0; k < screen.size(); ++k)
     {
-      const double d = segmentDistance2D(x, y, screen[k], screen[k + 1 < screen.size() ? k + 1 : k]);
+      const std::size_t next = k + 1 < screen.size() ? k + 1 : k;
+      if (!shown[k] || !shown[next])
+      {
+        continue;
+      }
+      const double d = segmentDistance2D(x, y, screen[k], screen[next]);
       if (d <= best)
       {
         best = d;
@@ -615,13 +691,8 @@ void vtkKerfSketchRepresentation::StartGesture(double x, double y, bool subtract
     std::copy(depth->GetPointer(0), depth->GetPointer(0) + values.size(), values.begin());
   }
   s.nothingShown = std::none_of(values.begin(), values.end(), [](float d) { return d < 1.0f; });
-  s.image = std::make_unique<kerf::DepthImage>(size[0], size[1], std::move(values),
-    [renderer](double px, double py, double pz) {
-      renderer->SetDisplayPoint(px, py, pz);
-      renderer->DisplayToWorld();
-      const double* w = renderer->GetWorldPoint();
-      return w[3] != 0.0 ? Vector3(w[0] / w[3], w[1] / w[3], w[2] / w[3]) : Vector3(w[0], w[1], w[2]);
-    });
+  s.image = std::make_unique<kerf::DepthImage>(
+    size[0], size[1], std::move(values), kerf::DepthImage::projective(displayToWorld(renderer)));
   s.active = true;
   s.pressX = x;
   s.pressY = y;
@@ -672,7 +743,7 @@ int vtkKerfSketchRepresentation::EndGesture(double x, double y)
       {
         polylines.push_back(stroke.points);
       }
-      const int hit = nearestOnScreen(this->Renderer, polylines, s.pressX, s.pressY, this->PickTolerance);
+      const int hit = nearestOnScreen(this->Renderer, *s.image, polylines, s.pressX, s.pressY, this->PickTolerance);
       if (hit >= 0)
       {
         s.remember(this->MaximumUndo);
@@ -735,7 +806,7 @@ int vtkKerfSketchRepresentation::EndGesture(double x, double y)
       {
         centres.push_back({ Vector3(disc[0], disc[1], disc[2]) });
       }
-      const int hit = nearestOnScreen(this->Renderer, centres, s.pressX, s.pressY, this->PickTolerance);
+      const int hit = nearestOnScreen(this->Renderer, *s.image, centres, s.pressX, s.pressY, this->PickTolerance);
       if (hit >= 0)
       {
         s.remember(this->MaximumUndo);
@@ -764,8 +835,12 @@ int vtkKerfSketchRepresentation::EndGesture(double x, double y)
     {
       points.push_back({ p });
     }
-    const int hit = nearestOnScreen(this->Renderer, points, s.pressX, s.pressY, this->PickTolerance);
-    if (hit >= 0 && this->MaximumPoints != 1)
+    const int hit = nearestOnScreen(this->Renderer, *s.image, points, s.pressX, s.pressY, this->PickTolerance);
+    if (!click)
+    {
+      this->Message = "Points are clicked: press and release Ctrl+click without dragging.";
+    }
+    else if (hit >= 0 && this->MaximumPoints != 1)
     {
       s.remember(this->MaximumUndo);
       s.drawn.points.erase(s.drawn.points.begin() + hit);
@@ -792,6 +867,7 @@ int vtkKerfSketchRepresentation::EndGesture(double x, double y)
     }
   }
   s.tracer.reset();
+  s.image.reset(); // a view-sized buffer: kept only while drawing
   s.discRim.clear();
   s.discRadius = 0.0;
   return outcome;
@@ -857,6 +933,17 @@ bool vtkKerfSketchRepresentation::AddDiscAround(vtkPoints* points)
   this->State->drawn.rims.emplace_back();
   this->Modified();
   return true;
+}
+
+void vtkKerfSketchRepresentation::CancelGesture()
+{
+  Internals& s = *this->State;
+  s.active = false;
+  s.tracer.reset();
+  s.image.reset();
+  s.discRim.clear();
+  s.discRadius = 0.0;
+  this->Modified();
 }
 
 bool vtkKerfSketchRepresentation::Undo()
@@ -1066,6 +1153,7 @@ void vtkKerfSketchRepresentation::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Mode: " << this->Mode << "\n";
   os << indent << "Labelled: " << this->Labelled << "\n";
+  os << indent << "AllowOverride: " << this->AllowOverride << "\n";
   os << indent << "CurrentLabel: " << this->CurrentLabel << "\n";
   os << indent << "MaximumPoints: " << this->MaximumPoints << "\n";
   os << indent << "SimplifyTolerance: " << this->SimplifyTolerance << "\n";

@@ -71,8 +71,17 @@ public:
   ///@}
 
   ///@{
-  /// The label the next stroke gets: 0 and up, or -1 for an override stroke. Default 1.
-  vtkSetClampMacro(CurrentLabel, int, -1, 99);
+  /// Whether a stroke may be an override stroke (label -1: Easy Mesh Cut's boundary editing).
+  /// Default off.
+  vtkSetMacro(AllowOverride, bool);
+  vtkGetMacro(AllowOverride, bool);
+  vtkBooleanMacro(AllowOverride, bool);
+  ///@}
+
+  ///@{
+  /// The label the next stroke gets: 0 and up, or -1 for an override stroke (where
+  /// AllowOverride). Default 1.
+  void SetCurrentLabel(int label);
   vtkGetMacro(CurrentLabel, int);
   ///@}
 
@@ -177,6 +186,8 @@ public:
   void StartGesture(double x, double y, bool subtract);
   void ContinueGesture(double x, double y);
   int EndGesture(double x, double y);
+  /// Ends the gesture in progress without changing the drawn input.
+  void CancelGesture();
   bool IsGestureActive() const;
   const char* GetMessage() const { return this->Message.c_str(); }
   ///@}
@@ -214,6 +225,7 @@ protected:
 
   int Mode = STROKES;
   bool Labelled = false;
+  bool AllowOverride = false;
   int CurrentLabel = 1;
   int MaximumPoints = 0;
   double SimplifyTolerance = 0.001;
@@ -225,6 +237,11 @@ protected:
 private:
   vtkKerfSketchRepresentation(const vtkKerfSketchRepresentation&) = delete;
   void operator=(const vtkKerfSketchRepresentation&) = delete;
+
+  // After a setter: reports a refused size or index, marks the representation modified when a
+  // list changed and, for the drawn lists, forgets the undo states (the drawn input was set from
+  // outside).
+  void ListChanged(int change, bool drawn);
 
   struct Internals;
   std::unique_ptr<Internals> State;

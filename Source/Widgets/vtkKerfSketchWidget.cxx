@@ -51,6 +51,22 @@ void vtkKerfSketchWidget::CreateDefaultRepresentation()
   }
 }
 
+void vtkKerfSketchWidget::SetEnabled(int enabling)
+{
+  if (!enabling && this->Drawing)
+  {
+    // Disabled while drawing (the panel hidden, the view changed): the gesture ends, unfinished.
+    this->Drawing = false;
+    this->ReleaseFocus();
+    this->EndInteraction();
+    if (vtkKerfSketchRepresentation* representation = this->GetSketchRepresentation())
+    {
+      representation->CancelGesture();
+    }
+  }
+  this->Superclass::SetEnabled(enabling);
+}
+
 void vtkKerfSketchWidget::StartAction(vtkAbstractWidget* widget)
 {
   vtkKerfSketchWidget* self = static_cast<vtkKerfSketchWidget*>(widget);
@@ -129,7 +145,8 @@ void vtkKerfSketchWidget::KeyAction(vtkAbstractWidget* widget)
   {
     return;
   }
-  if (interactor->GetControlKey() && (std::strcmp(key, "z") == 0 || std::strcmp(key, "Z") == 0))
+  // Ctrl+Z alone: Ctrl+Shift+Z is redo elsewhere.
+  if (interactor->GetControlKey() && !interactor->GetShiftKey() && (std::strcmp(key, "z") == 0 || std::strcmp(key, "Z") == 0))
   {
     self->Undo();
     self->EventCallbackCommand->SetAbortFlag(1);
@@ -139,7 +156,8 @@ void vtkKerfSketchWidget::KeyAction(vtkAbstractWidget* widget)
     self->SetCurrentLabel(key[0] - '0');
     self->EventCallbackCommand->SetAbortFlag(1);
   }
-  else if (representation->GetLabelled() && (std::strcmp(key, "o") == 0 || std::strcmp(key, "O") == 0))
+  else if (representation->GetLabelled() && representation->GetAllowOverride() &&
+    (std::strcmp(key, "o") == 0 || std::strcmp(key, "O") == 0))
   {
     self->SetCurrentLabel(-1);
     self->EventCallbackCommand->SetAbortFlag(1);
@@ -182,6 +200,10 @@ void vtkKerfSketchWidget::AddDiscAround(vtkPoints* points)
 {
   vtkKerfSketchRepresentation* representation = this->GetSketchRepresentation();
   this->Changed(representation && representation->AddDiscAround(points));
+  if (representation && !this->LastChanged)
+  {
+    this->Say(representation->GetMessage());
+  }
 }
 
 void vtkKerfSketchWidget::SetCurrentLabel(int label)

@@ -44,6 +44,8 @@ public:
   void SetRepresentation(vtkKerfSketchRepresentation* representation);
   vtkKerfSketchRepresentation* GetSketchRepresentation();
   void CreateDefaultRepresentation() override;
+  /// Disabling the widget while drawing ends the gesture without changing the drawn input.
+  void SetEnabled(int enabling) override;
 
   ///@{
   /// Draw with the left button alone, without Ctrl (the camera then turns with Ctrl or another

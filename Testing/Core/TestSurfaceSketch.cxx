@@ -74,6 +74,16 @@ TEST(SurfaceSketch, DepthImageReadsPixelsAndRefusesBadSizes)
   EXPECT_FALSE(image.surfacePoint(2, 2)); // background
   EXPECT_FALSE(image.surfacePoint(-1, 100)); // off the image
   EXPECT_FALSE(image.surfacePoint(Size, 100));
+  // Half a pixel beyond the first row or column rounds to -1: off the image, not before it.
+  EXPECT_FALSE(image.depth(-0.5, 100));
+  EXPECT_FALSE(image.depth(100, -0.5));
+  EXPECT_FALSE(image.depth(Size - 0.5, 100));
+  EXPECT_FALSE(image.depth(100, Size - 0.5));
+  // A tracer walking off the image's edge ends its piece there.
+  SurfaceStrokeTracer edge(image, 100, 100);
+  edge.moveTo(-1.0, 101.0);
+  edge.moveTo(-30.0, -30.0);
+  EXPECT_EQ(edge.pieces().size(), 1u);
   EXPECT_FALSE(image.surfacePoint(std::nan(""), 100));
   EXPECT_NEAR(image.pixelSize(100, 100, 0.0), 2.0 * HalfWidth / Size, 1e-12);
   EXPECT_THROW(DepthImage(2, 2, std::vector<float>(3, 0.5f), orthographic()), Error);
@@ -175,6 +185,27 @@ TEST(SurfaceSketch, SimplificationKeepsEveryPointWithinTheTolerance)
   EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(1, 1, 0) }, 1e-3).size(), 3u);
   EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(0, 0, 0) }, 1e-3).size(), 1u);
   EXPECT_TRUE(simplifyPolyline({}, 1e-3).empty());
+  // A negative or NaN tolerance is 0: every corner stays, and the simplification ends.
+  EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(1, 1, 0) }, -5.0).size(), 3u);
+  EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(2, 0, 0) }, std::nan("")).size(), 2u);
+}
+
+TEST(SurfaceSketch, DrawnStrokesSplitByTheirSizes)
+{
+  const std::vector<Vector3> points{ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(2, 0, 0) };
+  const std::vector<DrawnStroke> two = splitDrawnStrokes(points, { 1, 2 }, { 4, 0 });
+  ASSERT_EQ(two.size(), 2u);
+  EXPECT_EQ(two[0].points.size(), 1u);
+  EXPECT_EQ(two[1].points[1], Vector3(2, 0, 0));
+  EXPECT_EQ(two[0].label, 4);
+  const std::vector<DrawnStroke> one = splitDrawnStrokes(points, {}, {});
+  ASSERT_EQ(one.size(), 1u);
+  EXPECT_EQ(one[0].points.size(), 3u);
+  EXPECT_EQ(one[0].label, 0);
+  EXPECT_TRUE(splitDrawnStrokes({}, {}, {}).empty());
+  EXPECT_THROW(splitDrawnStrokes(points, { 2, 2 }, {}), Error);
+  EXPECT_THROW(splitDrawnStrokes(points, { 3, 0 }, {}), Error);
+  EXPECT_THROW(splitDrawnStrokes(points, { 1, 2 }, { 1 }), Error);
 }
 
 TEST(SurfaceSketch, WalksAndRimsFollowGreatCircles)

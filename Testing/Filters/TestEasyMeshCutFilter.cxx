@@ -294,19 +294,23 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(beside > 5 && away > 5);
     // The same strokes drawn in the panel, the override as a stroke of label -1: the same parts
     // and boundary.
+    // twoStrokes drawn: background (label 0) around the lower lobe, `foreground` around the upper.
+    auto drawTwoStrokes = [](vtkEasyMeshCut* cut, int foreground) {
+      for (const auto& [label, heights] : { std::make_pair(0, std::vector<double>{ -1.6, -1.5, -1.4 }),
+             std::make_pair(foreground, std::vector<double>{ 1.4, 1.5, 1.6 }) })
+      {
+        vtkNew<vtkPoints> stroke;
+        for (double z : heights)
+        {
+          stroke->InsertNextPoint(radius(z), 0.0, z);
+        }
+        cut->AddDrawnStroke(stroke, label);
+      }
+    };
     vtkNew<vtkEasyMeshCut> drawn;
     drawn->SetInputData(0, dumbbell);
     drawn->SetOverrideRadius(0.15 / mesh.boundingBoxDiagonal());
-    for (const auto& [label, heights] : { std::make_pair(0, std::vector<double>{ -1.6, -1.5, -1.4 }),
-           std::make_pair(1, std::vector<double>{ 1.4, 1.5, 1.6 }) })
-    {
-      vtkNew<vtkPoints> stroke;
-      for (double z : heights)
-      {
-        stroke->InsertNextPoint(radius(z), 0.0, z);
-      }
-      drawn->AddDrawnStroke(stroke, label);
-    }
+    drawTwoStrokes(drawn, 1);
     drawn->AddDrawnStroke(points, -1);
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).empty());
     ok &= KERF_CHECK(segmentsOf(drawn->GetOutput()) == segmentsOf(edited->GetOutput()));
@@ -321,6 +325,14 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(byInput.snake).empty());
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(byPanel.snake).empty());
     ok &= KERF_CHECK(segmentsOf(byPanel.snake->GetOutput()) == segmentsOf(byInput.snake->GetOutput()));
+    // Labels are the user's numbers: a huge one gives its part, and SegmentSizes counts the two
+    // labels there are, not every number up to it.
+    vtkNew<vtkEasyMeshCut> huge;
+    huge->SetInputData(0, dumbbell);
+    drawTwoStrokes(huge, 2000000000);
+    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(huge).empty());
+    vtkDataArray* hugeSizes = huge->GetOutput()->GetFieldData()->GetArray("SegmentSizes");
+    ok &= KERF_CHECK(hugeSizes && hugeSizes->GetNumberOfTuples() == 2);
     // A drawn label below -1 is refused, naming the stroke.
     drawn->SetDrawnStrokeLabel(2, -2);
     ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).find("drawn stroke 2 has the label -2") != std::string::npos);

@@ -154,6 +154,36 @@ int TestSketchWidgetImage(int argc, char* argv[])
   widget->Undo(); // the vertical stroke
   ok &= KERF_CHECK(sketch->GetNumberOfStrokes() == 1);
 
+  // A stroke on the far side of the sphere does not show: a click over it erases nothing (the
+  // front one is out of reach), and adds nothing either, unlabelled.
+  sketch->SetNumberOfStrokePoints(3);
+  sketch->SetStrokePoint(0, -0.2, 0.3, -0.4);
+  sketch->SetStrokePoint(1, 0.0, 0.3, -0.4);
+  sketch->SetStrokePoint(2, 0.2, 0.3, -0.4);
+  sketch->SetNumberOfStrokeSizes(1);
+  sketch->SetStrokeSize(0, 3);
+  sketch->SetNumberOfStrokeLabels(0);
+  window->Render();
+  ok &= KERF_CHECK(sketch->GetNumberOfStrokes() == 1);
+  int farX = 0, farY = 0;
+  {
+    renderer->SetWorldPoint(0.0, 0.3, -0.4, 1.0);
+    renderer->WorldToDisplay();
+    farX = static_cast<int>(std::lround(renderer->GetDisplayPoint()[0]));
+    farY = static_cast<int>(std::lround(renderer->GetDisplayPoint()[1]));
+  }
+  mouse.click(farX, farY);
+  ok &= KERF_CHECK(!widget->GetLastChanged() && sketch->GetNumberOfStrokes() == 1);
+  // Set from outside, the strokes leave nothing to undo.
+  ok &= KERF_CHECK(!sketch->CanUndo());
+  // Put the first stroke back for what follows.
+  mouse.drag(20, 150, 280, 150, 4);
+  widget->Undo();
+  sketch->SetNumberOfStrokePoints(0);
+  sketch->SetNumberOfStrokeSizes(0);
+  mouse.drag(20, 150, 280, 150, 4);
+  ok &= KERF_CHECK(sketch->GetNumberOfStrokes() == 1);
+
   // The drawn stroke cuts the sphere: the harmonic cut along it halves the sphere (the stroke
   // runs along its equator y = 0 as seen from +z).
   vtkNew<vtkStrokeCut> cut;

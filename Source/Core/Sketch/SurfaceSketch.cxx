@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <utility>
 
 namespace kerf
@@ -29,7 +30,8 @@ DepthImage::DepthImage(int width, int height, std::vector<float> depth, Unprojec
 
 std::optional<double> DepthImage::depth(double x, double y) const
 {
-  if (!std::isfinite(x) || !std::isfinite(y) || x < -0.5 || y < -0.5 || x >= this->Width - 0.5 || y >= this->Height - 0.5)
+  // The nearest pixel of (x, y) must be on the image: lround(-0.5) is -1.
+  if (!(x > -0.5 && y > -0.5 && x < this->Width - 0.5 && y < this->Height - 0.5))
   {
     return std::nullopt;
   }
@@ -56,6 +58,14 @@ std::optional<double> DepthImage::depth(double x, double y) const
     return std::nullopt;
   }
   return static_cast<double>(nearest);
+}
+
+DepthImage::Unprojection DepthImage::projective(const Eigen::Matrix4d& displayToWorld)
+{
+  return [displayToWorld](double x, double y, double depth) {
+    const Eigen::Vector4d world = displayToWorld * Eigen::Vector4d(x, y, depth, 1.0);
+    return world[3] != 0.0 ? Vector3(world.head<3>() / world[3]) : Vector3(world.head<3>());
+  };
 }
 
 std::optional<Vector3> DepthImage::surfacePoint(double x, double y) const
@@ -159,6 +169,7 @@ void SurfaceStrokeTracer::sample(double x, double y)
 
 std::vector<Vector3> simplifyPolyline(const std::vector<Vector3>& points, double tolerance)
 {
+  tolerance = tolerance > 0.0 ? tolerance : 0.0; // NaN as well
   std::vector<Vector3> distinct;
   for (const Vector3& p : points)
   {
@@ -178,6 +189,10 @@ std::vector<Vector3> simplifyPolyline(const std::vector<Vector3>& points, double
   {
     const auto [first, last] = spans.back();
     spans.pop_back();
+    if (last <= first + 1)
+    {
+      continue; // no point between the ends
+    }
     const Vector3& a = distinct[first];
     const Vector3 chord = distinct[last] - a;
     const double chordLength = chord.squaredNorm();
@@ -295,6 +310,46 @@ std::vector<Vector3> discRim(
       walkOnSurface(image, x, y, x + far * std::cos(angle), y + far * std::sin(angle), options, radius).end);
   }
   return rim;
+}
+
+std::vector<DrawnStroke> splitDrawnStrokes(
+  const std::vector<Vector3>& points, const std::vector<int>& givenSizes, const std::vector<int>& labels)
+{
+  std::vector<int> sizes = givenSizes;
+  if (sizes.empty() && !points.empty())
+  {
+    sizes.push_back(static_cast<int>(points.size()));
+  }
+  long long total = 0;
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+  {
+    if (sizes[s] < 1)
+    {
+      throw Error("drawn stroke " + std::to_string(s) + " has " + std::to_string(sizes[s]) +
+        " points (DrawnStrokeSizes); every stroke has at least one");
+    }
+    total += sizes[s];
+  }
+  if (total != static_cast<long long>(points.size()))
+  {
+    throw Error("the drawn strokes' sizes (DrawnStrokeSizes) add up to " + std::to_string(total) + " points, but " +
+      std::to_string(points.size()) + " are drawn (DrawnStrokePoints)");
+  }
+  if (!labels.empty() && labels.size() != sizes.size())
+  {
+    throw Error("there are " + std::to_string(labels.size()) + " drawn stroke labels (DrawnStrokeLabels) for " +
+      std::to_string(sizes.size()) + " strokes");
+  }
+  std::vector<DrawnStroke> strokes(sizes.size());
+  std::size_t next = 0;
+  for (std::size_t s = 0; s < sizes.size(); ++s)
+  {
+    strokes[s].points.assign(points.begin() + static_cast<std::ptrdiff_t>(next),
+      points.begin() + static_cast<std::ptrdiff_t>(next + static_cast<std::size_t>(sizes[s])));
+    strokes[s].label = labels.empty() ? 0 : labels[s];
+    next += static_cast<std::size_t>(sizes[s]);
+  }
+  return strokes;
 }
 
 } // namespace kerf

@@ -19,6 +19,11 @@ class DepthImage
 public:
   using Unprojection = std::function<Vector3(double x, double y, double depth)>;
 
+  /// The unprojection of a camera: `displayToWorld` maps (x, y, depth, 1) to space in
+  /// homogeneous coordinates (divided by the last coordinate), as a renderer's DisplayToWorld
+  /// does for its viewport and camera at the moment the matrix is taken.
+  static Unprojection projective(const Eigen::Matrix4d& displayToWorld);
+
   /// Throws kerf::Error when `depth` does not hold width x height values or a size is not positive.
   DepthImage(int width, int height, std::vector<float> depth, Unprojection unproject);
 
@@ -86,7 +91,7 @@ private:
 
 /// The polyline reduced by Douglas and Peucker's (1973) rule: the fewest of its points such that
 /// every point left out lies within `tolerance` of the segment that replaces it; the ends stay.
-/// Consecutive repeated points are dropped first.
+/// Consecutive repeated points are dropped first; a negative or NaN tolerance counts as 0.
 std::vector<Vector3> simplifyPolyline(const std::vector<Vector3>& points, double tolerance);
 
 /// A walk over the visible surface under a straight screen segment.
@@ -101,8 +106,9 @@ struct SurfaceWalk
 };
 
 /// Walks the screen segment from (x0, y0) to (x1, y1) in steps of options.step pixels, summing
-/// the steps in space (the length along the visible surface, which bounds the geodesic distance
-/// from above); stops where the segment leaves the surface or crosses a jump in depth, or once
+/// the steps in space (the length of a way over the visible surface: about the geodesic distance
+/// where the screen line follows a geodesic, longer where it bends, and a little short of the
+/// surface's length by the chords it sums); stops where the segment leaves the surface or crosses a jump in depth, or once
 /// the length reaches `limit`.
 SurfaceWalk walkOnSurface(const DepthImage& image, double x0, double y0, double x1, double y1,
   const SketchOptions& options = SketchOptions(), double limit = -1.0);
@@ -121,5 +127,20 @@ double dragRadius(const DepthImage& image, double x0, double y0, double x1, doub
 /// A closed polyline (the first point is not repeated); empty when (x, y) is off the surface.
 std::vector<Vector3> discRim(const DepthImage& image, double x, double y, double radius, int directions = 64,
   const SketchOptions& options = SketchOptions());
+
+/// A stroke drawn on the surface, with its label.
+struct DrawnStroke
+{
+  std::vector<Vector3> points;
+  int label = 0;
+};
+
+/// Drawn strokes kept as flat lists (as a filter's properties hold them): the points of every
+/// stroke one after another, the number of points of each (all the points one stroke when there
+/// are no sizes) and each stroke's label (0 for all when there are no labels). Throws kerf::Error
+/// when the sizes do not add up to the number of points or one is below 1, or when there are
+/// labels but not one per stroke.
+std::vector<DrawnStroke> splitDrawnStrokes(
+  const std::vector<Vector3>& points, const std::vector<int>& sizes, const std::vector<int>& labels);
 
 } // namespace kerf
