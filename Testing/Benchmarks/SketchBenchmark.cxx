@@ -2,8 +2,8 @@
 //
 // The view: 1300 x 770 pixels (the render view of a 1600 x 1000 ParaView window) showing a sphere
 // of radius 0.5 filling its height, seen by an orthographic camera; the depth image is computed
-// analytically once, and a pixel goes back to space by a linear map, as the widget's
-// vtkRenderer::DisplayToWorld does for an orthographic camera.
+// analytically once, and a pixel goes back to space through a display-to-world matrix
+// (kerf::DepthImage::projective), as the widget's do.
 //   BM_SketchStroke/1300x770   a drag of 900 pixels in 30 mouse moves across the sphere and back
 //                              onto the background: kerf::SurfaceStrokeTracer, then
 //                              kerf::simplifyPolyline to half a pixel (the widget's whole work
@@ -43,9 +43,14 @@ kerf::DepthImage sphereView()
       }
     }
   }
-  return kerf::DepthImage(Width, Height, std::move(depth), [](double x, double y, double d) {
-    return kerf::Vector3((x - 0.5 * Width) * Scale, (y - 0.5 * Height) * Scale, 1.0 - 2.0 * d);
-  });
+  Eigen::Matrix4d displayToWorld = Eigen::Matrix4d::Identity();
+  displayToWorld(0, 0) = Scale;
+  displayToWorld(0, 3) = -0.5 * Width * Scale;
+  displayToWorld(1, 1) = Scale;
+  displayToWorld(1, 3) = -0.5 * Height * Scale;
+  displayToWorld(2, 2) = -2.0;
+  displayToWorld(2, 3) = 1.0;
+  return kerf::DepthImage(Width, Height, std::move(depth), kerf::DepthImage::projective(displayToWorld));
 }
 
 const kerf::DepthImage& view()
