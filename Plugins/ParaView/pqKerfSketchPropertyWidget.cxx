@@ -445,17 +445,30 @@ void pqKerfSketchPropertyWidget::applyNow()
   }
   if (pqView* view = this->view())
   {
+    this->connect(view, SIGNAL(beginRender()), SLOT(rendering()), Qt::UniqueConnection);
     this->connect(view, SIGNAL(endRender()), SLOT(rendered()), Qt::UniqueConnection);
   }
   this->Timing = true;
+  this->RenderingAt = -1;
   const qint64 queued = this->Since.elapsed();
   panel->apply();
-  this->AppliedAt = this->Since.elapsed();
-  vtkVLogF(PARAVIEW_LOG_APPLICATION_VERBOSITY(), "Kerf sketch: apply from %lld to %lld ms after the gesture",
-    static_cast<long long>(queued), static_cast<long long>(this->AppliedAt));
-  if (pqView* view = this->view())
+  // The panel's apply renders the views itself; a second render would only hold the next gesture.
+  if (this->Timing)
   {
-    view->render();
+    if (pqView* view = this->view())
+    {
+      view->render();
+    }
+  }
+  vtkVLogF(PARAVIEW_LOG_APPLICATION_VERBOSITY(), "Kerf sketch: apply began %lld ms after the gesture",
+    static_cast<long long>(queued));
+}
+
+void pqKerfSketchPropertyWidget::rendering()
+{
+  if (this->Timing && this->RenderingAt < 0)
+  {
+    this->RenderingAt = this->Since.elapsed();
   }
 }
 
@@ -467,8 +480,10 @@ void pqKerfSketchPropertyWidget::rendered()
   }
   this->Timing = false;
   const qint64 ms = this->Since.elapsed();
-  vtkVLogF(PARAVIEW_LOG_APPLICATION_VERBOSITY(), "Kerf sketch: shown %lld ms after the gesture (render %lld ms)",
-    static_cast<long long>(ms), static_cast<long long>(ms - this->AppliedAt));
+  const qint64 start = this->RenderingAt < 0 ? ms : this->RenderingAt;
+  vtkVLogF(PARAVIEW_LOG_APPLICATION_VERBOSITY(),
+    "Kerf sketch: shown %lld ms after the gesture (update %lld ms, render %lld ms)", static_cast<long long>(ms),
+    static_cast<long long>(start), static_cast<long long>(ms - start));
   vtkSMSourceProxy* source = vtkSMSourceProxy::SafeDownCast(this->proxy());
   vtkPVDataInformation* information = source ? source->GetDataInformation(0) : nullptr;
   if (information && information->GetNumberOfCells() == 0)

@@ -76,6 +76,7 @@ private Q_SLOTS:
   void useSelection();
   void chooseLabel(int index);
   void updateTyped();
+  void rendering();
   void rendered();
   void applyNow();
 
@@ -99,7 +100,7 @@ private:
   QPointer<QWidget> PanelViewport;
   QElapsedTimer Since;
   bool Timing = false;
-  qint64 AppliedAt = 0;
+  qint64 RenderingAt = -1; // when the view began to render after the gesture
   unsigned long MessageObserver = 0;
   unsigned long LabelObserver = 0;
 };
