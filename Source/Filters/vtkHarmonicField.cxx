@@ -1,7 +1,7 @@
 // vtkHarmonicField: reads the constraints, solves with the surface's HarmonicCutSession, writes the field.
 #include "vtkHarmonicField.h"
 
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"

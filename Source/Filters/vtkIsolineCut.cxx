@@ -1,7 +1,7 @@
 // vtkIsolineCut: reads the field and the stroke, chooses the cut with the surface's session, writes it.
 #include "vtkIsolineCut.h"
 
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfFilterUtilities.h"
 #include "KerfSurfaceInput.h"

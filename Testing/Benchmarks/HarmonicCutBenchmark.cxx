@@ -44,10 +44,10 @@
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Mesh/MeshGenerators.h"
 

@@ -58,9 +58,9 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
-#include "Harmonic/NestedDissection.h"
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/NestedDissection.h"
+#include "Numerics/SparseCholesky.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Mesh/MeshValidation.h"
 

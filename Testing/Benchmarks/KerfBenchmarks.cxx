@@ -22,7 +22,7 @@
 // 1 if a benchmark failed (a filter error, a wrong result), which the ctest smoke test uses.
 #include "KerfBenchmarks.h"
 
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/SparseCholesky.h"
 
 #include <vtkSMPTools.h>
 #include <vtkVersion.h>

@@ -1,10 +1,10 @@
 // The best-scored isoline of a harmonic field lies in the neck of a two-lobe shape.
 #include "BenchmarkMeshes.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>

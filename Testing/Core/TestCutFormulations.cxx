@@ -6,7 +6,7 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshGenerators.h"

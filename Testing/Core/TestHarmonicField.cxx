@@ -2,10 +2,10 @@
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Harmonic/LaplacianWeights.h"
-#include "Harmonic/NestedDissection.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/NestedDissection.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Mesh/MeshGenerators.h"
 
@@ -235,6 +235,30 @@ TEST(HarmonicField, FormulationNamesParse)
     {
       EXPECT_NE(std::string(e.what()).find("formulation must be least-squares or point-values"), std::string::npos);
     }
+  }
+}
+
+TEST(HarmonicField, CornerCotangentsOfRightAndNeedleTriangles)
+{
+  // A right isosceles triangle (corners 90, 45, 45 degrees), a needle whose corner at vertex 3
+  // is below CotangentLimit's angle, and a triangle of three collinear points.
+  const double tiny = 1e-7;
+  const TriangleMesh mesh({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(0, 0, 5), Vector3(tiny, 0, 6),
+                            Vector3(0, 0, 7), Vector3(1, 0, 9), Vector3(2, 0, 9), Vector3(3, 0, 9) },
+    { { 0, 1, 2 }, { 3, 4, 5 }, { 6, 7, 8 } });
+  const std::vector<double> cotangents = cornerCotangents(mesh);
+  ASSERT_EQ(cotangents.size(), 9u);
+  EXPECT_NEAR(cotangents[0], 0.0, 1e-15);
+  EXPECT_NEAR(cotangents[1], 1.0, 1e-15);
+  EXPECT_NEAR(cotangents[2], 1.0, 1e-15);
+  // Corner 3: the angle between (tiny, 0, 1) and (0, 0, 2) is about tiny radians, cot 1e7 > the limit.
+  EXPECT_EQ(cotangents[3], CotangentLimit);
+  EXPECT_EQ(cotangents[5], CotangentLimit); // the corner at vertex 5 likewise
+  // Corner 4 is nearly a straight angle: cotangent about -1e7, clamped.
+  EXPECT_EQ(cotangents[4], -CotangentLimit);
+  for (int k = 6; k < 9; ++k)
+  {
+    EXPECT_EQ(cotangents[static_cast<std::size_t>(k)], 0.0) << "corner " << k << " of a zero-area triangle";
   }
 }
 

@@ -1,8 +1,8 @@
 // Huge-page work buffers: the allocator's blocks, the advice the kernel records for them, and the
 // CHOLMOD allocator that startCholmod installs.
-#include "HugePages.h"
-#include "Harmonic/LaplacianWeights.h"
-#include "Harmonic/SupernodalFactorization.h"
+#include "Numerics/HugePages.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/SupernodalFactorization.h"
 #include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>

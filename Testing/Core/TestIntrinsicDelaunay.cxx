@@ -1,9 +1,9 @@
 // The intrinsic Delaunay Laplacian: Delaunay flips, nonnegative weights, linear precision and the maximum principle.
 #include "Error.h"
-#include "Geodesic/IntrinsicTriangulation.h"
+#include "Numerics/IntrinsicTriangulation.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>

@@ -3,11 +3,11 @@
 #include "Geometry/ClosestPoint.h"
 #include "Evaluation/SegmentationMetrics.h"
 #include "Evaluation/SimulatedStrokes.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>

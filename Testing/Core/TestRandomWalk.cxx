@@ -1,7 +1,7 @@
 // Multi-label random walks: linear probabilities across a grid, unseeded components, ties, the neck of a two-lobe shape, errors, repeatability, and walks from segment spines (never removing a segment).
 #include "Error.h"
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/RegionGrowing.h"

@@ -1,9 +1,9 @@
 // The numeric supernodal factorization's routes (Kerf's driver with Eigen's kernels per
 // instruction-set level, CHOLMOD's) against each other, on the matrices the solvers factor.
-#include "Harmonic/LaplacianWeights.h"
-#include "Harmonic/NestedDissection.h"
-#include "Harmonic/SparseCholesky.h"
-#include "Harmonic/SupernodalFactorization.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/NestedDissection.h"
+#include "Numerics/SparseCholesky.h"
+#include "Numerics/SupernodalFactorization.h"
 #include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>

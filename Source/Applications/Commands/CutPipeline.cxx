@@ -2,7 +2,7 @@
 #include "CutPipeline.h"
 
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Error.h"
 #include "KerfCommands.h"
 

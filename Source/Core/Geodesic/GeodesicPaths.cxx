@@ -5,7 +5,7 @@
 #include "Error.h"
 #include "Geodesic/SurfaceLocation.h"
 #include "Geodesic/VectorDijkstra.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Session/Surface.h"
 
 #include <algorithm>

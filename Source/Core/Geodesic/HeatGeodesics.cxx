@@ -3,17 +3,17 @@
 
 #include "CacheKey.h"
 #include "Error.h"
-#include "Geodesic/IntrinsicTriangulation.h"
-#include "Harmonic/FieldGradient.h"
-#include "Harmonic/NestedDissection.h"
-#include "Harmonic/SerialOpenMP.h"
+#include "Numerics/IntrinsicTriangulation.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/NestedDissection.h"
+#include "Numerics/SerialOpenMP.h"
 #include "Session/Surface.h"
 
 #include <Eigen/SparseCore>
 
 #ifdef KERF_HAVE_CHOLMOD
-#include "Harmonic/SupernodalFactorization.h"
-#include "Harmonic/SupernodalSolve.h"
+#include "Numerics/SupernodalFactorization.h"
+#include "Numerics/SupernodalSolve.h"
 
 #include <cholmod.h>
 #else

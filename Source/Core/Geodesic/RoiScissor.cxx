@@ -5,7 +5,7 @@
 #include "Error.h"
 #include "Geodesic/SurfaceLocation.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Mesh/Submesh.h"
 #include "Session/Surface.h"

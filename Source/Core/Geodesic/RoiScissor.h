@@ -3,7 +3,7 @@
 
 #include "Geodesic/GeodesicPaths.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <deque>
 #include <memory>

@@ -2,7 +2,7 @@
 #include "Geodesic/Seams.h"
 
 #include "Error.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Session/Surface.h"
 
 #include <algorithm>

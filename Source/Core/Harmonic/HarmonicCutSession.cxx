@@ -2,9 +2,9 @@
 #include "Harmonic/HarmonicCutSession.h"
 
 #include "Error.h"
-#include "Geodesic/IntrinsicTriangulation.h"
+#include "Numerics/IntrinsicTriangulation.h"
 #include "Geometry/ClosestPoint.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>

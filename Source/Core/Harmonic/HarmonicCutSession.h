@@ -3,7 +3,7 @@
 
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Session/Surface.h"
 

@@ -2,8 +2,8 @@
 #include "Harmonic/HarmonicFieldSolver.h"
 
 #include "Error.h"
-#include "Harmonic/LaplacianWeights.h"
-#include "Harmonic/NestedDissection.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/NestedDissection.h"
 
 #include <algorithm>
 #include <cmath>

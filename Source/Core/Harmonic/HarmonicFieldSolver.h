@@ -1,7 +1,7 @@
 // The harmonic-field solver: hard vertex values and soft constraints at points inside faces.
 #pragma once
 
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/SparseCholesky.h"
 #include "Mesh/TriangleMesh.h"
 
 #include <memory>

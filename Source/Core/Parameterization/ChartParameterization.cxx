@@ -2,10 +2,11 @@
 #include "Parameterization/ChartParameterization.h"
 
 #include "Error.h"
-#include "Harmonic/SerialOpenMP.h"
-#include "Harmonic/SparseCholesky.h"
-#include "Harmonic/SupernodalFactorization.h"
-#include "Harmonic/SupernodalSolve.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/SerialOpenMP.h"
+#include "Numerics/SparseCholesky.h"
+#include "Numerics/SupernodalFactorization.h"
+#include "Numerics/SupernodalSolve.h"
 #include "Mesh/MeshValidation.h"
 #include "Parameterization/CutToDisk.h"
 #include "Parameterization/LinearABF.h"
@@ -36,23 +37,6 @@ namespace
 double cross2(const Vector2& a, const Vector2& b)
 {
   return a.x() * b.y() - a.y() * b.x();
-}
-
-// The cotangent of each triangle corner's 3D angle, corner k of triangle f at 3 f + k.
-std::vector<double> cornerCotangents(const TriangleMesh& chart)
-{
-  std::vector<double> cotangents(3 * static_cast<std::size_t>(chart.faceCount()));
-  for (int f = 0; f < chart.faceCount(); ++f)
-  {
-    const Triangle& t = chart.triangle(f);
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vector3 a = chart.point(t[static_cast<std::size_t>((k + 1) % 3)]) - chart.point(t[static_cast<std::size_t>(k)]);
-      const Vector3 b = chart.point(t[static_cast<std::size_t>((k + 2) % 3)]) - chart.point(t[static_cast<std::size_t>(k)]);
-      cotangents[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)] = a.dot(b) / a.cross(b).norm();
-    }
-  }
-  return cotangents;
 }
 
 // Calls edge(i, j, w) for each triangle's edge i-j with its share w = cot(angle opposite) / 2 of

@@ -2,7 +2,7 @@
 #include "Parameterization/LinearABF.h"
 
 #include "Error.h"
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/SparseCholesky.h"
 
 #include <Eigen/Core>
 #include <Eigen/SparseCore>

@@ -2,7 +2,7 @@
 #include "SeamCarving/GeometrySeamCarving.h"
 
 #include "Error.h"
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/SparseCholesky.h"
 #include "Mesh/OpenMeshAdapter.h"
 #include "Mesh/Submesh.h"
 #include "SeamCarving/GeometrySeams.h"

@@ -5,7 +5,7 @@
 #include "Geodesic/GraphDistance.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MinimumCut.h"
 #include "Mesh/Submesh.h"
 

@@ -3,9 +3,9 @@
 
 #include "Error.h"
 #include "Geodesic/GraphDistance.h"
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 #include "Harmonic/Isolines.h"
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/SparseCholesky.h"
 #include "Mesh/MeshValidation.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/SegmentSpines.h"

@@ -1,7 +1,7 @@
 // Consensus cuts: automatic segmentation from the isolines of many concavity-aware harmonic fields between feature points.
 #pragma once
 
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Segmentation/FaceGraph.h"
 
 #include <vector>

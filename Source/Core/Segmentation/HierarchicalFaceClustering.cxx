@@ -2,7 +2,7 @@
 #include "Segmentation/HierarchicalFaceClustering.h"
 
 #include "Error.h"
-#include "HugePages.h"
+#include "Numerics/HugePages.h"
 #include "Session/Surface.h"
 
 #include <Eigen/Eigenvalues>

@@ -1,7 +1,7 @@
 // Region growing from labelled strokes under the improved isophotic metric (Easy Mesh Cutting, section 4.2).
 #pragma once
 
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Mesh/TriangleMesh.h"
 #include "Segmentation/IsophoticMetric.h"
 

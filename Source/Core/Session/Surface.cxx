@@ -3,7 +3,7 @@
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 
 namespace kerf
 {

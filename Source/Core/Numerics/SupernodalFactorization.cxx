@@ -1,10 +1,10 @@
 // Dispatch of the numeric supernodal factorization: Kerf's driver with Eigen's kernels for the
-// processor's instruction-set level (Harmonic/SupernodalNumeric.cxx), or CHOLMOD's.
-#include "Harmonic/SupernodalFactorization.h"
+// processor's instruction-set level (Numerics/SupernodalNumeric.cxx), or CHOLMOD's.
+#include "Numerics/SupernodalFactorization.h"
 
-#include "HugePages.h"
+#include "Numerics/HugePages.h"
 
-#include "Harmonic/SupernodalNumeric.h"
+#include "Numerics/SupernodalNumeric.h"
 
 #include <cstdlib>
 #include <limits>

@@ -1,5 +1,5 @@
 // Transparent huge pages for large work buffers (madvise MADV_HUGEPAGE on Linux).
-#include "HugePages.h"
+#include "Numerics/HugePages.h"
 
 #include <cstdint>
 #include <cstdlib>

@@ -1,5 +1,5 @@
 // Nested dissection by coordinate bisection (George 1973; Miller, Teng, Thurston and Vavasis 1998).
-#include "Harmonic/NestedDissection.h"
+#include "Numerics/NestedDissection.h"
 
 #include "Error.h"
 

@@ -1,5 +1,5 @@
 // Gradients of piecewise-linear fields on triangles.
-#include "Harmonic/FieldGradient.h"
+#include "Numerics/FieldGradient.h"
 
 #include "Mesh/MeshValidation.h"
 

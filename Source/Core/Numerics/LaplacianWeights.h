@@ -29,7 +29,7 @@ enum class LaplacianWeighting
   /// nonnegative without clamping, and linearly precise on planar meshes. Its edges are the
   /// mesh's edges where no flip was needed and new vertex pairs where one was, so
   /// computeLaplacianWeights can give it only for meshes whose intrinsic Delaunay triangulation
-  /// keeps their edges; intrinsicDelaunayLaplacian() (Geodesic/IntrinsicTriangulation.h) gives
+  /// keeps their edges; intrinsicDelaunayLaplacian() (Numerics/IntrinsicTriangulation.h) gives
   /// it for any mesh, with the mesh of its edges.
   IntrinsicDelaunay
 };
@@ -66,6 +66,12 @@ constexpr double CotangentLimit = 1e4;
 /// Weight given, relative to the mean positive weight, to the edges of a vertex whose weights
 /// are all zero (for example around degenerate triangles), so that no vertex is disconnected.
 constexpr double WeightFloor = 1e-6;
+
+/// The cotangent of each triangle corner's angle, corner k of triangle f at 3 f + k: dot / |cross|
+/// of the two edge vectors at the corner, clamped to [-CotangentLimit, CotangentLimit], and 0 for
+/// every corner of a zero-area triangle (isZeroArea). The cotangent weights below and the charts'
+/// conformal maps both use it.
+std::vector<double> cornerCotangents(const TriangleMesh& mesh);
 
 /// One weight per mesh edge (indexed like TriangleMesh edges), all >= 0. Cotangent details: each
 /// cotangent is computed as dot / |cross| of the two edge vectors at the angle and clamped to

@@ -2,10 +2,10 @@
 // descendant lists of CHOLMOD's supernodal factorization, Chen, Davis, Hager and Rajamanickam
 // 2008) with Eigen's dense kernels. This file is compiled once per instruction-set level into its
 // own shared library with hidden symbols (Source/Core/CMakeLists.txt), so that Eigen's
-// instantiations for one level never stand in for another's; Harmonic/SupernodalFactorization.cxx
+// instantiations for one level never stand in for another's; Numerics/SupernodalFactorization.cxx
 // calls the level the processor has.
-#include "Harmonic/SupernodalNumeric.h"
-#include "HugePages.h"
+#include "Numerics/SupernodalNumeric.h"
+#include "Numerics/HugePages.h"
 
 #include <Eigen/Dense>
 

@@ -1,5 +1,5 @@
 // The numeric supernodal Cholesky factorization on a symbolic analysis (the interface of the
-// kernels compiled per instruction set; Harmonic/SupernodalFactorization.h is the one to call).
+// kernels compiled per instruction set; Numerics/SupernodalFactorization.h is the one to call).
 #pragma once
 
 #include <cstddef>

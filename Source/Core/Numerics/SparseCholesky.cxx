@@ -1,11 +1,11 @@
 // CHOLMOD-backed sparse Cholesky with sparse multi-column forward solves for low-rank corrections.
-#include "Harmonic/SparseCholesky.h"
+#include "Numerics/SparseCholesky.h"
 
 #include "Error.h"
-#include "Harmonic/SerialOpenMP.h"
-#include "Harmonic/SupernodalFactorization.h"
-#include "Harmonic/SupernodalSolve.h"
-#include "Harmonic/VectorKernels.h"
+#include "Numerics/SerialOpenMP.h"
+#include "Numerics/SupernodalFactorization.h"
+#include "Numerics/SupernodalSolve.h"
+#include "Numerics/VectorKernels.h"
 
 #include <algorithm>
 #include <cmath>

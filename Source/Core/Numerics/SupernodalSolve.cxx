@@ -1,8 +1,8 @@
 // Triangular solves with one right-hand side on a CHOLMOD supernodal factor, with vector kernels chosen per processor.
-#include "Harmonic/SupernodalSolve.h"
+#include "Numerics/SupernodalSolve.h"
 
 #ifdef KERF_HAVE_CHOLMOD
-#include "Harmonic/VectorKernels.h"
+#include "Numerics/VectorKernels.h"
 
 #include <algorithm>
 #include <cstddef>

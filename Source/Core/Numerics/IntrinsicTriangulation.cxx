@@ -1,8 +1,8 @@
 // Intrinsic edge flips to the Delaunay triangulation (Bobenko and Springborn 2007) and its cotangent Laplacian.
-#include "Geodesic/IntrinsicTriangulation.h"
+#include "Numerics/IntrinsicTriangulation.h"
 
 #include "Error.h"
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 // Laplacian edge weights (uniform, cotangent, intrinsic Delaunay, Au et al. 2011, ROI Scissor) and assembly.
-#include "Harmonic/LaplacianWeights.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include "CacheKey.h"
 #include "Error.h"
-#include "Geodesic/IntrinsicTriangulation.h"
+#include "Numerics/IntrinsicTriangulation.h"
 #include "Mesh/MeshValidation.h"
 
 #include <algorithm>
@@ -30,28 +30,18 @@ double cotangent(const Vector3& a, const Vector3& b)
 
 std::vector<double> cotangentWeights(const TriangleMesh& mesh)
 {
+  const std::vector<double> cotangents = cornerCotangents(mesh);
   std::vector<double> weights(mesh.edgeCount(), 0.0);
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
-    const Triangle& t = mesh.triangle(f);
-    const Vector3& p0 = mesh.point(t[0]);
-    const Vector3& p1 = mesh.point(t[1]);
-    const Vector3& p2 = mesh.point(t[2]);
-    const double longest = std::max({ (p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm() });
-    if (isZeroArea((p1 - p0).cross(p2 - p0).norm(), longest))
-    {
-      continue;
-    }
     // Edge k joins corners k and k+1; the angle opposite it is at corner k+2.
     for (int k = 0; k < 3; ++k)
     {
       const int e = mesh.faceEdge(f, k);
-      if (e < 0)
+      if (e >= 0)
       {
-        continue;
+        weights[e] += 0.5 * cotangents[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>((k + 2) % 3)];
       }
-      const Vector3& apex = mesh.point(t[(k + 2) % 3]);
-      weights[e] += 0.5 * cotangent(mesh.point(t[k]) - apex, mesh.point(t[(k + 1) % 3]) - apex);
     }
   }
   return weights;
@@ -161,6 +151,30 @@ std::vector<double> concavityWeights(
   return weights;
 }
 } // namespace
+
+std::vector<double> cornerCotangents(const TriangleMesh& mesh)
+{
+  std::vector<double> cotangents(3 * static_cast<std::size_t>(mesh.faceCount()), 0.0);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    const Triangle& t = mesh.triangle(f);
+    const Vector3& p0 = mesh.point(t[0]);
+    const Vector3& p1 = mesh.point(t[1]);
+    const Vector3& p2 = mesh.point(t[2]);
+    const double longest = std::max({ (p1 - p0).squaredNorm(), (p2 - p1).squaredNorm(), (p0 - p2).squaredNorm() });
+    if (isZeroArea((p1 - p0).cross(p2 - p0).norm(), longest))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const Vector3& corner = mesh.point(t[k]);
+      cotangents[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)] =
+        cotangent(mesh.point(t[(k + 1) % 3]) - corner, mesh.point(t[(k + 2) % 3]) - corner);
+    }
+  }
+  return cotangents;
+}
 
 std::vector<double> computeLaplacianWeights(
   const TriangleMesh& mesh, const LaplacianWeightOptions& options, const SurfaceDescriptors* descriptors)

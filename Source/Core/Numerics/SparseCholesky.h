@@ -1,7 +1,7 @@
 // Sparse Cholesky factorization (CHOLMOD, or Eigen's SimplicialLDLT without it) and low-rank corrections.
 #pragma once
 
-#include "Harmonic/SupernodalFactorization.h"
+#include "Numerics/SupernodalFactorization.h"
 
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
@@ -63,7 +63,7 @@ public:
   std::size_t factorNonZeros() const;
 
   /// Who computes the supernodal factor's values in the next factorizations (Automatic by
-  /// default: Kerf's kernels for the processor, see Harmonic/SupernodalFactorization.h). A route
+  /// default: Kerf's kernels for the processor, see Numerics/SupernodalFactorization.h). A route
   /// this processor cannot run falls back to CHOLMOD's. Without CHOLMOD it changes nothing.
   void setSupernodalRoute(SupernodalRoute route);
 
