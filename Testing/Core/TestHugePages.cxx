@@ -1,5 +1,5 @@
 // Huge-page work buffers: the allocator's blocks, the advice the kernel records for them, and the
-// CHOLMOD allocator that startCholmod installs.
+// CHOLMOD allocator that Kerf's analyses and factorizations install while they run.
 #include "Numerics/HugePages.h"
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/SupernodalFactorization.h"
@@ -10,12 +10,17 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <condition_variable>
+#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <fstream>
+#include <memory>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 using namespace kerf;
@@ -143,8 +148,9 @@ TEST(HugePages, AdviceOnAnyRangeIsHarmless)
 }
 
 #ifdef KERF_HAVE_CHOLMOD
-TEST(HugePages, CHOLMODFactorValuesTakeHugePagesAfterStartCholmod)
+TEST(HugePages, CHOLMODFactorValuesTakeHugePagesInKerfsFactorization)
 {
+  EXPECT_FALSE(cholmodAllocatorInstalled()) << "SuiteSparse's allocator is Kerf's outside Kerf's calls";
   // A 160 x 160 grid: its supernodal factor's values are several MiB.
   const TriangleMesh mesh = makeGrid(1.0, 1.0, 160, 160);
   Eigen::SparseMatrix<double> laplacian =
@@ -161,6 +167,7 @@ TEST(HugePages, CHOLMODFactorValuesTakeHugePagesAfterStartCholmod)
   cholmod_factor* factor = cholmod_analyze(&a, &common);
   ASSERT_NE(factor, nullptr);
   ASSERT_TRUE(factorizeSupernodal(&a, factor, &common));
+  EXPECT_FALSE(cholmodAllocatorInstalled()) << "the factorization put SuiteSparse's allocator back";
   ASSERT_EQ(factor->minor, factor->n);
   ASSERT_GE(factor->xsize * sizeof(double), HugePageMinimumBytes);
   EXPECT_EQ(reinterpret_cast<std::uintptr_t>(factor->x) % HugePage, 0u);
@@ -184,5 +191,92 @@ TEST(HugePages, CHOLMODFactorValuesTakeHugePagesAfterStartCholmod)
   cholmod_free_dense(&x, &common);
   cholmod_free_factor(&factor, &common);
   cholmod_finish(&common);
+}
+
+namespace
+{
+using SuiteSparseAllocator = void* (*)(std::size_t);
+
+void* otherMalloc(std::size_t bytes)
+{
+  return std::malloc(bytes);
+}
+
+SuiteSparseAllocator currentMalloc()
+{
+#if SUITESPARSE_MAIN_VERSION >= 7
+  return SuiteSparse_config_malloc_func_get();
+#else
+  return SuiteSparse_config.malloc_func;
+#endif
+}
+
+void setMalloc(SuiteSparseAllocator allocator)
+{
+#if SUITESPARSE_MAIN_VERSION >= 7
+  SuiteSparse_config_malloc_func_set(allocator);
+#else
+  SuiteSparse_config.malloc_func = allocator;
+#endif
+}
+} // namespace
+
+TEST(HugePages, CHOLMODAllocatorScopesNestAcrossThreadsAndLeaveAnotherAllocatorAlone)
+{
+  ASSERT_EQ(currentMalloc(), &std::malloc);
+  {
+    const CholmodAllocatorScope outer;
+    EXPECT_TRUE(cholmodAllocatorInstalled());
+    {
+      const CholmodAllocatorScope inner;
+      EXPECT_TRUE(cholmodAllocatorInstalled());
+    }
+    EXPECT_TRUE(cholmodAllocatorInstalled()) << "the inner scope's end keeps the outer's allocator";
+    // A scope on another thread that ends first leaves this one's allocator installed.
+    std::thread([] { const CholmodAllocatorScope other; }).join();
+    EXPECT_TRUE(cholmodAllocatorInstalled());
+  }
+  EXPECT_EQ(currentMalloc(), &std::malloc);
+  // Scopes on two threads, ended in the other order than begun: malloc is back after the last.
+  {
+    std::mutex mutex;
+    std::condition_variable changed;
+    int stage = 0;
+    std::thread second([&] {
+      std::unique_lock<std::mutex> lock(mutex);
+      changed.wait(lock, [&] { return stage == 1; });
+      {
+        const CholmodAllocatorScope scope;
+        stage = 2;
+        changed.notify_all();
+        changed.wait(lock, [&] { return stage == 3; });
+      }
+      stage = 4;
+      changed.notify_all();
+    });
+    {
+      std::unique_lock<std::mutex> lock(mutex);
+      auto first = std::make_unique<CholmodAllocatorScope>();
+      stage = 1;
+      changed.notify_all();
+      changed.wait(lock, [&] { return stage == 2; });
+      first.reset(); // the first scope ends while the second is alive
+      EXPECT_TRUE(cholmodAllocatorInstalled());
+      stage = 3;
+      changed.notify_all();
+      changed.wait(lock, [&] { return stage == 4; });
+    }
+    second.join();
+  }
+  EXPECT_EQ(currentMalloc(), &std::malloc);
+  // Another allocator, set by another SuiteSparse user, is neither replaced nor reset.
+  setMalloc(&otherMalloc);
+  {
+    const CholmodAllocatorScope scope;
+    EXPECT_FALSE(cholmodAllocatorInstalled());
+    EXPECT_EQ(currentMalloc(), &otherMalloc);
+  }
+  EXPECT_EQ(currentMalloc(), &otherMalloc);
+  setMalloc(&std::malloc);
 }
 #endif

@@ -2,6 +2,7 @@
 // instruction-set level, CHOLMOD's) against each other, on the matrices the solvers factor.
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/NestedDissection.h"
+#include "Numerics/SerialOpenMP.h"
 #include "Numerics/SparseCholesky.h"
 #include "Numerics/SupernodalFactorization.h"
 #include "Mesh/MeshGenerators.h"
@@ -22,6 +23,7 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -407,3 +409,23 @@ TEST(SupernodalFactorization, AutomaticTakesTheWidestLevelThisProcessorRuns)
     EXPECT_EQ(automatic, SupernodalRoute::AVX2);
   }
 }
+
+#ifdef KERF_HAVE_CHOLMOD
+// SerialOpenMP changes the OpenMP runtime CHOLMOD loaded on the calling thread only, and for its
+// lifetime only: a host application's other threads keep their own setting.
+TEST(SupernodalFactorization, SerialOpenMPChangesOnlyTheCallingThreadWhileAlive)
+{
+  const auto get = reinterpret_cast<int (*)()>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+  ASSERT_NE(get, nullptr) << "CHOLMOD loads an OpenMP runtime (libgomp on Debian)";
+  const int before = get();
+  ASSERT_GT(before, 0);
+  {
+    const SerialOpenMP serial;
+    EXPECT_EQ(get(), 0);
+    int other = -1;
+    std::thread([&] { other = get(); }).join();
+    EXPECT_EQ(other, before) << "another thread's setting is its own";
+  }
+  EXPECT_EQ(get(), before);
+}
+#endif

@@ -58,6 +58,7 @@ public:
     {
       given = geometricNestedDissection(points, lowerPattern);
     }
+    const CholmodAllocatorScope allocator; // the analysis's workspace
     cholmod_factor* symbolic = given.empty() ? cholmod_analyze(&view, &this->Common)
                                              : cholmod_analyze_p(&view, given.data(), nullptr, 0, &this->Common);
     if (!symbolic || this->Common.status < CHOLMOD_OK)

@@ -426,6 +426,7 @@ bool SparseCholesky::factorOrdered(const Eigen::SparseMatrix<double>& A, Orderin
   m.common.nmethods = 1;
   m.common.method[0].ordering = given ? CHOLMOD_GIVEN : ordering == Ordering::AMD ? CHOLMOD_AMD : CHOLMOD_METIS;
   m.common.supernodal = CHOLMOD_SUPERNODAL;
+  const CholmodAllocatorScope allocator; // the analysis's workspace too
   m.factor = given ? cholmod_analyze_p(&s, const_cast<int*>(given->data()), nullptr, 0, &m.common)
                    : cholmod_analyze(&s, &m.common);
   if (!m.factor)

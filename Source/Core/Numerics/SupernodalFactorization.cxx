@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <limits>
+#include <mutex>
 #include <new>
 #include <string>
 
@@ -108,31 +109,70 @@ void* hugePageMalloc(std::size_t bytes)
     return nullptr;
   }
 }
+
+using Allocator = void* (*)(std::size_t);
+
+Allocator suiteSparseMalloc()
+{
+#if SUITESPARSE_MAIN_VERSION >= 7
+  return SuiteSparse_config_malloc_func_get();
+#else
+  return SuiteSparse_config.malloc_func;
+#endif
+}
+
+void setSuiteSparseMalloc(Allocator allocator)
+{
+#if SUITESPARSE_MAIN_VERSION >= 7
+  SuiteSparse_config_malloc_func_set(allocator);
+#else
+  SuiteSparse_config.malloc_func = allocator;
+#endif
+}
+
+// The scopes alive and whether the first installed Kerf's allocator.
+std::mutex ScopeMutex;
+int ScopeCount = 0;
+bool ScopeInstalled = false;
 } // namespace
 
 int startCholmod(cholmod_common* common)
 {
-  // Once per process, thread-safe among Kerf's callers (a function-local static).
-  static const bool installed = [] {
-#if SUITESPARSE_MAIN_VERSION >= 7
-    if (SuiteSparse_config_malloc_func_get() == &std::malloc)
-    {
-      SuiteSparse_config_malloc_func_set(&hugePageMalloc);
-    }
-#else
-    if (SuiteSparse_config.malloc_func == &std::malloc)
-    {
-      SuiteSparse_config.malloc_func = &hugePageMalloc;
-    }
-#endif
-    return true;
-  }();
-  static_cast<void>(installed);
   return cholmod_start(common);
+}
+
+CholmodAllocatorScope::CholmodAllocatorScope()
+{
+  const std::lock_guard<std::mutex> lock(ScopeMutex);
+  if (ScopeCount++ == 0 && suiteSparseMalloc() == &std::malloc)
+  {
+    setSuiteSparseMalloc(&hugePageMalloc);
+    ScopeInstalled = true;
+  }
+}
+
+CholmodAllocatorScope::~CholmodAllocatorScope()
+{
+  const std::lock_guard<std::mutex> lock(ScopeMutex);
+  if (--ScopeCount == 0 && ScopeInstalled)
+  {
+    if (suiteSparseMalloc() == &hugePageMalloc)
+    {
+      setSuiteSparseMalloc(&std::malloc);
+    }
+    ScopeInstalled = false;
+  }
+}
+
+bool cholmodAllocatorInstalled()
+{
+  const std::lock_guard<std::mutex> lock(ScopeMutex);
+  return suiteSparseMalloc() == &hugePageMalloc;
 }
 
 bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common, SupernodalRoute route)
 {
+  const CholmodAllocatorScope allocator;
   if (route == SupernodalRoute::Automatic)
   {
     route = automaticSupernodalRoute();

@@ -55,15 +55,28 @@ cholmod_sparse cholmodView(const Eigen::SparseMatrix<Scalar, Eigen::ColMajor, in
   return s;
 }
 
-/// cholmod_start(common), the way every Kerf CHOLMOD workspace starts. The first call also gives
-/// SuiteSparse an allocator whose blocks of HugePageMinimumBytes and more (factor values, the
-/// analysis's workspace) are aligned to 2 MiB and advised for transparent huge pages: fresh memory
-/// then faults in 2 MiB at a time, not 4 KiB (HugePages.h). It is installed only while
-/// SuiteSparse's allocator is still the C library's malloc, and its blocks are freed by free().
-/// SuiteSparse's allocator is process-wide: other SuiteSparse users in the process get the same
-/// blocks (correct, and with the same speed trade-off), the install is not synchronised with
-/// threads already inside SuiteSparse, and KerfCore must stay loaded while SuiteSparse allocates.
+/// cholmod_start(common), the way every Kerf CHOLMOD workspace starts.
 int startCholmod(cholmod_common* common);
+
+/// While one is alive, on any thread, SuiteSparse's allocator is Kerf's: blocks of
+/// HugePageMinimumBytes and more (factor values, the analysis's workspace) aligned to 2 MiB and
+/// advised for transparent huge pages, so that fresh memory faults in 2 MiB at a time, not 4 KiB
+/// (HugePages.h). The first scope installs it only if SuiteSparse's allocator is then the C
+/// library's malloc; the last to end puts malloc back, so the process's allocator is its own
+/// outside Kerf's analyses and factorizations, which hold one (factorizeSupernodal does itself).
+/// Every block is freed by free(), whichever allocator is installed when it is freed. Another
+/// SuiteSparse user allocating on another thread while a scope is alive gets the same blocks.
+class CholmodAllocatorScope
+{
+public:
+  CholmodAllocatorScope();
+  ~CholmodAllocatorScope();
+  CholmodAllocatorScope(const CholmodAllocatorScope&) = delete;
+  CholmodAllocatorScope& operator=(const CholmodAllocatorScope&) = delete;
+};
+
+/// Whether Kerf's allocator is SuiteSparse's now (a CholmodAllocatorScope is alive and installed it).
+bool cholmodAllocatorInstalled();
 
 /// Drop-in for cholmod_factorize(A, L, common): factors the real symmetric or complex Hermitian A
 /// (stype -1, lower triangle read; CHOLMOD_REAL or CHOLMOD_COMPLEX) into L, whose symbolic

@@ -216,6 +216,7 @@ public:
   {
     cholmod_sparse a = cholmodView(lower, -1); // the lower triangle
     const SerialOpenMP serial;
+    const CholmodAllocatorScope allocator;
     cholmod_factor* factor = cholmod_analyze(&a, &this->Common);
     if (factor == nullptr)
     {
