@@ -23,6 +23,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <vector>
 
 namespace kerf
 {
@@ -79,7 +81,10 @@ public:
     (void)lowerPattern;
     (void)ordering;
     (void)points;
-    this->Factors.resize(count);
+    for (int i = 0; i < count; ++i)
+    {
+      this->Factors.push_back(std::make_unique<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>());
+    }
 #endif
   }
 
@@ -112,8 +117,8 @@ public:
       throw Error("the heat-method matrices could not be factored (not positive definite)");
     }
 #else
-    this->Factors[index].compute(lower.selfadjointView<Eigen::Lower>());
-    if (this->Factors[index].info() != Eigen::Success)
+    this->Factors[index]->compute(lower.selfadjointView<Eigen::Lower>());
+    if (this->Factors[index]->info() != Eigen::Success)
     {
       throw Error("the heat-method matrices could not be factored (not positive definite)");
     }
@@ -147,7 +152,7 @@ public:
     cholmod_free_dense(&x, &this->Common);
     return result;
 #else
-    return this->Factors[index].solve(b);
+    return this->Factors[index]->solve(b);
 #endif
   }
 
@@ -157,7 +162,7 @@ private:
   std::vector<cholmod_factor*> Factors;
   mutable std::vector<double> Work; // SupernodalSolve's workspace
 #else
-  std::vector<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>> Factors;
+  std::vector<std::unique_ptr<Eigen::SimplicialLDLT<SparseMatrix, Eigen::Lower>>> Factors; // not movable
 #endif
 };
 

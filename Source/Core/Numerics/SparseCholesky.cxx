@@ -1062,6 +1062,7 @@ SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double
   const Eigen::MatrixXd gram = U.transpose() * factor->inverseU;
   out.gram = 0.5 * (gram + gram.transpose()); // exactly symmetric
   out.gramProducts = static_cast<std::size_t>(U.nonZeros()) * static_cast<std::size_t>(U.cols());
+  out.reachRows = static_cast<std::size_t>(U.rows()); // dense solves: every row can be nonzero
   out.factor = factor;
   return out;
 }
