@@ -5,10 +5,12 @@
 #include "Mesh/OpenMeshAdapter.h"
 #include "Mesh/PointWelding.h"
 #include "Mesh/TriangleMesh.h"
+#include "Mesh/UnionFind.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -762,4 +764,32 @@ TEST(TriangleMesh, ProblemsNameTheirFirstPlaces)
   EXPECT_NE(many.find("8 triangles have zero area (collinear or coincident corners: triangles 0, 1, 2, 3, 4, ...)"),
     std::string::npos)
     << many;
+}
+
+TEST(UnionFind, TheSmallerRootWinsWhateverTheOrderOfTheJoins)
+{
+  // The same three trees joined in two orders give the same parents' roots: 0 for {0, 3, 5, 7},
+  // 1 for {1, 4}, 2 for {2, 6}; a join within a tree reports false.
+  const std::vector<std::array<int, 2>> joins{ { 7, 5 }, { 3, 7 }, { 4, 1 }, { 6, 2 }, { 5, 0 } };
+  for (const bool reversed : { false, true })
+  {
+    UnionFind forest(8);
+    for (std::size_t i = 0; i < joins.size(); ++i)
+    {
+      const auto& join = joins[reversed ? joins.size() - 1 - i : i];
+      EXPECT_TRUE(reversed ? forest.join(join[1], join[0]) : forest.join(join[0], join[1]));
+    }
+    EXPECT_FALSE(forest.join(3, 5));
+    const std::vector<int> expected{ 0, 1, 2, 0, 1, 0, 2, 0 };
+    for (int v = 0; v < 8; ++v)
+    {
+      EXPECT_EQ(forest.find(v), expected[static_cast<std::size_t>(v)]) << "vertex " << v << (reversed ? " reversed" : "");
+    }
+  }
+  // findRoot on a raw array halves the path: after one call every node of the chain 4 -> 3 -> 2
+  // -> 1 -> 0 points two steps closer to the root.
+  int parent[5] = { 0, 0, 1, 2, 3 };
+  EXPECT_EQ(findRoot(parent, 4), 0);
+  EXPECT_EQ(parent[4], 2);
+  EXPECT_EQ(parent[2], 0);
 }

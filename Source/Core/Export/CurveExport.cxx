@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
+#include "Mesh/UnionFind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -908,14 +909,7 @@ int labelCharts(const TriangleMesh& mesh, const std::vector<char>& cutEdges, std
   const int faces = mesh.faceCount();
   charts.resize(static_cast<std::size_t>(faces));
   int* parent = charts.data();
-  auto root = [parent](int f) {
-    while (parent[f] != f)
-    {
-      parent[f] = parent[parent[f]];
-      f = parent[f];
-    }
-    return f;
-  };
+  auto root = [parent](int f) { return findRoot(parent, f); };
   for (int f = 0; f < faces; ++f)
   {
     parent[f] = f;

@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/FaceRegions.h"
+#include "Mesh/UnionFind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -406,17 +407,6 @@ std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>
 
 namespace
 {
-// Union-find over region ids.
-int findRoot(std::vector<int>& parent, int r)
-{
-  while (parent[r] != r)
-  {
-    parent[r] = parent[parent[r]];
-    r = parent[r];
-  }
-  return r;
-}
-
 double distanceToPolyline(const Vector3& p, const std::vector<Vector3>& polyline)
 {
   double nearest = std::numeric_limits<double>::infinity();

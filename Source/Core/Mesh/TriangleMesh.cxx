@@ -2,6 +2,7 @@
 #include "Mesh/TriangleMesh.h"
 
 #include "Error.h"
+#include "Mesh/UnionFind.h"
 
 #include <algorithm>
 #include <limits>
@@ -16,17 +17,6 @@ namespace
 // edgeShift's mark for a vertex whose triangles changed in a refinement.
 constexpr int ChangedVertex = std::numeric_limits<int>::min();
 
-// Union-find with path halving; deterministic (the smaller root wins).
-int findRoot(std::vector<int>& parent, int i)
-{
-  while (parent[i] != i)
-  {
-    parent[i] = parent[parent[i]];
-    i = parent[i];
-  }
-  return i;
-}
-
 void checkTriangle(const Triangle& triangle, std::size_t f, int pointCount)
 {
   for (int corner : triangle)
@@ -39,18 +29,10 @@ void checkTriangle(const Triangle& triangle, std::size_t f, int pointCount)
   }
 }
 
+// Deterministic: the smaller root wins.
 void unite(std::vector<int>& parent, int a, int b)
 {
-  a = findRoot(parent, a);
-  b = findRoot(parent, b);
-  if (a < b)
-  {
-    parent[b] = a;
-  }
-  else if (b < a)
-  {
-    parent[a] = b;
-  }
+  joinRoots(parent, a, b);
 }
 } // namespace
 

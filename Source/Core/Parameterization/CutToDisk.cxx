@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
+#include "Mesh/UnionFind.h"
 
 #include <algorithm>
 #include <functional>
@@ -17,32 +18,6 @@ namespace kerf
 namespace
 {
 
-struct UnionFind
-{
-  std::vector<int> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int a)
-  {
-    while (parent[static_cast<std::size_t>(a)] != a)
-    {
-      parent[static_cast<std::size_t>(a)] = parent[static_cast<std::size_t>(parent[static_cast<std::size_t>(a)])];
-      a = parent[static_cast<std::size_t>(a)];
-    }
-    return a;
-  }
-  bool join(int a, int b)
-  {
-    a = find(a);
-    b = find(b);
-    if (a == b)
-    {
-      return false;
-    }
-    // The smaller root wins, so the result does not depend on the order of the calls' arguments.
-    parent[static_cast<std::size_t>(std::max(a, b))] = std::min(a, b);
-    return true;
-  }
-};
 
 // A graph with weighted undirected edges: the chart's vertices, then one cap vertex per boundary loop.
 struct CappedGraph

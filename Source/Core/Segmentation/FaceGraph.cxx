@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Session/Surface.h"
+#include "Mesh/UnionFind.h"
 
 #include <algorithm>
 #include <cmath>
@@ -276,12 +277,7 @@ RegionAdjacency::RegionAdjacency(const FaceGraph& graph, const std::vector<int>&
 
 int RegionAdjacency::find(int r) const
 {
-  while (this->Parent[r] != r)
-  {
-    this->Parent[r] = this->Parent[this->Parent[r]];
-    r = this->Parent[r];
-  }
-  return r;
+  return findRoot(this->Parent, r);
 }
 
 void RegionAdjacency::merge(int from, int into)

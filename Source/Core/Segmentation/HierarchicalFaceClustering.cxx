@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "Numerics/HugePages.h"
 #include "Session/Surface.h"
+#include "Mesh/UnionFind.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -342,14 +343,7 @@ std::vector<int> applyMerges(const FaceClusterHierarchy& hierarchy, std::size_t 
   const int n = hierarchy.faceCount;
   std::vector<int> parent(static_cast<std::size_t>(n) + count);
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int a) {
-    while (parent[a] != a)
-    {
-      parent[a] = parent[parent[a]];
-      a = parent[a];
-    }
-    return a;
-  };
+  auto find = [&parent](int a) { return findRoot(parent, a); };
   for (std::size_t i = 0; i < count; ++i)
   {
     const int node = n + static_cast<int>(i);
