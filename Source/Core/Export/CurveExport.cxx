@@ -909,7 +909,6 @@ int labelCharts(const TriangleMesh& mesh, const std::vector<char>& cutEdges, std
   const int faces = mesh.faceCount();
   charts.resize(static_cast<std::size_t>(faces));
   int* parent = charts.data();
-  auto root = [parent](int f) { return findRoot(parent, f); };
   for (int f = 0; f < faces; ++f)
   {
     parent[f] = f;
@@ -918,8 +917,7 @@ int labelCharts(const TriangleMesh& mesh, const std::vector<char>& cutEdges, std
       const int g = mesh.faceNeighbor(f, k);
       if (g >= 0 && g < f && !cutEdges[static_cast<std::size_t>(mesh.faceEdge(f, k))])
       {
-        const int a = root(f), b = root(g);
-        parent[std::max(a, b)] = std::min(a, b);
+        joinRoots(parent, f, g);
       }
     }
   }

@@ -29,11 +29,6 @@ void checkTriangle(const Triangle& triangle, std::size_t f, int pointCount)
   }
 }
 
-// Deterministic: the smaller root wins.
-void unite(std::vector<int>& parent, int a, int b)
-{
-  joinRoots(parent, a, b);
-}
 } // namespace
 
 TriangleMesh::TriangleMesh(std::vector<Vector3> points, std::vector<Triangle> triangles)
@@ -631,8 +626,8 @@ void TriangleMesh::buildComponents()
   std::iota(parent.begin(), parent.end(), 0);
   for (const Triangle& t : this->Triangles)
   {
-    unite(parent, t[0], t[1]);
-    unite(parent, t[0], t[2]);
+    joinRoots(parent, t[0], t[1]);
+    joinRoots(parent, t[0], t[2]);
   }
   // Number components by their first triangle.
   std::vector<int> label(n, -1);
@@ -708,8 +703,8 @@ bool TriangleMesh::copyComponents(
       this->FaceComponents[g] = component;
       const Triangle& t = this->Triangles[g];
       const int a = localIndex(t[0]), b = localIndex(t[1]), c = localIndex(t[2]);
-      unite(parent, a, b);
-      unite(parent, a, c);
+      joinRoots(parent, a, b);
+      joinRoots(parent, a, c);
     }
     for (std::size_t i = 0; i < local.size(); ++i)
     {

@@ -343,17 +343,16 @@ std::vector<int> applyMerges(const FaceClusterHierarchy& hierarchy, std::size_t 
   const int n = hierarchy.faceCount;
   std::vector<int> parent(static_cast<std::size_t>(n) + count);
   std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&parent](int a) { return findRoot(parent, a); };
   for (std::size_t i = 0; i < count; ++i)
   {
     const int node = n + static_cast<int>(i);
-    parent[find(hierarchy.merges[i][0])] = node;
-    parent[find(hierarchy.merges[i][1])] = node;
+    parent[findRoot(parent, hierarchy.merges[i][0])] = node;
+    parent[findRoot(parent, hierarchy.merges[i][1])] = node;
   }
   std::vector<int> labels(n);
   for (int f = 0; f < n; ++f)
   {
-    labels[f] = find(f);
+    labels[f] = findRoot(parent, f);
   }
   return numberByFirstFace(labels);
 }
