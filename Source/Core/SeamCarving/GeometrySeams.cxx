@@ -415,9 +415,13 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
   uniform.weighting = LaplacianWeighting::Uniform;
   HarmonicFieldSolver solver;
   result.harmonicField = solver.solve(mesh, computeLaplacianWeights(mesh, uniform), constraints).field;
+  // The field is clamped to [0, 1] (the maximum principle, up to rounding) and rounded to
+  // multiples of 2^-32: the factorization routes differ in the last bits (about 1e-15), and on
+  // regular meshes many rings cost nearly the same, so that unrounded the last bits would choose
+  // between them. 2^-32 is far below the field's meaningful accuracy on any mesh Kerf handles.
   for (double& value : result.harmonicField)
   {
-    value = std::min(1.0, std::max(0.0, value)); // the maximum principle, up to rounding
+    value = std::ldexp(std::nearbyint(std::ldexp(std::min(1.0, std::max(0.0, value)), 32)), -32);
   }
   std::vector<double> field(r.vertexCount()), angle(r.vertexCount());
   for (int v = 0; v < r.vertexCount(); ++v)
