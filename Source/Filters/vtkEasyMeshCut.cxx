@@ -112,11 +112,7 @@ void vtkEasyMeshCut::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Refine: " << this->Refine << "\n";
-  os << indent << "SnakeIterations: " << this->SnakeIterations << "\n";
-  os << indent << "SnakeConvergence: " << this->SnakeConvergence << "\n";
-  os << indent << "SnakeCurvatureOffset: " << this->SnakeCurvatureOffset << "\n";
-  os << indent << "SnakeSlideSamples: " << this->SnakeSlideSamples << "\n";
-  os << indent << "OverrideRadius: " << this->OverrideRadius << "\n";
+  this->PrintSnakeParameters(os, indent);
   os << indent << "ForegroundPoints: " << this->State->foreground.Count() << "\n";
   os << indent << "BackgroundPoints: " << this->State->background.Count() << "\n";
 }

@@ -37,6 +37,7 @@
 #define vtkEasyMeshCut_h
 
 #include "KerfFiltersModule.h"
+#include "KerfSnakeParameters.h"
 #include "vtkStrokeGrowingAlgorithm.h"
 
 #include <memory>
@@ -55,32 +56,11 @@ public:
   vtkBooleanMacro(Refine, bool);
   ///@}
 
-  ///@{
-  /// The most sweeps of the snake refinement. Default 100.
-  vtkSetClampMacro(SnakeIterations, int, 1, 100000);
-  vtkGetMacro(SnakeIterations, int);
-  ///@}
+  /// The snake and override parameters (KerfSnakeParameters.h); SnakeIterations 0 with Refine
+  /// on leaves the grown boundaries for override strokes alone.
+  kerfSnakeParametersMacro();
 
-  ///@{
-  /// The refinement ends after a sweep in which no snaxel moves farther than this fraction of the
-  /// mean edge length. Default 0.01.
-  vtkSetClampMacro(SnakeConvergence, double, 0.0, 1.0);
-  vtkGetMacro(SnakeConvergence, double);
-  ///@}
-
-  ///@{
-  /// Added to the snake's external energy |k_min| + |k_max| so that it straightens in flat
-  /// regions too. Default 1.
-  vtkSetClampMacro(SnakeCurvatureOffset, double, 0.0, 1e6);
-  vtkGetMacro(SnakeCurvatureOffset, double);
-  ///@}
-
-  ///@{
-  /// Positions a snaxel tries along its edge in a slide, both ends included. Default 8.
-  vtkSetClampMacro(SnakeSlideSamples, int, 2, 1000);
-  vtkGetMacro(SnakeSlideSamples, int);
-  ///@}
-
+public:
   ///@{
   /// The typed strokes, used when input 1 is not connected for the labels without a drawn stroke
   /// (vtkDrawnStrokeAlgorithm): the foreground stroke (label 1) and the background stroke
@@ -95,13 +75,6 @@ public:
   void SetBackgroundPoint(int index, double x, double y, double z);
   ///@}
 
-  ///@{
-  /// How far from an override stroke (input 2) the boundary is replaced by it, as a fraction of the
-  /// bounding-box diagonal. Default 0.03.
-  vtkSetClampMacro(OverrideRadius, double, 1e-6, 1.0);
-  vtkGetMacro(OverrideRadius, double);
-  ///@}
-
 protected:
   vtkEasyMeshCut();
   ~vtkEasyMeshCut() override;
@@ -110,11 +83,6 @@ protected:
     vtkInformationVector* outputVector) override;
 
   bool Refine = true;
-  int SnakeIterations = 100;
-  double SnakeConvergence = 0.01;
-  double SnakeCurvatureOffset = 1.0;
-  int SnakeSlideSamples = 8;
-  double OverrideRadius = 0.03;
 
 private:
   vtkEasyMeshCut(const vtkEasyMeshCut&) = delete;

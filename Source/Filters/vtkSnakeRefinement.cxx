@@ -90,10 +90,6 @@ int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inpu
 void vtkSnakeRefinement::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SnakeIterations: " << this->SnakeIterations << "\n";
-  os << indent << "SnakeConvergence: " << this->SnakeConvergence << "\n";
-  os << indent << "SnakeCurvatureOffset: " << this->SnakeCurvatureOffset << "\n";
-  os << indent << "SnakeSlideSamples: " << this->SnakeSlideSamples << "\n";
-  os << indent << "OverrideRadius: " << this->OverrideRadius << "\n";
+  this->PrintSnakeParameters(os, indent);
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
 }

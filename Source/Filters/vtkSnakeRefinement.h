@@ -30,6 +30,7 @@
 #define vtkSnakeRefinement_h
 
 #include "KerfFiltersModule.h"
+#include "KerfSnakeParameters.h"
 #include "vtkDrawnStrokeAlgorithm.h"
 
 #include <memory>
@@ -41,41 +42,10 @@ public:
   vtkTypeMacro(vtkSnakeRefinement, vtkDrawnStrokeAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /// The most sweeps of the snake refinement; 0 leaves the snakes as they start (along mesh
-  /// edges through the labelling's boundary vertices, a face whose three corners lie on the
-  /// boundary taking the smaller label) for override strokes alone. Default 100.
-  vtkSetClampMacro(SnakeIterations, int, 0, 100000);
-  vtkGetMacro(SnakeIterations, int);
-  ///@}
+  /// The snake and override parameters (KerfSnakeParameters.h); override strokes are input 1.
+  kerfSnakeParametersMacro();
 
-  ///@{
-  /// The refinement ends after a sweep in which no snaxel moves farther than this fraction of the
-  /// mean edge length. Default 0.01.
-  vtkSetClampMacro(SnakeConvergence, double, 0.0, 1.0);
-  vtkGetMacro(SnakeConvergence, double);
-  ///@}
-
-  ///@{
-  /// Added to the snake's external energy |k_min| + |k_max| so that it straightens in flat
-  /// regions too. Default 1.
-  vtkSetClampMacro(SnakeCurvatureOffset, double, 0.0, 1e6);
-  vtkGetMacro(SnakeCurvatureOffset, double);
-  ///@}
-
-  ///@{
-  /// Positions a snaxel tries along its edge in a slide, both ends included. Default 8.
-  vtkSetClampMacro(SnakeSlideSamples, int, 2, 1000);
-  vtkGetMacro(SnakeSlideSamples, int);
-  ///@}
-
-  ///@{
-  /// How far from an override stroke (input 1) the boundary is replaced by it, as a fraction of the
-  /// bounding-box diagonal. Default 0.03.
-  vtkSetClampMacro(OverrideRadius, double, 1e-6, 1.0);
-  vtkGetMacro(OverrideRadius, double);
-  ///@}
-
+public:
   ///@{
   /// Override stroke points farther from the surface than this fraction of the bounding-box
   /// diagonal are refused; 0 means no limit. Default 0.05.
@@ -94,11 +64,6 @@ protected:
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
 
-  int SnakeIterations = 100;
-  double SnakeConvergence = 0.01;
-  double SnakeCurvatureOffset = 1.0;
-  int SnakeSlideSamples = 8;
-  double OverrideRadius = 0.03;
   double MaximumProjectionDistance = 0.05;
 
 private:
