@@ -3,8 +3,8 @@
 
 #include "KerfDisplay.h"
 #include "KerfErrorCollector.h"
-#include "vtkMeshFileReader.h"
-#include "vtkMeshFileWriter.h"
+#include "vtkKerfMeshFileReader.h"
+#include "vtkKerfMeshFileWriter.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCommand.h>
@@ -34,7 +34,7 @@ void RunAlgorithm(vtkAlgorithm* algorithm, const std::string& what)
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& fileName)
 {
-  vtkNew<vtkMeshFileReader> reader;
+  vtkNew<vtkKerfMeshFileReader> reader;
   reader->SetFileName(fileName.c_str());
   RunAlgorithm(reader, "cannot read the mesh");
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
@@ -44,7 +44,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& fileName)
 
 void WriteMesh(vtkPolyData* mesh, const std::string& fileName)
 {
-  vtkNew<vtkMeshFileWriter> writer;
+  vtkNew<vtkKerfMeshFileWriter> writer;
   writer->SetFileName(fileName.c_str());
   writer->SetInputData(mesh);
   vtkNew<ErrorCollector> errors;

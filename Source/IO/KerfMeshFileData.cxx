@@ -1,4 +1,4 @@
-// Conversion of kerf::MeshFileData into vtkPolyData for vtkMeshFileReader.
+// Conversion of kerf::MeshFileData into vtkPolyData for vtkKerfMeshFileReader.
 #include "KerfMeshFileData.h"
 
 #include <vtkCellArray.h>

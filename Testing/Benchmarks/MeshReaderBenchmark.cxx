@@ -1,15 +1,15 @@
-// Reading mesh files: vtkMeshFileReader (Kerf's PLY, STL and OBJ parsers; Kerf's checks before
+// Reading mesh files: vtkKerfMeshFileReader (Kerf's PLY, STL and OBJ parsers; Kerf's checks before
 // VTK's legacy and XML readers) beside VTK's own readers on the same files (/10k /100k /1M).
 //
 // The files are the cube dumbbell (BenchmarkMeshes.h) written once per run into the temporary
-// folder, as `kerf convert` writes them (vtkMeshFileWriter: binary PLY, STL, legacy VTK, VTP with
+// folder, as `kerf convert` writes them (vtkKerfMeshFileWriter: binary PLY, STL, legacy VTK, VTP with
 // raw appended LZ4 blocks, zlib before 2026-11-26; OBJ as text) plus ASCII PLY and STL. Each iteration reads the file with a new reader.
 #include "BenchmarkMeshes.h"
 #include "BenchmarkPolyData.h"
 #include "KerfBenchmarks.h"
 
-#include "vtkMeshFileReader.h"
-#include "vtkMeshFileWriter.h"
+#include "vtkKerfMeshFileReader.h"
+#include "vtkKerfMeshFileWriter.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkNew.h>
@@ -110,7 +110,7 @@ std::string fileFor(Flavour flavour, const ReaderSize& size)
   }
   else
   {
-    vtkNew<vtkMeshFileWriter> writer;
+    vtkNew<vtkKerfMeshFileWriter> writer;
     writer->SetInputData(mesh);
     writer->SetFileName(file.c_str());
     ok = writer->Write();
@@ -162,19 +162,19 @@ void RegisterMeshReaderBenchmarks(bool useSizeMinimumTimes)
     Function function;
   };
   const Entry entries[] = {
-    { "BM_ReadPLYBinary_Kerf", Flavour::PLYBinary, readWith<vtkMeshFileReader> },
+    { "BM_ReadPLYBinary_Kerf", Flavour::PLYBinary, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadPLYBinary_VTK", Flavour::PLYBinary, readWith<vtkPLYReader> },
-    { "BM_ReadPLYAscii_Kerf", Flavour::PLYAscii, readWith<vtkMeshFileReader> },
+    { "BM_ReadPLYAscii_Kerf", Flavour::PLYAscii, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadPLYAscii_VTK", Flavour::PLYAscii, readWith<vtkPLYReader> },
-    { "BM_ReadSTLBinary_Kerf", Flavour::STLBinary, readWith<vtkMeshFileReader> },
+    { "BM_ReadSTLBinary_Kerf", Flavour::STLBinary, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadSTLBinary_VTK", Flavour::STLBinary, readWith<vtkSTLReader> },
-    { "BM_ReadSTLAscii_Kerf", Flavour::STLAscii, readWith<vtkMeshFileReader> },
+    { "BM_ReadSTLAscii_Kerf", Flavour::STLAscii, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadSTLAscii_VTK", Flavour::STLAscii, readWith<vtkSTLReader> },
-    { "BM_ReadOBJ_Kerf", Flavour::OBJ, readWith<vtkMeshFileReader> },
+    { "BM_ReadOBJ_Kerf", Flavour::OBJ, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadOBJ_VTK", Flavour::OBJ, readWith<vtkOBJReader> },
-    { "BM_ReadLegacyVTK_Kerf", Flavour::LegacyBinary, readWith<vtkMeshFileReader> },
+    { "BM_ReadLegacyVTK_Kerf", Flavour::LegacyBinary, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadLegacyVTK_VTK", Flavour::LegacyBinary, readWith<vtkPolyDataReader> },
-    { "BM_ReadVTP_Kerf", Flavour::VTPCompressed, readWith<vtkMeshFileReader> },
+    { "BM_ReadVTP_Kerf", Flavour::VTPCompressed, readWith<vtkKerfMeshFileReader> },
     { "BM_ReadVTP_VTK", Flavour::VTPCompressed, readWith<vtkXMLPolyDataReader> },
   };
   for (const ReaderSize& size : Sizes)

@@ -1,7 +1,7 @@
 // Helpers shared by Kerf's VTK filter tests.
 #include "KerfTestUtilities.h"
 
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 
 #include "KerfErrorCollector.h"
 #include "KerfScene.h"
@@ -92,7 +92,7 @@ std::string SourcePath(int argc, char* argv[], const std::string& relative)
 
 CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[])
 {
-  CamelWithNeckStroke files{ vtkSmartPointer<vtkMeshFileReader>::New(), vtkSmartPointer<vtkMeshFileReader>::New() };
+  CamelWithNeckStroke files{ vtkSmartPointer<vtkKerfMeshFileReader>::New(), vtkSmartPointer<vtkKerfMeshFileReader>::New() };
   files.camel->SetFileName(SourcePath(argc, argv, "Data/camel.off").c_str());
   files.stroke->SetFileName(SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
   return files;
@@ -139,7 +139,7 @@ bool Check(bool condition, const char* what, const char* file, int line)
 
 int CamelSegmentationImageTest(int argc, char* argv[], vtkPolyDataAlgorithm* segmentation)
 {
-  vtkNew<vtkMeshFileReader> reader;
+  vtkNew<vtkKerfMeshFileReader> reader;
   reader->SetFileName(SourcePath(argc, argv, "Data/camel.off").c_str());
   segmentation->SetInputConnection(reader->GetOutputPort());
   segmentation->Update();

@@ -9,7 +9,7 @@
 #include <vector>
 
 class vtkAlgorithm;
-class vtkMeshFileReader;
+class vtkKerfMeshFileReader;
 class vtkPolyDataAlgorithm;
 class vtkPolyData;
 
@@ -34,8 +34,8 @@ std::string SourcePath(int argc, char* argv[], const std::string& relative);
 /// Readers of the bundled camel (Data/camel.off) and its neck stroke (Data/camel-neck-stroke.vtk).
 struct CamelWithNeckStroke
 {
-  vtkSmartPointer<vtkMeshFileReader> camel;
-  vtkSmartPointer<vtkMeshFileReader> stroke;
+  vtkSmartPointer<vtkKerfMeshFileReader> camel;
+  vtkSmartPointer<vtkKerfMeshFileReader> stroke;
 };
 CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[]);
 

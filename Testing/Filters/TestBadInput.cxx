@@ -3,7 +3,7 @@
 #include "KerfFilterList.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>
@@ -178,7 +178,7 @@ int TestBadInput(int argc, char* argv[])
   {
     for (const FileCase& c : xatlas)
     {
-      vtkNew<vtkMeshFileReader> reader;
+      vtkNew<vtkKerfMeshFileReader> reader;
       reader->SetFileName(kerf::test::SharedDataPath(c.file).c_str());
       ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(reader).empty());
       for (const Filter& filter : filters())
@@ -221,22 +221,22 @@ int TestBadInput(int argc, char* argv[])
   };
   for (const auto& bad : badFiles)
   {
-    vtkNew<vtkMeshFileReader> reader;
+    vtkNew<vtkKerfMeshFileReader> reader;
     reader->SetFileName(bad.first.c_str());
     int succeeded = 1;
     const std::string error = kerf::test::UpdateAndCaptureError(reader, &succeeded);
-    std::cout << "vtkMeshFileReader on " << bad.first << ": " << error << std::endl;
+    std::cout << "vtkKerfMeshFileReader on " << bad.first << ": " << error << std::endl;
     ok &= KERF_CHECK(succeeded == 0 && !error.empty());
     ok &= KERF_CHECK(error.find(bad.second) != std::string::npos);
   }
 
   // A face with an index past the last vertex is refused, naming the line.
   {
-    vtkNew<vtkMeshFileReader> reader;
+    vtkNew<vtkKerfMeshFileReader> reader;
     reader->SetFileName((input + "bad-index.obj").c_str());
     int succeeded = 1;
     const std::string error = kerf::test::UpdateAndCaptureError(reader, &succeeded);
-    std::cout << "vtkMeshFileReader on bad-index.obj: " << error << std::endl;
+    std::cout << "vtkKerfMeshFileReader on bad-index.obj: " << error << std::endl;
     ok &= KERF_CHECK(succeeded == 0 && error.find("OBJ line 3: vertex index 9 is out of range: the file has 2 vertices") != std::string::npos);
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -1,7 +1,7 @@
 // vtkCurveExport: the camel cut along its neck stroke exported by scissor, snap and inverse snap; errors, input untouched.
 #include "KerfTestUtilities.h"
 #include "vtkCurveExport.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 #include "vtkStrokeCut.h"
 
 #include <vtkCellArray.h>
@@ -51,8 +51,8 @@ int TestCurveExportFilter(int argc, char* argv[])
 {
   bool ok = true;
   const kerf::test::CamelWithNeckStroke files = kerf::test::ReadCamelWithNeckStroke(argc, argv);
-  vtkMeshFileReader* camel = files.camel;
-  vtkMeshFileReader* stroke = files.stroke;
+  vtkKerfMeshFileReader* camel = files.camel;
+  vtkKerfMeshFileReader* stroke = files.stroke;
   vtkNew<vtkStrokeCut> cut;
   cut->SetInputConnection(0, camel->GetOutputPort());
   cut->SetInputConnection(1, stroke->GetOutputPort());

@@ -2,7 +2,7 @@
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkCurveExport.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 #include "vtkStrokeCut.h"
 
 #include <vtkNew.h>
@@ -15,8 +15,8 @@
 int TestCurveExportImage(int argc, char* argv[])
 {
   const kerf::test::CamelWithNeckStroke files = kerf::test::ReadCamelWithNeckStroke(argc, argv);
-  vtkMeshFileReader* camel = files.camel;
-  vtkMeshFileReader* stroke = files.stroke;
+  vtkKerfMeshFileReader* camel = files.camel;
+  vtkKerfMeshFileReader* stroke = files.stroke;
   vtkNew<vtkStrokeCut> cut;
   cut->SetInputConnection(0, camel->GetOutputPort());
   cut->SetInputConnection(1, stroke->GetOutputPort());

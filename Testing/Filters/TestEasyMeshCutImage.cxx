@@ -2,7 +2,7 @@
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkEasyMeshCut.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -19,7 +19,7 @@
 
 int TestEasyMeshCutImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> camel;
+  vtkNew<vtkKerfMeshFileReader> camel;
   camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
   camel->Update();
   // Foreground: the point of least y (a front hoof); background: the point of greatest y.

@@ -2,7 +2,7 @@
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkGeodesicDisc.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 
 #include <vtkDoubleArray.h>
 #include <vtkIntArray.h>
@@ -17,7 +17,7 @@
 
 int TestGeodesicDiscImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> camel;
+  vtkNew<vtkKerfMeshFileReader> camel;
   camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
   camel->Update();
   // The clicks: the camel's points of least y (a front hoof) and of greatest z (the head), adding discs of 0.2 and 0.15 of the diagonal, and the hoof's point again subtracting a

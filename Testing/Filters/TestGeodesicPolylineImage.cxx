@@ -3,7 +3,7 @@
 #include "KerfTestUtilities.h"
 #include "vtkGeodesicDistance.h"
 #include "vtkGeodesicPolyline.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 
 #include <vtkCellArray.h>
 #include <vtkCell.h>
@@ -23,7 +23,7 @@
 
 int TestGeodesicPolylineImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> camel;
+  vtkNew<vtkKerfMeshFileReader> camel;
   camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
   camel->Update();
   // The path: from the top of the head (greatest z) over the flank (greatest x) to the tail (least

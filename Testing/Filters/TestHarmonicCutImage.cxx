@@ -3,7 +3,7 @@
 #include "KerfTestUtilities.h"
 #include "vtkHarmonicField.h"
 #include "vtkIsolineCut.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 #include "vtkStrokeConstraints.h"
 
 #include <vtkNew.h>
@@ -16,8 +16,8 @@
 int TestHarmonicCutImage(int argc, char* argv[])
 {
   const kerf::test::CamelWithNeckStroke files = kerf::test::ReadCamelWithNeckStroke(argc, argv);
-  vtkMeshFileReader* camel = files.camel;
-  vtkMeshFileReader* stroke = files.stroke;
+  vtkKerfMeshFileReader* camel = files.camel;
+  vtkKerfMeshFileReader* stroke = files.stroke;
   vtkNew<vtkStrokeConstraints> constraints;
   constraints->SetInputConnection(0, camel->GetOutputPort());
   constraints->SetInputConnection(1, stroke->GetOutputPort());

@@ -1,12 +1,12 @@
-// OFF and .seg readers and writers through VTK, and vtkMeshFileReader on every supported format.
+// OFF and .seg readers and writers through VTK, and vtkKerfMeshFileReader on every supported format.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
-#include "vtkMeshFileReader.h"
-#include "vtkMeshFileWriter.h"
-#include "vtkOFFReader.h"
-#include "vtkOFFWriter.h"
-#include "vtkSegmentationReader.h"
-#include "vtkSegmentationWriter.h"
+#include "vtkKerfMeshFileReader.h"
+#include "vtkKerfMeshFileWriter.h"
+#include "vtkKerfOFFReader.h"
+#include "vtkKerfOFFWriter.h"
+#include "vtkKerfSegmentationReader.h"
+#include "vtkKerfSegmentationWriter.h"
 
 #include <vtkCellData.h>
 #include <vtkCellArray.h>
@@ -60,11 +60,11 @@ int TestMeshIO(int argc, char* argv[])
 
   // OFF round trip is lossless, and face order is cell order.
   const std::string offFile = temp + "/kerf-io-torus.off";
-  vtkNew<vtkOFFWriter> offWriter;
+  vtkNew<vtkKerfOFFWriter> offWriter;
   offWriter->SetInputData(torus);
   offWriter->SetFileName(offFile.c_str());
   ok &= KERF_CHECK(offWriter->Write() == 1);
-  vtkNew<vtkOFFReader> offReader;
+  vtkNew<vtkKerfOFFReader> offReader;
   offReader->SetFileName(offFile.c_str());
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(offReader).empty());
   vtkPolyData* back = offReader->GetOutput();
@@ -81,7 +81,7 @@ int TestMeshIO(int argc, char* argv[])
       break;
     }
   }
-  ok &= KERF_CHECK(vtkOFFReader::CanReadFile(offFile.c_str()) == 1);
+  ok &= KERF_CHECK(vtkKerfOFFReader::CanReadFile(offFile.c_str()) == 1);
 
   // A segmentation written from a cell array reads back onto the mesh.
   vtkNew<vtkIntArray> labels;
@@ -94,11 +94,11 @@ int TestMeshIO(int argc, char* argv[])
   labelled->ShallowCopy(back);
   labelled->GetCellData()->AddArray(labels);
   const std::string segFile = temp + "/kerf-io-torus.seg";
-  vtkNew<vtkSegmentationWriter> segWriter;
+  vtkNew<vtkKerfSegmentationWriter> segWriter;
   segWriter->SetInputData(labelled);
   segWriter->SetFileName(segFile.c_str());
   ok &= KERF_CHECK(segWriter->Write() == 1);
-  vtkNew<vtkSegmentationReader> segReader;
+  vtkNew<vtkKerfSegmentationReader> segReader;
   segReader->SetInputConnection(offReader->GetOutputPort());
   segReader->SetFileName(segFile.c_str());
   segReader->SetArrayName("Human");
@@ -118,7 +118,7 @@ int TestMeshIO(int argc, char* argv[])
   // A .seg with the wrong number of labels, a missing array, a bad path: clear errors.
   const std::string shortSeg = temp + "/kerf-io-short.seg";
   std::ofstream(shortSeg) << "0\n1\n";
-  vtkNew<vtkSegmentationReader> wrongCount;
+  vtkNew<vtkKerfSegmentationReader> wrongCount;
   wrongCount->SetInputConnection(offReader->GetOutputPort());
   wrongCount->SetFileName(shortSeg.c_str());
   int succeeded = 1;
@@ -130,7 +130,7 @@ int TestMeshIO(int argc, char* argv[])
   error = kerf::test::UpdateAndCaptureError(wrongCount, &succeeded);
   ok &= KERF_CHECK(succeeded == 0 && error.find("line 2") != std::string::npos);
 
-  vtkNew<vtkSegmentationWriter> noArray;
+  vtkNew<vtkKerfSegmentationWriter> noArray;
   noArray->SetInputData(torus);
   noArray->SetFileName((temp + "/kerf-io-none.seg").c_str());
   noArray->SetArrayName("Missing");
@@ -138,7 +138,7 @@ int TestMeshIO(int argc, char* argv[])
   ok &= KERF_CHECK(error.find("no cell array named 'Missing'") != std::string::npos);
   ok &= KERF_CHECK(noArray->GetErrorCode() != 0);
 
-  vtkNew<vtkOFFWriter> badPath;
+  vtkNew<vtkKerfOFFWriter> badPath;
   badPath->SetInputData(torus);
   badPath->SetFileName("/nonexistent/kerf/out.off");
   error = kerf::test::UpdateAndCaptureError(badPath, &succeeded);
@@ -155,10 +155,10 @@ int TestMeshIO(int argc, char* argv[])
   vtkNew<vtkOBJWriter> obj;
   vtkNew<vtkSTLWriter> stl;
   vtkNew<vtkXMLPolyDataWriter> vtp;
-  // Inline binary: appended data does not read back with Debian 12's expat (see vtkMeshFileReader).
+  // Inline binary: appended data does not read back with Debian 12's expat (see vtkKerfMeshFileReader).
   vtp->SetDataModeToBinary();
   vtkNew<vtkPolyDataWriter> legacy;
-  vtkNew<vtkOFFWriter> off;
+  vtkNew<vtkKerfOFFWriter> off;
   ok &= KERF_CHECK(write(ply.Get(), any + ".ply") == 1);
   ok &= KERF_CHECK(write(obj.Get(), any + ".obj") == 1);
   ok &= KERF_CHECK(write(stl.Get(), any + ".stl") == 1);
@@ -168,9 +168,9 @@ int TestMeshIO(int argc, char* argv[])
   for (const char* extension : { ".ply", ".obj", ".stl", ".vtp", ".vtk", ".OFF" })
   {
     const std::string file = any + extension;
-    vtkNew<vtkMeshFileReader> reader;
+    vtkNew<vtkKerfMeshFileReader> reader;
     reader->SetFileName(file.c_str());
-    ok &= KERF_CHECK(vtkMeshFileReader::IsSupportedExtension(file.c_str()) == 1);
+    ok &= KERF_CHECK(vtkKerfMeshFileReader::IsSupportedExtension(file.c_str()) == 1);
     error = kerf::test::UpdateAndCaptureError(reader);
     std::cout << "read " << file << ": " << (error.empty() ? "ok" : error) << std::endl;
     ok &= KERF_CHECK(error.empty());
@@ -195,12 +195,12 @@ int TestMeshIO(int argc, char* argv[])
     for (const char* extension : { ".ply", ".obj", ".vtp", ".vtk" })
     {
       const std::string file = temp + "/kerf-io-uv" + extension;
-      vtkNew<vtkMeshFileWriter> writer;
+      vtkNew<vtkKerfMeshFileWriter> writer;
       writer->SetInputData(textured);
       writer->SetFileName(file.c_str());
       ok &= KERF_CHECK(writer->Write() == 1);
       ok &= KERF_CHECK(textured->GetPointData()->GetTCoords() == uv.Get());
-      vtkNew<vtkMeshFileReader> reader;
+      vtkNew<vtkKerfMeshFileReader> reader;
       reader->SetFileName(file.c_str());
       error = kerf::test::UpdateAndCaptureError(reader);
       ok &= KERF_CHECK(error.empty());
@@ -287,7 +287,7 @@ int TestMeshIO(int argc, char* argv[])
   }
   for (const Flavour& flavour : flavours)
   {
-    vtkNew<vtkMeshFileReader> kerfReader;
+    vtkNew<vtkKerfMeshFileReader> kerfReader;
     kerfReader->SetFileName(flavour.file.c_str());
     error = kerf::test::UpdateAndCaptureError(kerfReader);
     std::cout << "read " << flavour.file << ": " << (error.empty() ? "ok" : error) << std::endl;

@@ -1,7 +1,7 @@
 // Regression image: ROI Scissor on the camel from one click on a hoof, the field with the boundary beside the region.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 #include "vtkROIScissor.h"
 
 #include <vtkNew.h>
@@ -14,7 +14,7 @@
 
 int TestROIScissorImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> camel;
+  vtkNew<vtkKerfMeshFileReader> camel;
   camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
   camel->Update();
   // The click: the camel's point of least y (a front hoof), radius 0.2 of the diagonal.

@@ -1,7 +1,7 @@
 // Regression image: the bundled camel coloured by mean curvature with minimum-curvature directions.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
-#include "vtkMeshFileReader.h"
+#include "vtkKerfMeshFileReader.h"
 #include "vtkSurfaceDescriptors.h"
 
 #include <vtkNew.h>
@@ -13,7 +13,7 @@
 
 int TestSurfaceDescriptorsImage(int argc, char* argv[])
 {
-  vtkNew<vtkMeshFileReader> reader;
+  vtkNew<vtkKerfMeshFileReader> reader;
   reader->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
   vtkNew<vtkSurfaceDescriptors> descriptors;
   descriptors->SetInputConnection(reader->GetOutputPort());

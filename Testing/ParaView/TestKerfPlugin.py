@@ -434,8 +434,10 @@ class KerfPluginTest(unittest.TestCase):
 
     def test_one_name_everywhere(self):
         """Every Kerf proxy's label, without spaces and punctuation, is its class's name without
-        the vtk prefix, and its proxy's name without the Kerf prefix: Isoline Cut is vtkIsolineCut
-        in C++ and in the kerf Python package, and IsolineCut() in paraview.simple."""
+        the vtk prefix (vtkKerf for the readers and writers, whose generic names VTK may take),
+        and its proxy's name without the Kerf prefix: Isoline Cut is vtkIsolineCut in C++ and in
+        the kerf Python package, and IsolineCut() in paraview.simple; OFF Reader is
+        vtkKerfOFFReader and OFFReader()."""
         sys.path.insert(0, os.environ["PYTHONPATH"].split(os.pathsep)[0])
         import kerf
         names = []
@@ -446,9 +448,11 @@ class KerfPluginTest(unittest.TestCase):
                 label = definition.GetAttribute("label")
                 with self.subTest(proxy=name, label=label):
                     one_name = re.sub(r"[^0-9A-Za-z]", "", label)
-                    self.assertEqual(definition.GetAttribute("class"), "vtk" + one_name)
+                    io = one_name.endswith("Reader") or one_name.endswith("Writer")
+                    class_name = ("vtkKerf" if io else "vtk") + one_name
+                    self.assertEqual(definition.GetAttribute("class"), class_name)
                     self.assertEqual(name, "Kerf" + one_name)
-                    self.assertTrue(hasattr(kerf, "vtk" + one_name))
+                    self.assertTrue(hasattr(kerf, class_name))
                     if group != "writers":
                         self.assertTrue(hasattr(simple, one_name))
                     names.append(one_name)

@@ -65,7 +65,7 @@ class BadInputTest(unittest.TestCase):
         self.assert_refused(descriptors, "NaN or infinite coordinates")
 
     def test_missing_off_file(self):
-        reader = kerf.vtkOFFReader()
+        reader = kerf.vtkKerfOFFReader()
         reader.SetFileName(os.path.join(os.environ["KERF_TEST_OUTPUT"], "does-not-exist.off"))
         self.assert_refused(reader, "does-not-exist.off")
 
@@ -74,7 +74,7 @@ class BadInputTest(unittest.TestCase):
         with open(path, "w") as labels:
             labels.write("0\n1\n")
         sphere = vtkSphereSource()
-        reader = kerf.vtkSegmentationReader()
+        reader = kerf.vtkKerfSegmentationReader()
         reader.SetInputConnection(sphere.GetOutputPort())
         reader.SetFileName(path)
         self.assert_refused(reader, "has 2 labels but the mesh has")

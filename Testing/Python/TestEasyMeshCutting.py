@@ -17,7 +17,7 @@ def segments(algorithm, port=0):
 class EasyMeshCuttingTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.armadillo = kerf.vtkOFFReader()
+        cls.armadillo = kerf.vtkKerfOFFReader()
         cls.armadillo.SetFileName(os.path.join(DATA, "armadillo.off"))
         cls.strokes = vtkPolyDataReader()
         cls.strokes.SetFileName(os.path.join(DATA, "armadillo-head-strokes.vtk"))

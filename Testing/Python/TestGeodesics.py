@@ -184,7 +184,7 @@ class GeodesicDiscTest(unittest.TestCase):
 class ROIScissorTest(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        reader = kerf.vtkOFFReader()
+        reader = kerf.vtkKerfOFFReader()
         reader.SetFileName(os.path.join(DATA, "camel.off"))
         reader.Update()
         cls.camel = reader.GetOutput()

@@ -50,7 +50,7 @@ class ErrorLog:
 
 
 def read(path):
-    reader = kerf.vtkMeshFileReader()
+    reader = kerf.vtkKerfMeshFileReader()
     reader.SetFileName(path)
     return reader
 

@@ -22,10 +22,10 @@ class MeshIOTest(unittest.TestCase):
         self.assertEqual(mesh.GetNumberOfPolys(), 19536)
 
     def test_off_reader(self):
-        self.assert_camel(kerf.vtkOFFReader())
+        self.assert_camel(kerf.vtkKerfOFFReader())
 
     def test_mesh_file_reader(self):
-        self.assert_camel(kerf.vtkMeshFileReader())
+        self.assert_camel(kerf.vtkKerfMeshFileReader())
 
     def test_segmentation_round_trip(self):
         sphere = vtkSphereSource()
@@ -40,14 +40,14 @@ class MeshIOTest(unittest.TestCase):
         mesh.GetCellData().AddArray(array)
         path = os.path.join(OUTPUT, "PythonSegmentationRoundTrip.seg")
 
-        writer = kerf.vtkSegmentationWriter()
+        writer = kerf.vtkKerfSegmentationWriter()
         writer.SetInputData(mesh)
         writer.SetFileName(path)
         self.assertEqual(writer.Write(), 1)
         with open(path) as written:
             self.assertEqual(len(written.read().split()), cells)
 
-        reader = kerf.vtkSegmentationReader()
+        reader = kerf.vtkKerfSegmentationReader()
         reader.SetInputData(sphere.GetOutput())
         reader.SetFileName(path)
         reader.SetArrayName("ReadBack")

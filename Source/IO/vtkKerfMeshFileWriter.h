@@ -1,26 +1,26 @@
 /**
- * @class vtkMeshFileWriter
+ * @class vtkKerfMeshFileWriter
  * @brief Writes a surface mesh in the format its file extension names.
  *
  * .vtp (vtkXMLPolyDataWriter, raw appended blocks compressed with LZ4: fast to write and read), .vtk
  * (vtkPolyDataWriter, binary), .ply (vtkPLYWriter, binary), .obj (vtkOBJWriter), .stl
- * (vtkSTLWriter, binary) and .off (vtkOFFWriter). Only .vtp and .vtk keep every data array; the
+ * (vtkSTLWriter, binary) and .off (vtkKerfOFFWriter). Only .vtp and .vtk keep every data array; the
  * other formats hold the geometry. Unknown extensions and write failures are reported with
  * vtkErrorMacro and Write() returns 0.
  */
-#ifndef vtkMeshFileWriter_h
-#define vtkMeshFileWriter_h
+#ifndef vtkKerfMeshFileWriter_h
+#define vtkKerfMeshFileWriter_h
 
 #include "KerfIOModule.h"
 #include "vtkWriter.h"
 
 class vtkPolyData;
 
-class KERFIO_EXPORT vtkMeshFileWriter : public vtkWriter
+class KERFIO_EXPORT vtkKerfMeshFileWriter : public vtkWriter
 {
 public:
-  static vtkMeshFileWriter* New();
-  vtkTypeMacro(vtkMeshFileWriter, vtkWriter);
+  static vtkKerfMeshFileWriter* New();
+  vtkTypeMacro(vtkKerfMeshFileWriter, vtkWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -33,8 +33,8 @@ public:
   static int IsSupportedExtension(const char* fileName);
 
 protected:
-  vtkMeshFileWriter() = default;
-  ~vtkMeshFileWriter() override;
+  vtkKerfMeshFileWriter() = default;
+  ~vtkKerfMeshFileWriter() override;
 
   void WriteData() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
@@ -42,8 +42,8 @@ protected:
   char* FileName = nullptr;
 
 private:
-  vtkMeshFileWriter(const vtkMeshFileWriter&) = delete;
-  void operator=(const vtkMeshFileWriter&) = delete;
+  vtkKerfMeshFileWriter(const vtkKerfMeshFileWriter&) = delete;
+  void operator=(const vtkKerfMeshFileWriter&) = delete;
 };
 
 #endif

@@ -1,5 +1,5 @@
-// vtkSegmentationWriter: checks a cell label array and writes it with kerf::writeSegmentation.
-#include "vtkSegmentationWriter.h"
+// vtkKerfSegmentationWriter: checks a cell label array and writes it with kerf::writeSegmentation.
+#include "vtkKerfSegmentationWriter.h"
 
 #include "Error.h"
 #include "IO/MeshFormats.h"
@@ -14,26 +14,26 @@
 #include <cmath>
 #include <limits>
 
-vtkStandardNewMacro(vtkSegmentationWriter);
+vtkStandardNewMacro(vtkKerfSegmentationWriter);
 
-vtkSegmentationWriter::vtkSegmentationWriter()
+vtkKerfSegmentationWriter::vtkKerfSegmentationWriter()
 {
   this->SetArrayName("Segment");
 }
 
-vtkSegmentationWriter::~vtkSegmentationWriter()
+vtkKerfSegmentationWriter::~vtkKerfSegmentationWriter()
 {
   this->SetFileName(nullptr);
   this->SetArrayName(nullptr);
 }
 
-int vtkSegmentationWriter::FillInputPortInformation(int, vtkInformation* info)
+int vtkKerfSegmentationWriter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   return 1;
 }
 
-void vtkSegmentationWriter::WriteData()
+void vtkKerfSegmentationWriter::WriteData()
 {
   vtkDataSet* input = vtkDataSet::SafeDownCast(this->GetInput());
   if (!this->FileName || !*this->FileName)
@@ -84,7 +84,7 @@ void vtkSegmentationWriter::WriteData()
   }
 }
 
-void vtkSegmentationWriter::PrintSelf(ostream& os, vtkIndent indent)
+void vtkKerfSegmentationWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";

@@ -1,5 +1,5 @@
-// vtkOFFReader: parses with kerf::readOFF and builds a vtkPolyData.
-#include "vtkOFFReader.h"
+// vtkKerfOFFReader: parses with kerf::readOFF and builds a vtkPolyData.
+#include "vtkKerfOFFReader.h"
 
 #include "Error.h"
 #include "IO/MeshFormats.h"
@@ -18,19 +18,19 @@
 #include <new>
 #include <string>
 
-vtkStandardNewMacro(vtkOFFReader);
+vtkStandardNewMacro(vtkKerfOFFReader);
 
-vtkOFFReader::vtkOFFReader()
+vtkKerfOFFReader::vtkKerfOFFReader()
 {
   this->SetNumberOfInputPorts(0);
 }
 
-vtkOFFReader::~vtkOFFReader()
+vtkKerfOFFReader::~vtkKerfOFFReader()
 {
   this->SetFileName(nullptr);
 }
 
-int vtkOFFReader::CanReadFile(const char* fileName)
+int vtkKerfOFFReader::CanReadFile(const char* fileName)
 {
   if (!fileName)
   {
@@ -45,7 +45,7 @@ int vtkOFFReader::CanReadFile(const char* fileName)
   return word.size() >= 3 && word.compare(word.size() - 3, 3, "OFF") == 0 ? 1 : 0;
 }
 
-int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkKerfOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   if (!this->FileName || !*this->FileName)
@@ -99,7 +99,7 @@ int vtkOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInform
   return 1;
 }
 
-void vtkOFFReader::PrintSelf(ostream& os, vtkIndent indent)
+void vtkKerfOFFReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";

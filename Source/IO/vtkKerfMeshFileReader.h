@@ -1,8 +1,8 @@
 /**
- * @class vtkMeshFileReader
+ * @class vtkKerfMeshFileReader
  * @brief Reads a surface mesh from any format Kerf supports, chosen by the file extension.
  *
- * .off (vtkOFFReader), .ply, .obj and .stl (Kerf's own parsers, which check every count and
+ * .off (vtkKerfOFFReader), .ply, .obj and .stl (Kerf's own parsers, which check every count and
  * index against the file before allocating anything), .vtp (vtkXMLPolyDataReader) and legacy .vtk
  * (vtkPolyDataReader), the last two after a check of the file's declared counts and structure
  * against its data (kerf::checkVTP, kerf::checkLegacyVTK); extensions are compared without regard
@@ -12,17 +12,17 @@
  * and fails the update, so scripts and the command-line program can rely on the result.
  * Non-finite coordinates are read as such (Kerf's filters refuse them with their own message).
  */
-#ifndef vtkMeshFileReader_h
-#define vtkMeshFileReader_h
+#ifndef vtkKerfMeshFileReader_h
+#define vtkKerfMeshFileReader_h
 
 #include "KerfIOModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class KERFIO_EXPORT vtkMeshFileReader : public vtkPolyDataAlgorithm
+class KERFIO_EXPORT vtkKerfMeshFileReader : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkMeshFileReader* New();
-  vtkTypeMacro(vtkMeshFileReader, vtkPolyDataAlgorithm);
+  static vtkKerfMeshFileReader* New();
+  vtkTypeMacro(vtkKerfMeshFileReader, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -35,8 +35,8 @@ public:
   static int IsSupportedExtension(const char* fileName);
 
 protected:
-  vtkMeshFileReader();
-  ~vtkMeshFileReader() override;
+  vtkKerfMeshFileReader();
+  ~vtkKerfMeshFileReader() override;
 
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
@@ -44,8 +44,8 @@ protected:
   char* FileName = nullptr;
 
 private:
-  vtkMeshFileReader(const vtkMeshFileReader&) = delete;
-  void operator=(const vtkMeshFileReader&) = delete;
+  vtkKerfMeshFileReader(const vtkKerfMeshFileReader&) = delete;
+  void operator=(const vtkKerfMeshFileReader&) = delete;
 };
 
 #endif

@@ -1,5 +1,5 @@
 /**
- * @class vtkOFFReader
+ * @class vtkKerfOFFReader
  * @brief Reads ASCII OFF meshes (Princeton Segmentation Benchmark, CGAL, Geomview).
  *
  * Produces a vtkPolyData with double-precision points and one polygon per OFF face, in file
@@ -9,17 +9,17 @@
  * Truncated or malformed files, binary OFF and out-of-range indices are reported with
  * vtkErrorMacro (naming the line) and produce an empty output and a failed update.
  */
-#ifndef vtkOFFReader_h
-#define vtkOFFReader_h
+#ifndef vtkKerfOFFReader_h
+#define vtkKerfOFFReader_h
 
 #include "KerfIOModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class KERFIO_EXPORT vtkOFFReader : public vtkPolyDataAlgorithm
+class KERFIO_EXPORT vtkKerfOFFReader : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkOFFReader* New();
-  vtkTypeMacro(vtkOFFReader, vtkPolyDataAlgorithm);
+  static vtkKerfOFFReader* New();
+  vtkTypeMacro(vtkKerfOFFReader, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -32,8 +32,8 @@ public:
   static int CanReadFile(const char* fileName);
 
 protected:
-  vtkOFFReader();
-  ~vtkOFFReader() override;
+  vtkKerfOFFReader();
+  ~vtkKerfOFFReader() override;
 
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
@@ -41,8 +41,8 @@ protected:
   char* FileName = nullptr;
 
 private:
-  vtkOFFReader(const vtkOFFReader&) = delete;
-  void operator=(const vtkOFFReader&) = delete;
+  vtkKerfOFFReader(const vtkKerfOFFReader&) = delete;
+  void operator=(const vtkKerfOFFReader&) = delete;
 };
 
 #endif

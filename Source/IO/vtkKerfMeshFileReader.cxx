@@ -1,9 +1,9 @@
-// vtkMeshFileReader: reads every supported format safely, by Kerf's own parser or after a check.
-#include "vtkMeshFileReader.h"
+// vtkKerfMeshFileReader: reads every supported format safely, by Kerf's own parser or after a check.
+#include "vtkKerfMeshFileReader.h"
 
 #include "KerfErrorCollector.h"
 #include "KerfMeshFileData.h"
-#include "vtkOFFReader.h"
+#include "vtkKerfOFFReader.h"
 
 #include "Error.h"
 #include "IO/LegacyVTKValidation.h"
@@ -34,7 +34,7 @@
 #include <sstream>
 #include <string>
 
-vtkStandardNewMacro(vtkMeshFileReader);
+vtkStandardNewMacro(vtkKerfMeshFileReader);
 
 namespace
 {
@@ -96,7 +96,7 @@ vtkSmartPointer<vtkPolyData> readFile(const std::string& extension, const char* 
 {
   if (extension == ".off")
   {
-    vtkNew<vtkOFFReader> reader;
+    vtkNew<vtkKerfOFFReader> reader;
     reader->SetFileName(fileName);
     return runVTKReader(reader, "");
   }
@@ -201,17 +201,17 @@ std::string checkCells(vtkPolyData* mesh)
 }
 } // namespace
 
-vtkMeshFileReader::vtkMeshFileReader()
+vtkKerfMeshFileReader::vtkKerfMeshFileReader()
 {
   this->SetNumberOfInputPorts(0);
 }
 
-vtkMeshFileReader::~vtkMeshFileReader()
+vtkKerfMeshFileReader::~vtkKerfMeshFileReader()
 {
   this->SetFileName(nullptr);
 }
 
-int vtkMeshFileReader::IsSupportedExtension(const char* fileName)
+int vtkKerfMeshFileReader::IsSupportedExtension(const char* fileName)
 {
   if (!fileName)
   {
@@ -228,7 +228,7 @@ int vtkMeshFileReader::IsSupportedExtension(const char* fileName)
   return 0;
 }
 
-int vtkMeshFileReader::RequestData(
+int vtkKerfMeshFileReader::RequestData(
   vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -290,7 +290,7 @@ int vtkMeshFileReader::RequestData(
   return 1;
 }
 
-void vtkMeshFileReader::PrintSelf(ostream& os, vtkIndent indent)
+void vtkKerfMeshFileReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";

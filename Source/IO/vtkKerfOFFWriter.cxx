@@ -1,5 +1,5 @@
-// vtkOFFWriter: collects polygons and strip triangles and writes them with kerf::writeOFF.
-#include "vtkOFFWriter.h"
+// vtkKerfOFFWriter: collects polygons and strip triangles and writes them with kerf::writeOFF.
+#include "vtkKerfOFFWriter.h"
 
 #include "Error.h"
 #include "IO/MeshFormats.h"
@@ -13,25 +13,25 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
-vtkStandardNewMacro(vtkOFFWriter);
+vtkStandardNewMacro(vtkKerfOFFWriter);
 
-vtkOFFWriter::~vtkOFFWriter()
+vtkKerfOFFWriter::~vtkKerfOFFWriter()
 {
   this->SetFileName(nullptr);
 }
 
-vtkPolyData* vtkOFFWriter::GetInput()
+vtkPolyData* vtkKerfOFFWriter::GetInput()
 {
   return vtkPolyData::SafeDownCast(this->Superclass::GetInput());
 }
 
-int vtkOFFWriter::FillInputPortInformation(int, vtkInformation* info)
+int vtkKerfOFFWriter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-void vtkOFFWriter::WriteData()
+void vtkKerfOFFWriter::WriteData()
 {
   vtkPolyData* input = this->GetInput();
   if (!input)
@@ -90,7 +90,7 @@ void vtkOFFWriter::WriteData()
   }
 }
 
-void vtkOFFWriter::PrintSelf(ostream& os, vtkIndent indent)
+void vtkKerfOFFWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";

@@ -1,5 +1,5 @@
-// vtkSegmentationReader: reads labels with kerf::readSegmentation and adds them as a cell array.
-#include "vtkSegmentationReader.h"
+// vtkKerfSegmentationReader: reads labels with kerf::readSegmentation and adds them as a cell array.
+#include "vtkKerfSegmentationReader.h"
 
 #include "Error.h"
 #include "IO/MeshFormats.h"
@@ -12,20 +12,20 @@
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 
-vtkStandardNewMacro(vtkSegmentationReader);
+vtkStandardNewMacro(vtkKerfSegmentationReader);
 
-vtkSegmentationReader::vtkSegmentationReader()
+vtkKerfSegmentationReader::vtkKerfSegmentationReader()
 {
   this->SetArrayName("Segment");
 }
 
-vtkSegmentationReader::~vtkSegmentationReader()
+vtkKerfSegmentationReader::~vtkKerfSegmentationReader()
 {
   this->SetFileName(nullptr);
   this->SetArrayName(nullptr);
 }
 
-int vtkSegmentationReader::RequestData(
+int vtkKerfSegmentationReader::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -69,7 +69,7 @@ int vtkSegmentationReader::RequestData(
   return 1;
 }
 
-void vtkSegmentationReader::PrintSelf(ostream& os, vtkIndent indent)
+void vtkKerfSegmentationReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";

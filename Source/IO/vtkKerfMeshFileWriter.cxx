@@ -1,7 +1,7 @@
-// vtkMeshFileWriter: dispatches on the extension and reports the inner writer's failure.
-#include "vtkMeshFileWriter.h"
+// vtkKerfMeshFileWriter: dispatches on the extension and reports the inner writer's failure.
+#include "vtkKerfMeshFileWriter.h"
 
-#include "vtkOFFWriter.h"
+#include "vtkKerfOFFWriter.h"
 
 #include "KerfErrorCollector.h"
 
@@ -24,7 +24,7 @@
 #include <functional>
 #include <string>
 
-vtkStandardNewMacro(vtkMeshFileWriter);
+vtkStandardNewMacro(vtkKerfMeshFileWriter);
 
 namespace
 {
@@ -80,7 +80,7 @@ Writer makeWriter(const std::string& extension, const char* fileName)
   }
   if (extension == ".off")
   {
-    return wrap(vtkSmartPointer<vtkOFFWriter>::New(), fileName);
+    return wrap(vtkSmartPointer<vtkKerfOFFWriter>::New(), fileName);
   }
   return {};
 }
@@ -91,23 +91,23 @@ std::string lowerExtension(const char* fileName)
 }
 } // namespace
 
-vtkMeshFileWriter::~vtkMeshFileWriter()
+vtkKerfMeshFileWriter::~vtkKerfMeshFileWriter()
 {
   this->SetFileName(nullptr);
 }
 
-int vtkMeshFileWriter::IsSupportedExtension(const char* fileName)
+int vtkKerfMeshFileWriter::IsSupportedExtension(const char* fileName)
 {
   return fileName && makeWriter(lowerExtension(fileName), fileName).algorithm ? 1 : 0;
 }
 
-int vtkMeshFileWriter::FillInputPortInformation(int, vtkInformation* info)
+int vtkKerfMeshFileWriter::FillInputPortInformation(int, vtkInformation* info)
 {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-void vtkMeshFileWriter::WriteData()
+void vtkKerfMeshFileWriter::WriteData()
 {
   vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
   if (!this->FileName || !*this->FileName)
@@ -153,7 +153,7 @@ void vtkMeshFileWriter::WriteData()
   }
 }
 
-void vtkMeshFileWriter::PrintSelf(ostream& os, vtkIndent indent)
+void vtkKerfMeshFileWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";

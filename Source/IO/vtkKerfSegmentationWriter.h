@@ -1,24 +1,24 @@
 /**
- * @class vtkSegmentationWriter
+ * @class vtkKerfSegmentationWriter
  * @brief Writes a per-cell label array as a Princeton Segmentation Benchmark .seg file.
  *
  * One integer per line, line i holding the label of cell i. The cell array is chosen by name
  * with SetArrayName (default "Segment"). It must have one component and hold finite integral
  * values; otherwise nothing is written and the error is reported.
  */
-#ifndef vtkSegmentationWriter_h
-#define vtkSegmentationWriter_h
+#ifndef vtkKerfSegmentationWriter_h
+#define vtkKerfSegmentationWriter_h
 
 #include "KerfIOModule.h"
 #include "vtkWriter.h"
 
 class vtkPolyData;
 
-class KERFIO_EXPORT vtkSegmentationWriter : public vtkWriter
+class KERFIO_EXPORT vtkKerfSegmentationWriter : public vtkWriter
 {
 public:
-  static vtkSegmentationWriter* New();
-  vtkTypeMacro(vtkSegmentationWriter, vtkWriter);
+  static vtkKerfSegmentationWriter* New();
+  vtkTypeMacro(vtkKerfSegmentationWriter, vtkWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -34,8 +34,8 @@ public:
   ///@}
 
 protected:
-  vtkSegmentationWriter();
-  ~vtkSegmentationWriter() override;
+  vtkKerfSegmentationWriter();
+  ~vtkKerfSegmentationWriter() override;
 
   void WriteData() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
@@ -44,8 +44,8 @@ protected:
   char* ArrayName = nullptr;
 
 private:
-  vtkSegmentationWriter(const vtkSegmentationWriter&) = delete;
-  void operator=(const vtkSegmentationWriter&) = delete;
+  vtkKerfSegmentationWriter(const vtkKerfSegmentationWriter&) = delete;
+  void operator=(const vtkKerfSegmentationWriter&) = delete;
 };
 
 #endif

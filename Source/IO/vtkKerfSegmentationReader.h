@@ -1,24 +1,24 @@
 /**
- * @class vtkSegmentationReader
+ * @class vtkKerfSegmentationReader
  * @brief Attaches a Princeton Segmentation Benchmark .seg file to a mesh as a cell array.
  *
  * A .seg file holds one integer per line: line i is the segment id of face i, in the face
- * order of the mesh's OFF file (which vtkOFFReader keeps as the cell order). The input mesh is
+ * order of the mesh's OFF file (which vtkKerfOFFReader keeps as the cell order). The input mesh is
  * passed to the output with an integer cell array (default name "Segment") added. The number of
  * labels must equal the number of cells; otherwise, and for unreadable or malformed files, the
  * filter reports the problem with vtkErrorMacro and fails.
  */
-#ifndef vtkSegmentationReader_h
-#define vtkSegmentationReader_h
+#ifndef vtkKerfSegmentationReader_h
+#define vtkKerfSegmentationReader_h
 
 #include "KerfIOModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class KERFIO_EXPORT vtkSegmentationReader : public vtkPolyDataAlgorithm
+class KERFIO_EXPORT vtkKerfSegmentationReader : public vtkPolyDataAlgorithm
 {
 public:
-  static vtkSegmentationReader* New();
-  vtkTypeMacro(vtkSegmentationReader, vtkPolyDataAlgorithm);
+  static vtkKerfSegmentationReader* New();
+  vtkTypeMacro(vtkKerfSegmentationReader, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -34,8 +34,8 @@ public:
   ///@}
 
 protected:
-  vtkSegmentationReader();
-  ~vtkSegmentationReader() override;
+  vtkKerfSegmentationReader();
+  ~vtkKerfSegmentationReader() override;
 
   int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector) override;
@@ -44,8 +44,8 @@ protected:
   char* ArrayName = nullptr;
 
 private:
-  vtkSegmentationReader(const vtkSegmentationReader&) = delete;
-  void operator=(const vtkSegmentationReader&) = delete;
+  vtkKerfSegmentationReader(const vtkKerfSegmentationReader&) = delete;
+  void operator=(const vtkKerfSegmentationReader&) = delete;
 };
 
 #endif

@@ -1,24 +1,24 @@
 /**
- * @class vtkOFFWriter
+ * @class vtkKerfOFFWriter
  * @brief Writes the polygons and triangle strips of a vtkPolyData as ASCII OFF.
  *
  * Points are written with 17 significant digits, so that reading the file back gives the same
  * doubles. Strips are split into triangles; vertices and lines are not written. Data arrays are
- * not part of OFF: write a per-face segmentation with vtkSegmentationWriter.
+ * not part of OFF: write a per-face segmentation with vtkKerfSegmentationWriter.
  */
-#ifndef vtkOFFWriter_h
-#define vtkOFFWriter_h
+#ifndef vtkKerfOFFWriter_h
+#define vtkKerfOFFWriter_h
 
 #include "KerfIOModule.h"
 #include "vtkWriter.h"
 
 class vtkPolyData;
 
-class KERFIO_EXPORT vtkOFFWriter : public vtkWriter
+class KERFIO_EXPORT vtkKerfOFFWriter : public vtkWriter
 {
 public:
-  static vtkOFFWriter* New();
-  vtkTypeMacro(vtkOFFWriter, vtkWriter);
+  static vtkKerfOFFWriter* New();
+  vtkTypeMacro(vtkKerfOFFWriter, vtkWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -30,8 +30,8 @@ public:
   vtkPolyData* GetInput();
 
 protected:
-  vtkOFFWriter() = default;
-  ~vtkOFFWriter() override;
+  vtkKerfOFFWriter() = default;
+  ~vtkKerfOFFWriter() override;
 
   void WriteData() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
@@ -39,8 +39,8 @@ protected:
   char* FileName = nullptr;
 
 private:
-  vtkOFFWriter(const vtkOFFWriter&) = delete;
-  void operator=(const vtkOFFWriter&) = delete;
+  vtkKerfOFFWriter(const vtkKerfOFFWriter&) = delete;
+  void operator=(const vtkKerfOFFWriter&) = delete;
 };
 
 #endif
