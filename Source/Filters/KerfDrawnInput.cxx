@@ -2,8 +2,15 @@
 #include "KerfDrawnInput.h"
 
 #include "Error.h"
+#include "Geodesic/SurfaceLocation.h"
+#include "KerfFilterBorder.h"
+#include "KerfInputArrays.h"
+#include "KerfParameterChecks.h"
+#include "vtkDiscClickAlgorithm.h"
 
 #include <vtkAlgorithm.h>
+#include <vtkPointData.h>
+#include <vtkPointSet.h>
 
 #include <cmath>
 #include <set>
@@ -272,6 +279,70 @@ PanelLabelledStrokes PanelLabelled(const DrawnStrokeList& drawn,
     }
   }
   return out;
+}
+
+DiscClicks ReadDiscClicks(
+  const Surface& surface, vtkDiscClickAlgorithm* algorithm, const DrawnDiscList& drawn, vtkPointSet* input)
+{
+  const double diagonal = surface.mesh().boundingBoxDiagonal();
+  const double absoluteRadius = algorithm->GetAbsoluteRadius();
+  const double radius = Finite(absoluteRadius, "AbsoluteRadius") > 0.0
+    ? absoluteRadius
+    : RelativeDistance(algorithm->GetRadius(), diagonal, "Radius");
+  DiscClicks clicks;
+  const double maximumProjection = algorithm->GetMaximumProjectionDistance();
+  clicks.tolerance = Finite(maximumProjection, "MaximumProjectionDistance") > 0.0
+    ? maximumProjection
+    : std::numeric_limits<double>::infinity();
+  if (!input && drawn.Count() > 0)
+  {
+    const std::vector<DrawnDisc> discs = drawn.Discs();
+    for (std::size_t i = 0; i < discs.size(); ++i)
+    {
+      const SurfacePoint click = PanelPointOnSurface(surface, discs[i].centre, "drawn disc " + std::to_string(i));
+      (discs[i].subtract ? clicks.subtracted : clicks.added).push_back({ surfacePosition(surface.mesh(), click), discs[i].radius });
+    }
+    if (clicks.added.empty())
+    {
+      throw Error("every drawn disc subtracts: draw one that adds (hold Ctrl without Shift and drag outward from a click)");
+    }
+    return clicks;
+  }
+  if (!input)
+  {
+    const double* p = algorithm->GetClickPoint();
+    const SurfacePoint click = PanelPointOnSurface(surface, Vector3(p[0], p[1], p[2]), "the click point");
+    clicks.added.push_back({ surfacePosition(surface.mesh(), click), radius });
+    return clicks;
+  }
+  const std::vector<Vector3> points = ReadPoints(input);
+  // Optional per-click arrays: read when the input has them.
+  const auto optional = [&](const char* name) {
+    return name && *name && input->GetPointData()->GetAbstractArray(name)
+      ? ReadNamedPointArray(input, name, "the clicks")
+      : std::vector<double>();
+  };
+  const std::vector<double> radii = optional(algorithm->GetClickRadiusArrayName());
+  const std::vector<double> subtract = optional(algorithm->GetClickSubtractArrayName());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    if (!radii.empty() && !(std::isfinite(radii[i]) && radii[i] > 0.0))
+    {
+      throw Error("click " + std::to_string(i) + " has the radius " + std::to_string(radii[i]) +
+        "; radii are positive fractions of the diagonal");
+    }
+    const double r = radii.empty() ? radius : radii[i] * diagonal;
+    (!subtract.empty() && subtract[i] != 0.0 ? clicks.subtracted : clicks.added).push_back({ points[i], r });
+  }
+  if (clicks.added.empty() && !clicks.subtracted.empty())
+  {
+    throw Error("every click subtracts its disc: at least one click must add one");
+  }
+  if (clicks.added.empty())
+  {
+    throw Error("the click input holds no point");
+  }
+  return clicks;
 }
 
 } // namespace kerf

@@ -1,7 +1,8 @@
 // What a filter's panel draws on the surface (strokes, discs, points) and the rule that drawn input replaces typed input.
 #pragma once
 
-#include "KerfFilterUtilities.h"
+#include "Geodesic/RoiScissor.h"
+#include "KerfPanelPoints.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Sketch/SurfaceSketch.h"
 
@@ -10,6 +11,8 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkDiscClickAlgorithm;
+class vtkPointSet;
 class vtkPolyData;
 
 namespace kerf
@@ -121,5 +124,26 @@ struct PanelLabelledStrokes
 /// OverrideStrokeLabel.
 PanelLabelledStrokes PanelLabelled(const DrawnStrokeList& drawn,
   const std::vector<std::pair<int, const StrokePointList*>>& typed, const Surface& surface);
+
+/// The clicks of a filter with geodesic discs (vtkGeodesicDisc, vtkROIScissor) and how far from
+/// the surface they may be.
+struct DiscClicks
+{
+  std::vector<RoiClick> added;
+  std::vector<RoiClick> subtracted;
+  /// The farthest a click of the click input may be from the surface, as a fraction of the
+  /// bounding-box diagonal (infinity: no limit).
+  double tolerance = 0.0;
+};
+
+/// The clicks of a filter with geodesic discs (its properties, see vtkDiscClickAlgorithm): each
+/// point of `clickInput` (input 1), with its own radius (the point array ClickRadiusArrayName, a
+/// fraction of the diagonal) when the input has that array, and subtracting its disc where the
+/// point array ClickSubtractArrayName is non-zero; without a click input, the `drawn` discs where
+/// there are any, else ClickPoint; both moved to the nearest surface point. Throws naming the
+/// parameter or the click for NaN parameters, a radius that is not positive, no click and only
+/// subtracting clicks.
+DiscClicks ReadDiscClicks(
+  const Surface& surface, vtkDiscClickAlgorithm* algorithm, const DrawnDiscList& drawn, vtkPointSet* clickInput);
 
 } // namespace kerf

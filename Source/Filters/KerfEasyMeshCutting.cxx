@@ -2,7 +2,11 @@
 #include "KerfEasyMeshCutting.h"
 
 #include "Error.h"
-#include "KerfFilterUtilities.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfPanelPoints.h"
+#include "KerfOutputArrays.h"
+#include "KerfDrawnInput.h"
 #include "vtkStrokeGrowingAlgorithm.h"
 
 #include <vtkCellData.h>

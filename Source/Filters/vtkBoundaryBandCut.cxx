@@ -1,7 +1,10 @@
 // vtkBoundaryBandCut: reads a surface's labels, re-cuts their boundaries within bands (kerf::refineSegmentBoundaries), writes them.
 #include "vtkBoundaryBandCut.h"
 
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 #include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/FaceGraph.h"

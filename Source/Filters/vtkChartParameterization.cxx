@@ -1,7 +1,10 @@
 // vtkChartParameterization: reads the chart labels, runs kerf::parameterizeCharts, writes the cut surface and its layout.
 #include "vtkChartParameterization.h"
 
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 #include "Parameterization/ChartParameterization.h"
 

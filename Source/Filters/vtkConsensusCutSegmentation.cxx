@@ -2,7 +2,9 @@
 #include "vtkConsensusCutSegmentation.h"
 
 #include "Segmentation/ConsensusCutSegmentation.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkFieldData.h>

@@ -3,7 +3,10 @@
 
 #include "Error.h"
 #include "Export/CurveExport.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/SplitAlongFaceLabels.h"
 #include "Session/Surface.h"

@@ -2,7 +2,7 @@
 #include "vtkDiscClickAlgorithm.h"
 
 #include "KerfDrawnInput.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
 
 vtkDiscClickAlgorithm::vtkDiscClickAlgorithm()
   : DrawnDiscs(new kerf::DrawnDiscList)

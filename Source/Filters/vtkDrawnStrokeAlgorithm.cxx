@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "KerfDrawnInput.h"
+#include "KerfFilterBorder.h"
 
 #include <vtkPoints.h>
 

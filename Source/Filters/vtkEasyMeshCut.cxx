@@ -3,7 +3,12 @@
 
 #include "Error.h"
 #include "KerfEasyMeshCutting.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfPanelPoints.h"
+#include "KerfOutputArrays.h"
+#include "KerfDrawnInput.h"
 #include "KerfSurfaceInput.h"
 #include "Segmentation/EasyMeshCut.h"
 

@@ -3,7 +3,9 @@
 
 #include "Geodesic/RoiScissor.h"
 #include "KerfDrawnInput.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>

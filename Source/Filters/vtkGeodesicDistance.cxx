@@ -3,7 +3,10 @@
 
 #include "Error.h"
 #include "Geodesic/GeodesicPaths.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfPanelPoints.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>

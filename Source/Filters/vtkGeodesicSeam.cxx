@@ -3,7 +3,11 @@
 
 #include "Error.h"
 #include "Geodesic/Seams.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfPanelPoints.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>

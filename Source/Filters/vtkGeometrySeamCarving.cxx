@@ -2,7 +2,9 @@
 #include "vtkGeometrySeamCarving.h"
 
 #include "Error.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 #include "SeamCarving/GeometrySeamCarving.h"
 

@@ -1,7 +1,10 @@
 // vtkGeometrySeams: reads the regions, runs kerf::computeGeometrySeams, writes the field, sectors, rings, costs and contours.
 #include "vtkGeometrySeams.h"
 
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 #include "SeamCarving/GeometrySeams.h"
 

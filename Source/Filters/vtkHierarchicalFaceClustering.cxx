@@ -3,7 +3,9 @@
 
 #include "Segmentation/HierarchicalFaceClustering.h"
 #include "Error.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>

@@ -3,7 +3,10 @@
 
 #include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellArray.h>

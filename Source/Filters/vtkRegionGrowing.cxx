@@ -3,7 +3,10 @@
 
 #include "Error.h"
 #include "KerfEasyMeshCutting.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfOutputArrays.h"
+#include "KerfDrawnInput.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>

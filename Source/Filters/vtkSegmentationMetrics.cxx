@@ -3,7 +3,8 @@
 
 #include "Evaluation/SegmentationMetrics.h"
 #include "Error.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfInputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkAlgorithmOutput.h>

@@ -4,7 +4,10 @@
 #include "Error.h"
 #include "KerfEasyMeshCutting.h"
 #include "KerfDrawnInput.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>

@@ -3,7 +3,9 @@
 
 #include "Segmentation/SpectralSegmentation.h"
 #include "Segmentation/FaceGraph.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkFieldData.h>

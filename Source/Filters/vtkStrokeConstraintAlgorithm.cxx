@@ -1,7 +1,7 @@
 // vtkStrokeConstraintAlgorithm: the stroke and sampling parameters shared by the filters that place a harmonic cut's constraints along strokes.
 #include "vtkStrokeConstraintAlgorithm.h"
 
-#include "KerfFilterUtilities.h"
+#include "KerfPanelPoints.h"
 
 #include <vtkInformation.h>
 

@@ -4,7 +4,9 @@
 #include "Error.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfDrawnInput.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
+#include "KerfOutputArrays.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellArray.h>

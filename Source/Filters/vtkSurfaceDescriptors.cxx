@@ -2,7 +2,8 @@
 #include "vtkSurfaceDescriptors.h"
 
 #include "Geometry/SurfaceDescriptors.h"
-#include "KerfFilterUtilities.h"
+#include "KerfFilterBorder.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>
