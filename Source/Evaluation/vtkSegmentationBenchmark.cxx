@@ -4,6 +4,7 @@
 #include "Error.h"
 #include "Evaluation/BenchmarkRunner.h"
 #include "Evaluation/SegmentationMetrics.h"
+#include "KerfBenchmarkWorkers.h"
 #include "KerfScene.h"
 
 #include <vtkCellArray.h>
