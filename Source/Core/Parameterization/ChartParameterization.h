@@ -1,8 +1,9 @@
-// Texture coordinates for a surface cut into charts: LSCM or LinABF per chart, distortion, packing into the unit square.
+// Texture coordinates for a surface cut into charts: LSCM or LinABF per chart, distortion, overlap count, and their layout in the unit square (ChartPacking).
 #pragma once
 
 #include "Mesh/SplitAlongFaceLabels.h"
 #include "Mesh/TriangleMesh.h"
+#include "Parameterization/ChartPacking.h"
 
 #include <Eigen/Core>
 
@@ -11,8 +12,6 @@
 
 namespace kerf
 {
-
-using Vector2 = Eigen::Vector2d;
 
 /// How each chart is flattened (timings and distortion in Documentation/filters/ChartParameterization.md).
 enum class ChartMethod
@@ -149,22 +148,6 @@ std::vector<Vector2> linearAngleBasedFlattening(const TriangleMesh& chart, Chart
 /// s1 >= s2 of its Jacobian.
 FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
   const Vector2& t1, const Vector2& t2);
-
-/// Convex hull of points, counter-clockwise from the lowest-then-leftmost point, without
-/// collinear points (Andrew's monotone chain).
-std::vector<Vector2> convexHull(std::vector<Vector2> points);
-
-/// Angle by which to turn `points` so that their axis-aligned bounding box has the least area
-/// (rotating calipers over the convex hull's edges; Toussaint 1983) and is at least as wide as tall.
-double minimalBoundingBoxRotation(const std::vector<Vector2>& points);
-
-/// Axis-aligned boxes (width, height) placed on shelves in a square of side 1 with `margin`
-/// between boxes and to the border: the tallest first, left to right, at the least square side
-/// found by a search in steps of 1%, then scaled to side 1. Returns each box's lower-left corner
-/// in the unit square and sets `scale` to the factor that maps the boxes' units to the unit
-/// square. Throws kerf::Error for a margin outside [0, 0.25] or a box with a non-finite or
-/// negative size.
-std::vector<Vector2> packBoxes(const std::vector<Vector2>& sizes, double margin, double& scale);
 
 /// Number of pairs of charts whose triangles cover a common sample of a resolution x resolution
 /// grid over the unit square (sample at each texel's centre, strictly inside a triangle).
