@@ -16,8 +16,9 @@ packages=(
   libopenmpi-dev libdouble-conversion-dev liblz4-dev liblzma-dev libjpeg-dev libtiff-dev
   libpng-dev libfreetype-dev libglew-dev libgl2ps-dev libutfcpp-dev libxml2-dev libexpat1-dev
   zlib1g-dev libx11-dev libxt-dev libgl-dev python3-dev
-  # Core dependencies; OpenBLAS makes CHOLMOD's supernodal factorization fast
-  libeigen3-dev libopenmesh-dev libsuitesparse-dev libopenblas-dev
+  # Core dependencies; OpenBLAS makes CHOLMOD's supernodal factorization fast; Spectra (header-only)
+  # is the spectral segmentation's eigensolver
+  libeigen3-dev libopenmesh-dev libsuitesparse-dev libopenblas-dev libspectra-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth valgrind
   # CGAL's heat method, benchmarked beside Kerf's (header-only)

@@ -9,6 +9,8 @@
 //   SegmentationEvaluationBenchmark.cxx segmentation metrics (/50k) and the human baseline over
 //                                       psb-dev (/1model /all; only when the folder exists)
 //   MeshReaderBenchmark.cxx             reading each file format, Kerf beside VTK (/10k /100k /1M)
+//   SpectralEigenvectorsBenchmark.cxx   the spectral segmentation's leading eigenvectors, Kerf beside
+//                                       Spectra (/psb125 /psb297 /22k /100k /100k-1000)
 // Run from the build directory with OPENBLAS_NUM_THREADS=1 (CHOLMOD's BLAS on one thread, like
 // everything else), for example:
 //   bin/KerfBenchmarks
@@ -80,6 +82,7 @@ int main(int argc, char** argv)
   kerf::benchmarks::RegisterChartParameterizationBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterEasyMeshCuttingBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterAutomaticSegmentationBenchmarks(!minimumTimeGiven);
+  kerf::benchmarks::RegisterSpectralEigenvectorsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterSketchBenchmarks();
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();

@@ -51,6 +51,7 @@ void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes);
 void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes);
 void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes);
 void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes);
+void RegisterSpectralEigenvectorsBenchmarks(bool useSizeMinimumTimes);
 void RegisterSketchBenchmarks();
 
 } // namespace benchmarks

@@ -6,6 +6,8 @@
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
+#include <Spectra/MatOp/DenseSymMatProd.h>
+#include <Spectra/SymEigsSolver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -97,6 +99,41 @@ SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const
 {
   const int n = graph.faceCount();
   SpectralSegmentationResult result;
+  const std::vector<int> patch = spectralPatches(graph, options);
+  const int m = *std::max_element(patch.begin(), patch.end()) + 1;
+  result.patches = m;
+  if (k == 1 || m == 1)
+  {
+    result.labels.assign(n, 0);
+    return result;
+  }
+  std::vector<double> area;
+  const Eigen::MatrixXd affinity = spectralAffinity(graph, patch, options, area);
+  const int dimensions = std::min(k, m);
+  Eigen::VectorXd values;
+  Eigen::MatrixXd embedding = leadingEigenvectors(affinity, dimensions, values);
+  for (int p = 0; p < m; ++p)
+  {
+    const double norm = embedding.row(p).norm();
+    if (norm > 0.0)
+    {
+      embedding.row(p) /= norm;
+    }
+  }
+  const std::vector<int> cluster = clusterEmbedding(embedding, area, std::min(k, m), result.kMeansIterations);
+  std::vector<int> labels(n);
+  for (int f = 0; f < n; ++f)
+  {
+    labels[f] = cluster[patch[f]];
+  }
+  result.labels = finalizeSegments(graph, labels, k);
+  return result;
+}
+} // namespace
+
+std::vector<int> spectralPatches(const FaceGraph& graph, const SpectralSegmentationOptions& options)
+{
+  const int n = graph.faceCount();
   // Patches: Garland et al.'s clusters, or the faces themselves on small meshes.
   std::vector<int> patch(n);
   if (n > options.patchCount)
@@ -107,14 +144,15 @@ SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const
   {
     std::iota(patch.begin(), patch.end(), 0);
   }
+  return patch;
+}
+
+Eigen::MatrixXd spectralAffinity(
+  const FaceGraph& graph, const std::vector<int>& patch, const SpectralSegmentationOptions& options, std::vector<double>& area)
+{
+  const int n = graph.faceCount();
   const int m = *std::max_element(patch.begin(), patch.end()) + 1;
-  result.patches = m;
-  if (k == 1 || m == 1)
-  {
-    result.labels.assign(n, 0);
-    return result;
-  }
-  std::vector<double> area(m, 0.0);
+  area.assign(m, 0.0);
   std::vector<Vector3> centroid(m, Vector3::Zero());
   for (int f = 0; f < n; ++f)
   {
@@ -219,27 +257,8 @@ SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const
   const Eigen::VectorXd degree = affinity.rowwise().sum().cwiseMax(std::numeric_limits<double>::min());
   const Eigen::VectorXd scale = degree.cwiseSqrt().cwiseInverse();
   affinity = scale.asDiagonal() * affinity * scale.asDiagonal();
-  const int dimensions = std::min(k, m);
-  Eigen::VectorXd values;
-  Eigen::MatrixXd embedding = leadingEigenvectors(affinity, dimensions, values);
-  for (int p = 0; p < m; ++p)
-  {
-    const double norm = embedding.row(p).norm();
-    if (norm > 0.0)
-    {
-      embedding.row(p) /= norm;
-    }
-  }
-  const std::vector<int> cluster = clusterEmbedding(embedding, area, std::min(k, m), result.kMeansIterations);
-  std::vector<int> labels(n);
-  for (int f = 0; f < n; ++f)
-  {
-    labels[f] = cluster[patch[f]];
-  }
-  result.labels = finalizeSegments(graph, labels, k);
-  return result;
+  return affinity;
 }
-} // namespace
 
 SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
 {
@@ -266,13 +285,57 @@ SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, cons
   return result;
 }
 
-Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values)
+namespace
 {
-  const Eigen::Index n = symmetric.rows();
-  if (symmetric.cols() != n || count < 1 || count > n)
+// Spectra's relative residual target, ||A x - theta x|| <= tol |theta|: tight enough that the
+// eigenvalues and the subspace match the tridiagonal route's to rounding.
+constexpr double LanczosTolerance = 1e-12;
+
+void checkLeadingCount(const Eigen::MatrixXd& symmetric, int count)
+{
+  if (symmetric.cols() != symmetric.rows() || count < 1 || count > symmetric.rows())
   {
     throw Error("leading eigenvectors need a square matrix and a count between 1 and its size");
   }
+}
+} // namespace
+
+Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values)
+{
+  checkLeadingCount(symmetric, count);
+  const Eigen::Index n = symmetric.rows();
+  const Eigen::Index subspace = std::max<Eigen::Index>(2 * count + 1, 20);
+  if (subspace < n)
+  {
+    // Spectra's implicitly restarted Lanczos (its fixed start vector keeps it deterministic):
+    // products with the matrix, no O(n^3) reduction.
+    Spectra::DenseSymMatProd<double> product(symmetric);
+    Spectra::SymEigsSolver<Spectra::DenseSymMatProd<double>> solver(product, count, subspace);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestAlge, 1000, LanczosTolerance, Spectra::SortRule::SmallestAlge);
+    if (solver.info() == Spectra::CompInfo::Successful)
+    {
+      Eigen::VectorXd lanczosValues = solver.eigenvalues();
+      Eigen::MatrixXd vectors = solver.eigenvectors();
+      // Checked, not trusted, as the tridiagonal route checks its own; the infinity norm bounds the
+      // spectrum's scale.
+      const double scale = std::max(symmetric.cwiseAbs().rowwise().sum().maxCoeff(), std::numeric_limits<double>::min());
+      const double residual = (symmetric * vectors - vectors * lanczosValues.asDiagonal()).colwise().norm().maxCoeff();
+      if (residual <= 1e-8 * scale &&
+        (vectors.transpose() * vectors - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff() <= 1e-8)
+      {
+        values = lanczosValues;
+        return vectors;
+      }
+    }
+  }
+  return tridiagonalLeadingEigenvectors(symmetric, count, values);
+}
+
+Eigen::MatrixXd tridiagonalLeadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values)
+{
+  checkLeadingCount(symmetric, count);
+  const Eigen::Index n = symmetric.rows();
   const Eigen::Tridiagonalization<Eigen::MatrixXd> reduction(symmetric);
   const Eigen::VectorXd diagonal = reduction.diagonal();
   const Eigen::VectorXd offDiagonal = reduction.subDiagonal();

@@ -44,14 +44,34 @@ struct SpectralSegmentationResult
 /// k > faces, weights outside [0, 1] or a patch count below 2.
 SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options);
 
+/// The patches segmentSpectrally forms its affinity on: per face, its cluster of
+/// buildFaceClusterHierarchy cut at options.patchCount clusters, or the face itself on a mesh of
+/// at most that many faces; numbered from 0.
+std::vector<int> spectralPatches(const FaceGraph& graph, const SpectralSegmentationOptions& options);
+
+/// The matrix whose leading eigenvectors segmentSpectrally clusters: N = D^-1/2 W D^-1/2 on the
+/// patch graph of `patch` (per face, as spectralPatches gives it), m x m for m patches, with
+/// each patch's area in `area`.
+Eigen::MatrixXd spectralAffinity(
+  const FaceGraph& graph, const std::vector<int>& patch, const SpectralSegmentationOptions& options, std::vector<double>& area);
+
 /// The eigenvectors of the `count` largest eigenvalues of a symmetric matrix, orthonormal columns
 /// in ascending order of their eigenvalues (as Eigen's SelfAdjointEigenSolver orders them), and
-/// those eigenvalues in `values`. Eigen's Householder tridiagonalization and its eigenvalues of the
-/// tridiagonal matrix, then inverse iteration on the tridiagonal matrix from a fixed start, each
+/// those eigenvalues in `values`. When the Krylov subspace, max(2 count + 1, 20) vectors, is
+/// smaller than the matrix: Spectra's implicitly restarted Lanczos (SymEigsSolver, ARPACK's method:
+/// Lehoucq, Sorensen and Yang 1998) on products with the matrix, to a relative residual of 1e-12; its result is
+/// checked (residual and orthonormality as tridiagonalLeadingEigenvectors checks its own) and
+/// tridiagonalLeadingEigenvectors decides if the check fails or Lanczos does not converge, and
+/// for larger counts. Deterministic. Throws kerf::Error if the matrix is not square, count is not
+/// in [1, n] or the eigenvalues fail.
+Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values);
+
+/// The same by Eigen's Householder tridiagonalization and its eigenvalues of the tridiagonal
+/// matrix, then inverse iteration on the tridiagonal matrix from a fixed start, each
 /// vector orthogonalised against those before it (so an eigenvalue of several vectors gets an
 /// orthonormal basis of its space), carried back by the Householder reflections: O(n^2 count)
 /// after the O(n^3) reduction, instead of accumulating every eigenvector. Deterministic. Throws
 /// kerf::Error if the matrix is not square, count is not in [1, n] or the eigenvalues fail.
-Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values);
+Eigen::MatrixXd tridiagonalLeadingEigenvectors(const Eigen::MatrixXd& symmetric, int count, Eigen::VectorXd& values);
 
 } // namespace kerf
