@@ -4,7 +4,8 @@
 # NAME is the algorithm in CamelCase (VertexValence), AREA the Core folder (Geometry, Harmonic,
 # Geodesic, Segmentation, ...). It writes the Core function and its unit test, the filter and
 # its test, the ParaView proxy with its menu icon and the documentation page, and adds them to the one list of
-# filters (Source/Filters/CMakeLists.txt) and the lists of sources and tests. The result builds
+# filters (Source/Filters/CMakeLists.txt), the Core sources and the README's table of filters (the
+# test lists are globbed; Utilities.ListsAgree checks the rest). The result builds
 # and its tests pass; then replace the stub algorithm (each neighbour count) with the real one.
 set -euo pipefail
 usage="usage: Utilities/new-filter.sh NAME AREA   (e.g. VertexValence Geometry)"
@@ -60,8 +61,16 @@ PY
 }
 add_to_list Source/Filters/CMakeLists.txt "set(kerf_filters" "\"$name:surface,alone\""
 add_to_list Source/Core/CMakeLists.txt "set(core_sources" "$area/$name.cxx"
-add_to_list Testing/Core/CMakeLists.txt "set(core_tests" "Test$name.cxx"
-add_to_list Testing/Filters/CMakeLists.txt "set(filter_tests" "Test${name}Filter.cxx"
+# A row of the README's table of filters, after its last filter row.
+/usr/bin/python3 - README.md "| \`vtk$name\` | $label (say what it does) | [$name](Documentation/filters/$name.md) |" <<'PY'
+import sys
+path, row = sys.argv[1:]
+lines = open(path).read().split("\n")
+last = max(i for i, line in enumerate(lines) if line.startswith("| `vtk"))
+lines.insert(last + 1, row)
+open(path, "w").write("\n".join(lines))
+PY
+echo "added vtk$name to README.md"
 echo "Next: write the algorithm (Source/Core/$area/$name.cxx) and its tests, then the filter's"
 echo "parameters, a Python or pvbatch test, an image test, the page and the menu icon"
 echo "(Plugins/ParaView/Icons/$name.svg; Documentation/new-filter.md)."

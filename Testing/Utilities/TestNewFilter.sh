@@ -15,6 +15,8 @@ cd "$work/src"
 # Refuses to make the same filter twice, and bad names.
 ! ./Utilities/new-filter.sh ExampleValence Geometry 2>/dev/null
 ! ./Utilities/new-filter.sh example Geometry 2>/dev/null
+# The lists it touched agree with the files.
+/usr/bin/python3 Testing/Utilities/CheckLists.py .
 # The copy builds in its own build/ with the main build's base directory, as Utilities/build.sh
 # does: through ccache its unchanged sources compile to the main build's cached objects.
 build=$work/src/build
