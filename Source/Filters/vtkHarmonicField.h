@@ -93,8 +93,8 @@ public:
   /// there; the plain Laplacian factored, about three times faster on a fresh mesh. AUTOMATIC
   /// (default): least squares on coarse meshes, point values where the mean edge is at most 1/180
   /// of the bounding-box diagonal (the default stroke offset spans 0.9 edges or more), where the
-  /// two cuts agree to a fraction of the stroke offset and a first cut on 1M triangles costs
-  /// about 4 s instead of 11 s (kerf::automaticFormulation).
+  /// two cuts agree to a fraction of the stroke offset and the first cut is much cheaper
+  /// (kerf::automaticFormulation; figures in Documentation/filters/HarmonicCuts.md).
   vtkSetClampMacro(Formulation, int, POINT_VALUES, AUTOMATIC);
   vtkGetMacro(Formulation, int);
   ///@}

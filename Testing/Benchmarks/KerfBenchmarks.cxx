@@ -30,6 +30,8 @@
 #include <vtkVersion.h>
 
 #include <cstring>
+#include <fstream>
+#include <string>
 
 namespace
 {
@@ -71,6 +73,17 @@ int main(int argc, char** argv)
   benchmark::AddCustomContext("vtk_version", vtkVersion::GetVTKVersionFull());
   benchmark::AddCustomContext("vtk_smp_backend", vtkSMPTools::GetBackend());
   benchmark::AddCustomContext("sparse_cholesky", kerf::SparseCholesky::backend());
+  // The processor's model, for the benchmark log (Utilities/benchmark-log.py): the same core
+  // count and clock can be an Intel Xeon or an AMD EPYC, with or without AVX-512.
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);)
+  {
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos)
+    {
+      benchmark::AddCustomContext("cpu_model", line.substr(line.find(':') + 2));
+      break;
+    }
+  }
   kerf::benchmarks::RegisterSurfaceDescriptorsBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicCutBenchmarks(!minimumTimeGiven);
   kerf::benchmarks::RegisterHarmonicSolverBenchmarks();

@@ -95,8 +95,8 @@ struct MortonKey
 // The faces in the Morton (Z) order of their centroids, 21 bits per axis of the centroids' box,
 // ties by face index; every node holds a contiguous range of that order, split in halves, and its
 // box is its children's union. The order is one sort, where median splits along the longest axis
-// selected every level again: 274 -> 133 ms at 1M triangles (Boost's integer_sort instead of
-// std::sort: no faster; Documentation/architecture.md). Queries visit every box that can hold a
+// select every level again (Boost's integer_sort instead of std::sort is no faster; the figures
+// are in Documentation/architecture.md). Queries visit every box that can hold a
 // point at least as near as the best so far and break ties by face index, so the closest point
 // does not depend on the tree's shape.
 ClosestPointLocator::ClosestPointLocator(const TriangleMesh& mesh)

@@ -21,7 +21,7 @@ namespace kerf
 /// U, Y = L^-1 P U is nonzero only on the supernodes on the paths from U's rows to the root of the
 /// elimination tree (the "reach"), which constraints confined to a region of the surface keep
 /// short: one sweep over the reach computes all k columns together with dense vector kernels
-/// (3 to 11 times faster than CHOLMOD's sparse solves, see Documentation/filters/
+/// (faster than CHOLMOD's sparse solves; the figures are in Documentation/filters/
 /// HarmonicCuts.md), U^T A^-1 U is Y^T Y (the BLAS's syrk, supernode by supernode on the
 /// columns that can be nonzero there), and A^-1 U s is one backward solve
 /// P^T L^-T Y s (Kerf's SupernodalSolve::backward). The last prepare()'s Y is kept, so a U that adds columns to the
