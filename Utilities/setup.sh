@@ -21,6 +21,8 @@ packages=(
   libeigen3-dev libopenmesh-dev libsuitesparse-dev libopenblas-dev libspectra-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth valgrind
+  # the code's format, checked by the tests (Utilities.Formatting, .clang-format)
+  clang-format
   # CGAL's heat method, benchmarked beside Kerf's (header-only)
   libcgal-dev
 )

@@ -1,4 +1,5 @@
-// pqKerfSketchPropertyWidget: the sketch widget's panel, its shortcuts over the view, the selection taken as strokes or a disc, and the apply that follows a gesture.
+// pqKerfSketchPropertyWidget: the sketch widget's panel, its shortcuts over the view, the selection taken as strokes or
+// a disc, and the apply that follows a gesture.
 #include "pqKerfSketchPropertyWidget.h"
 
 #include "vtkKerfSketchRepresentation.h"
@@ -18,11 +19,11 @@
 #include "vtkAlgorithm.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
-#include "vtkPointSet.h"
 #include "vtkOutputWindow.h"
-#include "vtkPVLogger.h"
 #include "vtkPVDataInformation.h"
+#include "vtkPVLogger.h"
 #include "vtkPVXMLElement.h"
+#include "vtkPointSet.h"
 #include "vtkSMNewWidgetRepresentationProxy.h"
 #include "vtkSMPropertyGroup.h"
 #include "vtkSMPropertyHelper.h"
@@ -30,20 +31,20 @@
 #include "vtkSMSourceProxy.h"
 #include "vtkSmartPointer.h"
 
+#include <QAbstractSpinBox>
 #include <QApplication>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QCursor>
 #include <QHBoxLayout>
 #include <QKeyEvent>
-#include <QAbstractSpinBox>
-#include <QLineEdit>
-#include <QPlainTextEdit>
-#include <QTextEdit>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPixmap>
+#include <QPlainTextEdit>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QTextEdit>
 #include <QTimer>
 #include <QVBoxLayout>
 
@@ -128,8 +129,8 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
   // The panel: two lines of help, the label, the buttons, the toggle, what happened last.
   QVBoxLayout* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
-  this->Help = new QLabel(
-    sketch && sketch->GetAttribute("help") ? QString::fromUtf8(sketch->GetAttribute("help")) : helpText(mode, this->Labelled),
+  this->Help = new QLabel(sketch && sketch->GetAttribute("help") ? QString::fromUtf8(sketch->GetAttribute("help"))
+                                                                 : helpText(mode, this->Labelled),
     this);
   this->Help->setObjectName("Help");
   this->Help->setWordWrap(true);
@@ -184,7 +185,8 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
   {
     layout->addLayout(buttons);
   }
-  const char* followText = sketch && sketch->GetAttribute("follow") ? sketch->GetAttribute("follow") : "The result follows each gesture";
+  const char* followText =
+    sketch && sketch->GetAttribute("follow") ? sketch->GetAttribute("follow") : "The result follows each gesture";
   this->Follow = new QCheckBox(tr(followText), this);
   this->Follow->setObjectName("Follow");
   this->Follow->setToolTip(tr("Apply when a stroke, disc or click ends, without pressing Apply"));
@@ -236,11 +238,12 @@ pqKerfSketchPropertyWidget::pqKerfSketchPropertyWidget(
   this->connect(this, SIGNAL(endInteraction()), SLOT(gestureEnded()));
   if (vtkKerfSketchWidget* sketchWidget = this->sketchWidget())
   {
-    this->MessageObserver = sketchWidget->AddObserver(
-      vtkKerfSketchWidget::MessageEvent, this, &pqKerfSketchPropertyWidget::showMessage);
+    this->MessageObserver =
+      sketchWidget->AddObserver(vtkKerfSketchWidget::MessageEvent, this, &pqKerfSketchPropertyWidget::showMessage);
     sketchWidget->SetRenderAfterChange(!this->Follow->isChecked());
     // A label chosen in the view (a key the panel did not see): the panel shows it too.
-    this->LabelObserver = sketchWidget->AddObserver(vtkCommand::ModifiedEvent, this, &pqKerfSketchPropertyWidget::showLabel);
+    this->LabelObserver =
+      sketchWidget->AddObserver(vtkCommand::ModifiedEvent, this, &pqKerfSketchPropertyWidget::showLabel);
   }
   qApp->installEventFilter(this);
   this->setWidgetVisible(true);
@@ -283,16 +286,46 @@ void pqKerfSketchPropertyWidget::showLabel()
 // ---------------------------------------------------------------------------------------------
 // The values Apply commits.
 
-QList<QVariant> pqKerfSketchPropertyWidget::strokePoints() const { return this->StrokePointValues; }
-QList<QVariant> pqKerfSketchPropertyWidget::strokeSizes() const { return this->StrokeSizeValues; }
-QList<QVariant> pqKerfSketchPropertyWidget::strokeLabels() const { return this->StrokeLabelValues; }
-QList<QVariant> pqKerfSketchPropertyWidget::discs() const { return this->DiscValues; }
-QList<QVariant> pqKerfSketchPropertyWidget::clickedPoints() const { return this->PointValues; }
-void pqKerfSketchPropertyWidget::setStrokePoints(const QList<QVariant>& values) { this->StrokePointValues = values; }
-void pqKerfSketchPropertyWidget::setStrokeSizes(const QList<QVariant>& values) { this->StrokeSizeValues = values; }
-void pqKerfSketchPropertyWidget::setStrokeLabels(const QList<QVariant>& values) { this->StrokeLabelValues = values; }
-void pqKerfSketchPropertyWidget::setDiscs(const QList<QVariant>& values) { this->DiscValues = values; }
-void pqKerfSketchPropertyWidget::setClickedPoints(const QList<QVariant>& values) { this->PointValues = values; }
+QList<QVariant> pqKerfSketchPropertyWidget::strokePoints() const
+{
+  return this->StrokePointValues;
+}
+QList<QVariant> pqKerfSketchPropertyWidget::strokeSizes() const
+{
+  return this->StrokeSizeValues;
+}
+QList<QVariant> pqKerfSketchPropertyWidget::strokeLabels() const
+{
+  return this->StrokeLabelValues;
+}
+QList<QVariant> pqKerfSketchPropertyWidget::discs() const
+{
+  return this->DiscValues;
+}
+QList<QVariant> pqKerfSketchPropertyWidget::clickedPoints() const
+{
+  return this->PointValues;
+}
+void pqKerfSketchPropertyWidget::setStrokePoints(const QList<QVariant>& values)
+{
+  this->StrokePointValues = values;
+}
+void pqKerfSketchPropertyWidget::setStrokeSizes(const QList<QVariant>& values)
+{
+  this->StrokeSizeValues = values;
+}
+void pqKerfSketchPropertyWidget::setStrokeLabels(const QList<QVariant>& values)
+{
+  this->StrokeLabelValues = values;
+}
+void pqKerfSketchPropertyWidget::setDiscs(const QList<QVariant>& values)
+{
+  this->DiscValues = values;
+}
+void pqKerfSketchPropertyWidget::setClickedPoints(const QList<QVariant>& values)
+{
+  this->PointValues = values;
+}
 
 // ---------------------------------------------------------------------------------------------
 
@@ -411,14 +444,15 @@ void pqKerfSketchPropertyWidget::gestureEnded()
     const int points = representation->GetNumberOfClickedPoints();
     if (points > 0 && points < minimumPoints)
     {
-      this->setStatus(tr("Click %1 more point(s): the filter needs %2.").arg(minimumPoints - points).arg(minimumPoints), false);
+      this->setStatus(
+        tr("Click %1 more point(s): the filter needs %2.").arg(minimumPoints - points).arg(minimumPoints), false);
       this->render(); // the widget leaves it to the apply, which waits
       return;
     }
     if (representation->GetNumberOfStrokes() > 0 && representation->GetNumberOfLabels() < minimumLabels)
     {
-      this->setStatus(tr("Draw a stroke of another label (the keys 0-9 over the view): the parts need %1 labels.")
-                        .arg(minimumLabels),
+      this->setStatus(
+        tr("Draw a stroke of another label (the keys 0-9 over the view): the parts need %1 labels.").arg(minimumLabels),
         false);
       this->render();
       return;
@@ -609,7 +643,8 @@ void pqKerfSketchPropertyWidget::fitToPanel()
   {
     return;
   }
-  const int width = std::max(120, this->PanelViewport->width() - this->mapTo(this->PanelViewport, QPoint(0, 0)).x() - 8);
+  const int width =
+    std::max(120, this->PanelViewport->width() - this->mapTo(this->PanelViewport, QPoint(0, 0)).x() - 8);
   this->setMaximumWidth(width);
   for (QLabel* label : { this->Help.data(), this->Status.data() })
   {
@@ -638,16 +673,17 @@ bool pqKerfSketchPropertyWidget::eventFilter(QObject* watched, QEvent* event)
   // field or a spin box that has the focus.
   const Qt::KeyboardModifiers modifiers = key->modifiers() & ~Qt::KeypadModifier;
   QWidget* focus = QApplication::focusWidget();
-  if (focus && (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) ||
-                 qobject_cast<QTextEdit*>(focus) || qobject_cast<QPlainTextEdit*>(focus)))
+  if (focus &&
+    (qobject_cast<QLineEdit*>(focus) || qobject_cast<QAbstractSpinBox*>(focus) || qobject_cast<QTextEdit*>(focus) ||
+      qobject_cast<QPlainTextEdit*>(focus)))
   {
     return this->Superclass::eventFilter(watched, event);
   }
   const bool undo = key->key() == Qt::Key_Z && modifiers == Qt::ControlModifier;
-  const bool digit = this->Labelled && modifiers == Qt::NoModifier && key->key() >= Qt::Key_0 &&
-    key->key() <= Qt::Key_9;
-  const bool override = this->Labelled && modifiers == Qt::NoModifier && key->key() == Qt::Key_O &&
-    this->Label && this->Label->findData(-1) >= 0;
+  const bool digit =
+    this->Labelled && modifiers == Qt::NoModifier && key->key() >= Qt::Key_0 && key->key() <= Qt::Key_9;
+  const bool override = this->Labelled && modifiers == Qt::NoModifier && key->key() == Qt::Key_O && this->Label &&
+    this->Label->findData(-1) >= 0;
   if (!(undo || digit || override) || !this->overView(watched))
   {
     return this->Superclass::eventFilter(watched, event);

@@ -1,4 +1,5 @@
-// The panel of Kerf's sketch widget in ParaView: how to draw, undo and clear, labels, the selection as input, and the cut that follows at once.
+// The panel of Kerf's sketch widget in ParaView: how to draw, undo and clear, labels, the selection as input, and the
+// cut that follows at once.
 #ifndef pqKerfSketchPropertyWidget_h
 #define pqKerfSketchPropertyWidget_h
 

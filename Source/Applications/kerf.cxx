@@ -62,8 +62,7 @@ const Command Commands[] = {
   { "convert", "kerf convert IN OUT", "Converts between mesh formats (by extension)." },
   { "render", "kerf render MESH -o OUT.png [render options]",
     "Renders a mesh, coloured by a point or cell array, to a PNG." },
-  { "benchmark",
-    "kerf benchmark --data FOLDER [--method NAME] [--parameters P] [--models 1,9] [--jobs N] [-o FOLDER]",
+  { "benchmark", "kerf benchmark --data FOLDER [--method NAME] [--parameters P] [--models 1,9] [--jobs N] [-o FOLDER]",
     "Runs a segmentation method over a folder in the Princeton benchmark's layout (off/N.off,\n"
     "seg/N/N_j.seg, nSeg-ByModel.txt) and scores it against the human segmentations. Writes\n"
     "results.csv (one row per model: model, category, method, parameters, every metric, time),\n"
@@ -96,8 +95,7 @@ void printHelp()
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" ||
-    std::string(argv[1]) == "help")
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h" || std::string(argv[1]) == "help")
   {
     printHelp();
     return argc < 2 ? 2 : 0;

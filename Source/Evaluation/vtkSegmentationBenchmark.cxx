@@ -140,9 +140,8 @@ std::vector<kerf::BenchmarkRow> tableRows(vtkTable* table)
       row.values[column] = table->GetValueByName(r, column.c_str()).ToDouble();
     }
   }
-  std::sort(rows.begin(), rows.end(), [](const kerf::BenchmarkRow& a, const kerf::BenchmarkRow& b) {
-    return a.model < b.model;
-  });
+  std::sort(rows.begin(), rows.end(),
+    [](const kerf::BenchmarkRow& a, const kerf::BenchmarkRow& b) { return a.model < b.model; });
   return rows;
 }
 
@@ -256,8 +255,7 @@ int vtkSegmentationBenchmark::FillOutputPortInformation(int port, vtkInformation
   return 1;
 }
 
-int vtkSegmentationBenchmark::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkSegmentationBenchmark::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkTable* table = vtkTable::GetData(outputVector, 0);
   vtkPolyData* shown = vtkPolyData::GetData(outputVector, 1);

@@ -188,8 +188,8 @@ std::vector<Vector3> DrawnStrokeOnSurface(const Surface& surface, const DrawnStr
   for (std::size_t i = 0; i < stroke.points.size(); ++i)
   {
     placed.push_back(surfacePosition(surface.mesh(),
-      PanelPointOnSurface(surface, stroke.points[i],
-        "drawn stroke " + std::to_string(index) + " point " + std::to_string(i))));
+      PanelPointOnSurface(
+        surface, stroke.points[i], "drawn stroke " + std::to_string(index) + " point " + std::to_string(i))));
   }
   return placed;
 }
@@ -275,7 +275,10 @@ PanelLabelledStrokes PanelLabelled(const DrawnStrokeList& drawn,
     if (points && points->Count() > 0 && drawnLabels.count(label) == 0)
     {
       out.strokes.push_back({ label,
-        PanelPointsOnSurface(*points, surface, label == 1 ? "foreground" : label == 0 ? "background" : "typed stroke") });
+        PanelPointsOnSurface(*points, surface,
+          label == 1     ? "foreground"
+            : label == 0 ? "background"
+                         : "typed stroke") });
     }
   }
   return out;
@@ -300,11 +303,13 @@ DiscClicks ReadDiscClicks(
     for (std::size_t i = 0; i < discs.size(); ++i)
     {
       const SurfacePoint click = PanelPointOnSurface(surface, discs[i].centre, "drawn disc " + std::to_string(i));
-      (discs[i].subtract ? clicks.subtracted : clicks.added).push_back({ surfacePosition(surface.mesh(), click), discs[i].radius });
+      (discs[i].subtract ? clicks.subtracted : clicks.added)
+        .push_back({ surfacePosition(surface.mesh(), click), discs[i].radius });
     }
     if (clicks.added.empty())
     {
-      throw Error("every drawn disc subtracts: draw one that adds (hold Ctrl without Shift and drag outward from a click)");
+      throw Error(
+        "every drawn disc subtracts: draw one that adds (hold Ctrl without Shift and drag outward from a click)");
     }
     return clicks;
   }

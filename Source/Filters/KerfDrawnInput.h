@@ -1,4 +1,5 @@
-// What a filter's panel draws on the surface (strokes, discs, points) and the rule that drawn input replaces typed input.
+// What a filter's panel draws on the surface (strokes, discs, points) and the rule that drawn input replaces typed
+// input.
 #pragma once
 
 #include "Geodesic/RoiScissor.h"
@@ -39,7 +40,6 @@ void SetPanelInteger(vtkAlgorithm* algorithm, PanelIntegerList& list, int index,
 
 /// The label of a drawn override stroke (Easy Mesh Cut's boundary editing): not a part's label.
 constexpr int OverrideStrokeLabel = -1;
-
 
 /// The strokes drawn in a filter's panel (Kerf's sketch widget in ParaView): the points of every
 /// stroke one after another, the number of points of each (all the points one stroke when there
@@ -108,7 +108,8 @@ std::vector<Vector3> DrawnStrokeOnSurface(const Surface& surface, const DrawnStr
 
 /// A panel's drawn strokes labelled OverrideStrokeLabel (all of them with `every`), on the surface:
 /// override strokes for the filters that edit boundaries.
-std::vector<std::vector<Vector3>> PanelOverrideStrokes(const DrawnStrokeList& drawn, const Surface& surface, bool every);
+std::vector<std::vector<Vector3>> PanelOverrideStrokes(
+  const DrawnStrokeList& drawn, const Surface& surface, bool every);
 
 /// Labelled strokes from a panel and the override strokes among them.
 struct PanelLabelledStrokes

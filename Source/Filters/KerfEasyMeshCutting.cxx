@@ -1,12 +1,13 @@
-// What Easy Mesh Cutting's filters share: labelled strokes read from polylines and vertices, the growing options, boundaries written as polylines.
+// What Easy Mesh Cutting's filters share: labelled strokes read from polylines and vertices, the growing options,
+// boundaries written as polylines.
 #include "KerfEasyMeshCutting.h"
 
 #include "Error.h"
-#include "KerfParameterChecks.h"
-#include "KerfInputArrays.h"
-#include "KerfPanelPoints.h"
-#include "KerfOutputArrays.h"
 #include "KerfDrawnInput.h"
+#include "KerfInputArrays.h"
+#include "KerfOutputArrays.h"
+#include "KerfPanelPoints.h"
+#include "KerfParameterChecks.h"
 #include "vtkStrokeGrowingAlgorithm.h"
 
 #include <vtkCellData.h>
@@ -55,9 +56,8 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
   return strokes;
 }
 
-PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray,
-  const DrawnStrokeList& drawn, const std::vector<std::pair<int, const StrokePointList*>>& typed,
-  const Surface& surface)
+PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray, const DrawnStrokeList& drawn,
+  const std::vector<std::pair<int, const StrokePointList*>>& typed, const Surface& surface)
 {
   PanelLabelledStrokes read;
   if (strokeInput)

@@ -24,9 +24,8 @@ std::vector<LabelledStroke> ReadLabelledStrokes(vtkPolyData* input, const char* 
 /// when it is connected, else those of its panel (PanelLabelled, the typed strokes `typed` where
 /// no stroke of their label is drawn); the override strokes drawn in the panel either way.
 /// Throws kerf::Error when there is no stroke.
-PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray,
-  const DrawnStrokeList& drawn, const std::vector<std::pair<int, const StrokePointList*>>& typed,
-  const Surface& surface);
+PanelLabelledStrokes ReadGrowingStrokes(vtkPolyData* strokeInput, const char* labelArray, const DrawnStrokeList& drawn,
+  const std::vector<std::pair<int, const StrokePointList*>>& typed, const Surface& surface);
 
 /// The growing options from a filter's properties: the metric (w, w*, augmentation 0-2, per edge)
 /// and the stroke points' farthest projection (MaximumProjectionDistance times `diagonal`), NaN

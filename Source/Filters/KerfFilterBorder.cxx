@@ -1,4 +1,5 @@
-// The border every Kerf filter's RequestData and setters run inside: exceptions become one vtkErrorMacro and a 0 return; the surface loaded; the ports of a surface with optional points.
+// The border every Kerf filter's RequestData and setters run inside: exceptions become one vtkErrorMacro and a 0
+// return; the surface loaded; the ports of a surface with optional points.
 #include "KerfFilterBorder.h"
 
 #include "Error.h"

@@ -1,4 +1,5 @@
-// A filter's inputs read into Core's terms: selected and named arrays, labels, points, polylines and vertex cells, points and lines placed on the surface.
+// A filter's inputs read into Core's terms: selected and named arrays, labels, points, polylines and vertex cells,
+// points and lines placed on the surface.
 #include "KerfInputArrays.h"
 
 #include "KerfFilterBorder.h"
@@ -6,16 +7,16 @@
 #include "Error.h"
 #include "Geodesic/SurfaceLocation.h"
 
-#include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkInformation.h>
+#include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPolyData.h>
 
@@ -58,22 +59,22 @@ std::vector<SurfacePoint> ProjectPointsOntoSurface(
   return projected;
 }
 
-std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
-  vtkIdType expected, const std::string& owner)
+std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index, vtkIdType expected, const std::string& owner)
 {
   vtkInformation* selection = algorithm->GetInputArrayInformation(index);
-  const char* requested = selection && selection->Has(vtkDataObject::FIELD_NAME())
-    ? selection->Get(vtkDataObject::FIELD_NAME())
-    : nullptr;
+  const char* requested =
+    selection && selection->Has(vtkDataObject::FIELD_NAME()) ? selection->Get(vtkDataObject::FIELD_NAME()) : nullptr;
   const int association = selection && selection->Has(vtkDataObject::FIELD_ASSOCIATION())
     ? selection->Get(vtkDataObject::FIELD_ASSOCIATION())
     : vtkDataObject::FIELD_ASSOCIATION_POINTS;
   const char* kind = association == vtkDataObject::FIELD_ASSOCIATION_CELLS ? "cell" : "point";
   const std::string where = " (input array " + std::to_string(index) + ")";
   vtkDataArray* array = nullptr;
-  const int port = selection && selection->Has(vtkAlgorithm::INPUT_PORT()) ? selection->Get(vtkAlgorithm::INPUT_PORT()) : 0;
-  const int connection =
-    selection && selection->Has(vtkAlgorithm::INPUT_CONNECTION()) ? selection->Get(vtkAlgorithm::INPUT_CONNECTION()) : 0;
+  const int port =
+    selection && selection->Has(vtkAlgorithm::INPUT_PORT()) ? selection->Get(vtkAlgorithm::INPUT_PORT()) : 0;
+  const int connection = selection && selection->Has(vtkAlgorithm::INPUT_CONNECTION())
+    ? selection->Get(vtkAlgorithm::INPUT_CONNECTION())
+    : 0;
   if (auto* data = vtkDataSet::SafeDownCast(algorithm->GetInputDataObject(port, connection)))
   {
     vtkDataSetAttributes* attributes = association == vtkDataObject::FIELD_ASSOCIATION_CELLS
@@ -95,16 +96,15 @@ std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
     expected, kind);
 }
 
-std::vector<int> ReadTriangleLabels(vtkAlgorithm* algorithm, int index,
-  const SurfaceInput& surface, vtkIdType cells, const std::string& owner)
+std::vector<int> ReadTriangleLabels(
+  vtkAlgorithm* algorithm, int index, const SurfaceInput& surface, vtkIdType cells, const std::string& owner)
 {
   const std::vector<double> perCell = ReadInputArray(algorithm, index, cells, owner);
   std::vector<int> labels(perCell.size());
   for (std::size_t c = 0; c < perCell.size(); ++c)
   {
     const double value = perCell[c];
-    if (!std::isfinite(value) || value != std::floor(value) || value < -1.0 ||
-      value > std::numeric_limits<int>::max())
+    if (!std::isfinite(value) || value != std::floor(value) || value < -1.0 || value > std::numeric_limits<int>::max())
     {
       throw Error("cell " + std::to_string(c) + " of " + owner + " holds " + std::to_string(value) +
         ", which is not a label (an integer >= -1)");
@@ -125,7 +125,8 @@ InputLabels LoadLabelledSurface(
   const char* requested =
     selection && selection->Has(vtkDataObject::FIELD_NAME()) ? selection->Get(vtkDataObject::FIELD_NAME()) : nullptr;
   vtkDataArray* scalars = input->GetCellData()->GetScalars();
-  read.arrayName = requested && *requested ? requested : (scalars && scalars->GetName() ? scalars->GetName() : "Segment");
+  read.arrayName =
+    requested && *requested ? requested : (scalars && scalars->GetName() ? scalars->GetName() : "Segment");
   return read;
 }
 
@@ -136,7 +137,8 @@ std::vector<double> ReadNamedPointArray(vtkPointSet* points, const char* name, c
   {
     throw Error(owner + " have no one-component point array named '" + (name ? name : "") + "'");
   }
-  return checkedValues(array, "the point array '" + std::string(name) + "' of " + owner, points->GetNumberOfPoints(), "point");
+  return checkedValues(
+    array, "the point array '" + std::string(name) + "' of " + owner, points->GetNumberOfPoints(), "point");
 }
 
 std::vector<double> ReadNamedCellArray(vtkPolyData* cells, const char* name, const std::string& owner)
@@ -146,7 +148,8 @@ std::vector<double> ReadNamedCellArray(vtkPolyData* cells, const char* name, con
   {
     throw Error(owner + " have no one-component cell array named '" + (name ? name : "") + "'");
   }
-  return checkedValues(array, "the cell array '" + std::string(name) + "' of " + owner, cells->GetNumberOfCells(), "cell");
+  return checkedValues(
+    array, "the cell array '" + std::string(name) + "' of " + owner, cells->GetNumberOfCells(), "cell");
 }
 
 std::vector<Vector3> ReadPoints(vtkPointSet* points)

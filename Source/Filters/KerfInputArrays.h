@@ -1,4 +1,5 @@
-// A filter's inputs read into Core's terms: selected and named arrays, labels, points, polylines and vertex cells, points and lines placed on the surface.
+// A filter's inputs read into Core's terms: selected and named arrays, labels, points, polylines and vertex cells,
+// points and lines placed on the surface.
 #pragma once
 
 #include "Geodesic/SurfacePoint.h"
@@ -27,14 +28,13 @@ std::vector<SurfacePoint> ProjectPointsOntoSurface(
 /// the active scalars of that association are read. Throws kerf::Error naming the array, its owner
 /// ("the surface", "the constraint points") and the input array index for a missing array, another
 /// number of components or another number of values than `expected`.
-std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index,
-  vtkIdType expected, const std::string& owner);
+std::vector<double> ReadInputArray(vtkAlgorithm* algorithm, int index, vtkIdType expected, const std::string& owner);
 
 /// Per-triangle labels from the input array `index`, a cell array of `cells` integer labels >= -1
 /// (each polygon's label on each of its triangles); throws kerf::Error as ReadInputArray does, and
 /// naming the first cell that holds anything else.
-std::vector<int> ReadTriangleLabels(vtkAlgorithm* algorithm, int index,
-  const SurfaceInput& surface, vtkIdType cells, const std::string& owner);
+std::vector<int> ReadTriangleLabels(
+  vtkAlgorithm* algorithm, int index, const SurfaceInput& surface, vtkIdType cells, const std::string& owner);
 
 /// What a filter that changes a labelling reads (vtkSnakeRefinement, vtkBoundaryBandCut): input
 /// 0's surface, loaded into `surface` with `requirements`, its per-triangle labels from input

@@ -1,17 +1,18 @@
-// What filters write to their outputs: field values, label arrays and segment sizes, polylines and cut lines, solved fields, relabelled surfaces.
+// What filters write to their outputs: field values, label arrays and segment sizes, polylines and cut lines, solved
+// fields, relabelled surfaces.
 #include "KerfOutputArrays.h"
 
 #include "KerfFilterBorder.h"
 #include "KerfParameterChecks.h"
 
-#include <vtkPointData.h>
-#include <vtkCellData.h>
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
@@ -23,8 +24,8 @@
 namespace kerf
 {
 
-void WriteRelabelledSurface(
-  const SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output, const InputLabels& read, const std::vector<int>& labels)
+void WriteRelabelledSurface(const SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
+  const InputLabels& read, const std::vector<int>& labels)
 {
   surface.MakeOutput(input, output);
   output->GetCellData()->RemoveArray(read.arrayName.c_str());
@@ -156,12 +157,12 @@ std::string ClampedFieldName(const char* name)
   return std::string(name) + "Clamped";
 }
 
-void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution,
-  const FieldConstraints& constraints, const char* name, vtkPolyData* output)
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const FieldConstraints& constraints,
+  const char* name, vtkPolyData* output)
 {
   output->GetPointData()->AddArray(MakeArray(name, surface.ToInputPoints(solution.field)));
-  output->GetPointData()->AddArray(MakeArray(ClampedFieldName(name).c_str(),
-    surface.ToInputPoints(clampToConstraintRange(solution.field, constraints))));
+  output->GetPointData()->AddArray(MakeArray(
+    ClampedFieldName(name).c_str(), surface.ToInputPoints(clampToConstraintRange(solution.field, constraints))));
   output->GetFieldData()->AddArray(MakeFieldValue("RelativeResidual", solution.relativeResidual));
   output->GetFieldData()->AddArray(MakeFieldValue("SolverWork", SolverWorkName(solution.work)));
 }

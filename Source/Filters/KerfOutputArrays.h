@@ -1,4 +1,5 @@
-// What filters write to their outputs: field values, label arrays and segment sizes, polylines and cut lines, solved fields, relabelled surfaces.
+// What filters write to their outputs: field values, label arrays and segment sizes, polylines and cut lines, solved
+// fields, relabelled surfaces.
 #pragma once
 
 #include "Harmonic/HarmonicCutSession.h"
@@ -23,8 +24,8 @@ namespace kerf
 
 /// The output of such a filter: the surface (SurfaceInput::MakeOutput) with its labels replaced by
 /// `labels` under the input array's name, the active cell scalars.
-void WriteRelabelledSurface(
-  const SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output, const InputLabels& read, const std::vector<int>& labels);
+void WriteRelabelledSurface(const SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
+  const InputLabels& read, const std::vector<int>& labels);
 
 /// A one-tuple field-data array holding a number or a word.
 vtkSmartPointer<vtkAbstractArray> MakeFieldValue(const char* name, double value);
@@ -65,8 +66,8 @@ void WriteCutLines(const CutResult& cut, vtkPolyData* lines);
 /// field clamped to the range of its constraint values, kerf::clampToConstraintRange: what a
 /// colour map shows readably) and the field data RelativeResidual and SolverWork. Sets no active
 /// scalars: the caller says what ParaView colours by.
-void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution,
-  const FieldConstraints& constraints, const char* name, vtkPolyData* output);
+void WriteField(const SurfaceInput& surface, const HarmonicFieldSolution& solution, const FieldConstraints& constraints,
+  const char* name, vtkPolyData* output);
 
 /// The name of the clamped copy WriteField writes beside the field `name`.
 std::string ClampedFieldName(const char* name);

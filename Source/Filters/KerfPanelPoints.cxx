@@ -1,4 +1,5 @@
-// The points typed in a filter's panel (ParaView's handle and polyline widgets): their lists, setters and their place on the surface.
+// The points typed in a filter's panel (ParaView's handle and polyline widgets): their lists, setters and their place
+// on the surface.
 #include "KerfPanelPoints.h"
 
 #include "KerfFilterBorder.h"

@@ -1,4 +1,5 @@
-// The points typed in a filter's panel (ParaView's handle and polyline widgets): their lists, setters and their place on the surface.
+// The points typed in a filter's panel (ParaView's handle and polyline widgets): their lists, setters and their place
+// on the surface.
 #pragma once
 
 #include "Geodesic/SurfacePoint.h"
@@ -45,6 +46,7 @@ void SetPanelPoint(
 /// The panel's points moved to the nearest points of the surface, whatever their distance (the
 /// panel's first points come from the input's bounds); throws naming "<noun> point <i>" for NaN,
 /// infinite or huge coordinates.
-std::vector<Vector3> PanelPointsOnSurface(const StrokePointList& panel, const Surface& surface, const std::string& noun);
+std::vector<Vector3> PanelPointsOnSurface(
+  const StrokePointList& panel, const Surface& surface, const std::string& noun);
 
 } // namespace kerf

@@ -1,4 +1,5 @@
-// Checks of a filter's parameters before Core sees them: names, NaN, distances as fractions of the diagonal, the stroke sampling and the formulation.
+// Checks of a filter's parameters before Core sees them: names, NaN, distances as fractions of the diagonal, the stroke
+// sampling and the formulation.
 #include "KerfParameterChecks.h"
 
 #include "Error.h"
@@ -43,7 +44,8 @@ double StrokeIsoValue(double value)
 {
   if (!std::isfinite(value) || !(value + 1.0 > value) || !(value - 1.0 < value))
   {
-    throw Error("IsoValue " + std::to_string(value) + " must be finite, and small enough that IsoValue +- 1 differ from it");
+    throw Error(
+      "IsoValue " + std::to_string(value) + " must be finite, and small enough that IsoValue +- 1 differ from it");
   }
   return value;
 }
@@ -77,7 +79,8 @@ StrokeOptions ReadStrokeOptions(vtkStrokeConstraintAlgorithm* algorithm, double 
   options.offset = Finite(algorithm->GetOffset(), "Offset") * diagonal;
   options.offsetLengthFraction = Finite(algorithm->GetOffsetLengthFraction(), "OffsetLengthFraction");
   options.isoValue = algorithm->GetIsoValue();
-  options.maximumDistance = RelativeDistance(algorithm->GetMaximumProjectionDistance(), diagonal, "MaximumProjectionDistance");
+  options.maximumDistance =
+    RelativeDistance(algorithm->GetMaximumProjectionDistance(), diagonal, "MaximumProjectionDistance");
   return options;
 }
 

@@ -1,4 +1,5 @@
-// Checks of a filter's parameters before Core sees them: names, NaN, distances as fractions of the diagonal, the stroke sampling and the formulation.
+// Checks of a filter's parameters before Core sees them: names, NaN, distances as fractions of the diagonal, the stroke
+// sampling and the formulation.
 #pragma once
 
 #include "Harmonic/HarmonicCutSession.h"

@@ -90,13 +90,13 @@ void appendCellArray(vtkCellArray* cells, vtkIdType firstCellId, bool strips, vt
   }
   if (cells->IsStorage64Bit())
   {
-    appendCells(cells->GetOffsetsArray64(), cells->GetConnectivityArray64(), firstCellId, strips,
-      pointCount, polygons, polygonCell);
+    appendCells(cells->GetOffsetsArray64(), cells->GetConnectivityArray64(), firstCellId, strips, pointCount, polygons,
+      polygonCell);
   }
   else
   {
-    appendCells(cells->GetOffsetsArray32(), cells->GetConnectivityArray32(), firstCellId, strips,
-      pointCount, polygons, polygonCell);
+    appendCells(cells->GetOffsetsArray32(), cells->GetConnectivityArray32(), firstCellId, strips, pointCount, polygons,
+      polygonCell);
   }
 }
 
@@ -414,8 +414,7 @@ vtkSmartPointer<vtkDoubleArray> MakeArray(const char* name, const std::vector<Ve
   return array;
 }
 
-vtkSmartPointer<vtkUnsignedCharArray> MakeArray(
-  const char* name, const std::vector<unsigned char>& flags)
+vtkSmartPointer<vtkUnsignedCharArray> MakeArray(const char* name, const std::vector<unsigned char>& flags)
 {
   auto array = vtkSmartPointer<vtkUnsignedCharArray>::New();
   array->SetName(name);

@@ -117,7 +117,6 @@ vtkSmartPointer<vtkDoubleArray> MakeArray(const char* name, const std::vector<do
 /// A named three-component double array holding `vectors`.
 vtkSmartPointer<vtkDoubleArray> MakeArray(const char* name, const std::vector<Vector3>& vectors);
 /// A named unsigned char array holding `flags`.
-vtkSmartPointer<vtkUnsignedCharArray> MakeArray(
-  const char* name, const std::vector<unsigned char>& flags);
+vtkSmartPointer<vtkUnsignedCharArray> MakeArray(const char* name, const std::vector<unsigned char>& flags);
 
 } // namespace kerf

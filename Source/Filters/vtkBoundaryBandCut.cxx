@@ -1,10 +1,11 @@
-// vtkBoundaryBandCut: reads a surface's labels, re-cuts their boundaries within bands (kerf::refineSegmentBoundaries), writes them.
+// vtkBoundaryBandCut: reads a surface's labels, re-cuts their boundaries within bands (kerf::refineSegmentBoundaries),
+// writes them.
 #include "vtkBoundaryBandCut.h"
 
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 #include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/FaceGraph.h"
@@ -32,12 +33,14 @@ vtkBoundaryBandCut::vtkBoundaryBandCut()
 
 vtkBoundaryBandCut::~vtkBoundaryBandCut() = default;
 
-int vtkBoundaryBandCut::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkBoundaryBandCut::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot re-cut the boundaries", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    const kerf::InputLabels read = kerf::LoadLabelledSurface(this, this->State->surface, input, kerf::MeshRequirements());
+    const kerf::InputLabels read =
+      kerf::LoadLabelledSurface(this, this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
 
     kerf::BoundaryRefinementOptions options;

@@ -1,6 +1,7 @@
 /**
  * @class vtkBoundaryBandCut
- * @brief Boundary Band Cut: each boundary of a segmented surface re-cut within a band around it by a minimum cut that prefers short, concave ways (Katz and Tal 2003).
+ * @brief Boundary Band Cut: each boundary of a segmented surface re-cut within a band around it by a minimum cut that
+ * prefers short, concave ways (Katz and Tal 2003).
  *
  * Input: a surface with a cell array of integer labels >= 0 (selected with
  * SetInputArrayToProcess(0, ...); default "Segment"): the output of any segmentation filter, or a
@@ -58,8 +59,8 @@ protected:
   vtkBoundaryBandCut();
   ~vtkBoundaryBandCut() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double BoundaryBand = 0.4;
   double ConvexWeight = 0.1;

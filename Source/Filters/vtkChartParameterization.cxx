@@ -1,10 +1,11 @@
-// vtkChartParameterization: reads the chart labels, runs kerf::parameterizeCharts, writes the cut surface and its layout.
+// vtkChartParameterization: reads the chart labels, runs kerf::parameterizeCharts, writes the cut surface and its
+// layout.
 #include "vtkChartParameterization.h"
 
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 #include "Parameterization/ChartParameterization.h"
 
@@ -61,7 +62,8 @@ void writeSurface(const kerf::ChartParameterizationResult& result, const kerf::S
     const int original = result.split.originalPoint[static_cast<std::size_t>(v)];
     output->GetPointData()->CopyData(inputPoints, original, v);
     const kerf::Vector2& texture = result.uv[static_cast<std::size_t>(v)];
-    uv->SetTypedTuple(v, std::array<float, 2>{ { static_cast<float>(texture.x()), static_cast<float>(texture.y()) } }.data());
+    uv->SetTypedTuple(
+      v, std::array<float, 2>{ { static_cast<float>(texture.x()), static_cast<float>(texture.y()) } }.data());
     originalIds->SetValue(v, original);
   }
   output->SetPoints(points);
@@ -167,7 +169,8 @@ vtkChartParameterization::~vtkChartParameterization()
   this->SetTextureCoordinatesName(nullptr);
 }
 
-int vtkChartParameterization::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkChartParameterization::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot parameterize the charts", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -177,8 +180,8 @@ int vtkChartParameterization::RequestData(vtkInformation*, vtkInformationVector*
     kerf::MeshRequirements requirements;
     requirements.allowZeroAreaFaces = false;
     kerf::LoadSurface(this->State->surface, input, requirements);
-    const std::vector<int> labels = kerf::ReadTriangleLabels(this, 0,
-      this->State->surface, input->GetNumberOfCells(), "the surface's chart labels");
+    const std::vector<int> labels =
+      kerf::ReadTriangleLabels(this, 0, this->State->surface, input->GetNumberOfCells(), "the surface's chart labels");
 
     kerf::ChartParameterizationOptions options;
     options.method = this->Method == LINABF ? kerf::ChartMethod::LinABF : kerf::ChartMethod::LSCM;
@@ -204,5 +207,6 @@ void vtkChartParameterization::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CutToDisks: " << this->CutToDisks << "\n";
   os << indent << "MaximumSeams: " << this->MaximumSeams << "\n";
   os << indent << "SeamStretchTarget: " << this->SeamStretchTarget << "\n";
-  os << indent << "TextureCoordinatesName: " << (this->TextureCoordinatesName ? this->TextureCoordinatesName : "(none)") << "\n";
+  os << indent << "TextureCoordinatesName: " << (this->TextureCoordinatesName ? this->TextureCoordinatesName : "(none)")
+     << "\n";
 }

@@ -107,8 +107,8 @@ protected:
   vtkChartParameterization();
   ~vtkChartParameterization() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int Method = LSCM;
   double Margin = 0.01;

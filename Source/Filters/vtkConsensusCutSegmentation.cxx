@@ -1,11 +1,11 @@
 // vtkConsensusCutSegmentation: converts and validates the surface, runs the Core segmentation, writes the labels.
 #include "vtkConsensusCutSegmentation.h"
 
-#include "Segmentation/ConsensusCutSegmentation.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
+#include "Segmentation/ConsensusCutSegmentation.h"
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>

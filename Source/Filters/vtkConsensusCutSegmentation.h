@@ -1,4 +1,5 @@
-// vtkConsensusCutSegmentation: Automatic segmentation into k parts by the cuts many concavity-aware harmonic fields agree on.
+// vtkConsensusCutSegmentation: Automatic segmentation into k parts by the cuts many concavity-aware harmonic fields
+// agree on.
 /**
  * @class vtkConsensusCutSegmentation
  * @brief Consensus Cut Segmentation: Automatic segmentation into k parts by the cuts many
@@ -78,8 +79,8 @@ protected:
   vtkConsensusCutSegmentation();
   ~vtkConsensusCutSegmentation() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int SegmentCount = 6;
   int ExtraFeaturePoints = 8;

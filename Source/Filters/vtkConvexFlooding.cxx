@@ -1,12 +1,12 @@
 // vtkConvexFlooding: converts and validates the surface, runs the Core segmentation, writes the labels.
 #include "vtkConvexFlooding.h"
 
+#include "KerfFilterBorder.h"
+#include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
+#include "KerfSurfaceInput.h"
 #include "Segmentation/ConvexFlooding.h"
 #include "Segmentation/FaceGraph.h"
-#include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
-#include "KerfOutputArrays.h"
-#include "KerfSurfaceInput.h"
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>

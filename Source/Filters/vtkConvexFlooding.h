@@ -61,8 +61,8 @@ protected:
   vtkConvexFlooding();
   ~vtkConvexFlooding() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double AngleTolerance = 0.1;
   double MinimumAreaFraction = 0.01;

@@ -1,12 +1,13 @@
-// vtkCurveExport: the curves placed on the surface, exported by kerf::exportCurves, the mesh and its cut edges written out.
+// vtkCurveExport: the curves placed on the surface, exported by kerf::exportCurves, the mesh and its cut edges written
+// out.
 #include "vtkCurveExport.h"
 
 #include "Error.h"
 #include "Export/CurveExport.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/SplitAlongFaceLabels.h"
 #include "Session/Surface.h"
@@ -46,8 +47,8 @@ double meanEdgeLength(const kerf::TriangleMesh& mesh)
 
 // Output 0: the exported mesh, with the input's point data (interpolated at new vertices) and
 // cell data (from each triangle's input cell).
-void writeSurface(const kerf::CurveExportResult& result, const kerf::SurfaceInput& surface, vtkPolyData* input,
-  vtkPolyData* output)
+void writeSurface(
+  const kerf::CurveExportResult& result, const kerf::SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output)
 {
   const kerf::TriangleMesh& original = surface.Mesh();
   const kerf::TriangleMesh& mesh = kerf::exportedMesh(result, original);

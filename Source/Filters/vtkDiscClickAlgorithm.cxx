@@ -56,7 +56,9 @@ void vtkDiscClickAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Radius: " << this->Radius << "\n";
   os << indent << "AbsoluteRadius: " << this->AbsoluteRadius << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
-  os << indent << "ClickRadiusArrayName: " << (this->ClickRadiusArrayName ? this->ClickRadiusArrayName : "(none)") << "\n";
+  os << indent << "ClickRadiusArrayName: " << (this->ClickRadiusArrayName ? this->ClickRadiusArrayName : "(none)")
+     << "\n";
   os << indent << "DrawnDiscs: " << this->DrawnDiscs->Count() << "\n";
-  os << indent << "ClickSubtractArrayName: " << (this->ClickSubtractArrayName ? this->ClickSubtractArrayName : "(none)") << "\n";
+  os << indent << "ClickSubtractArrayName: " << (this->ClickSubtractArrayName ? this->ClickSubtractArrayName : "(none)")
+     << "\n";
 }

@@ -1,14 +1,15 @@
-// vtkEasyMeshCut: labelled strokes of input 1 grown over the surface under the isophotic metric, boundaries refined as snakes (kerf::easyMeshCut).
+// vtkEasyMeshCut: labelled strokes of input 1 grown over the surface under the isophotic metric, boundaries refined as
+// snakes (kerf::easyMeshCut).
 #include "vtkEasyMeshCut.h"
 
 #include "Error.h"
+#include "KerfDrawnInput.h"
 #include "KerfEasyMeshCutting.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
-#include "KerfPanelPoints.h"
 #include "KerfOutputArrays.h"
-#include "KerfDrawnInput.h"
+#include "KerfPanelPoints.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 #include "Segmentation/EasyMeshCut.h"
 
@@ -79,9 +80,9 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
     vtkPolyData* overrideInput = vtkPolyData::GetData(inputVector[2], 0);
-    const kerf::PanelLabelledStrokes strokes = kerf::ReadGrowingStrokes(vtkPolyData::GetData(inputVector[1], 0),
-      this->StrokeLabelArrayName, *this->DrawnStrokes, { { 1, &this->State->foreground }, { 0, &this->State->background } },
-      surface.GetSurface());
+    const kerf::PanelLabelledStrokes strokes =
+      kerf::ReadGrowingStrokes(vtkPolyData::GetData(inputVector[1], 0), this->StrokeLabelArrayName, *this->DrawnStrokes,
+        { { 1, &this->State->foreground }, { 0, &this->State->background } }, surface.GetSurface());
 
     kerf::EasyMeshCutOptions options;
     options.growing = kerf::ReadGrowingOptions(this, surface.Mesh().boundingBoxDiagonal());
@@ -91,7 +92,8 @@ int vtkEasyMeshCut::RequestData(vtkInformation*, vtkInformationVector** inputVec
     options.overrides = overrideInput ? kerf::ReadPolylines(overrideInput, "the override strokes") : strokes.overrides;
     if (!options.overrides.empty())
     {
-      options.overrideRadius = kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
+      options.overrideRadius =
+        kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
     }
     this->UpdateProgress(0.1);
     const kerf::EasyMeshCutResult result = kerf::easyMeshCut(surface.SharedSurface(), strokes.strokes, options);

@@ -79,8 +79,8 @@ protected:
   vtkEasyMeshCut();
   ~vtkEasyMeshCut() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   bool Refine = true;
 

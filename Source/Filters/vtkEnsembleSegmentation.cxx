@@ -1,11 +1,11 @@
 // vtkEnsembleSegmentation: converts and validates the surface, runs the Core ensemble, writes the labels.
 #include "vtkEnsembleSegmentation.h"
 
-#include "Segmentation/EnsembleSegmentation.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
+#include "Segmentation/EnsembleSegmentation.h"
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>

@@ -114,8 +114,8 @@ protected:
   vtkEnsembleSegmentation();
   ~vtkEnsembleSegmentation() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int SegmentCount = 6;
   double ConsensusCutsWeight = 1.0;

@@ -1,11 +1,12 @@
-// vtkGeodesicDisc: clicks placed on the surface, their geodesic discs united and subtracted through the Core, region and distance out.
+// vtkGeodesicDisc: clicks placed on the surface, their geodesic discs united and subtracted through the Core, region
+// and distance out.
 #include "vtkGeodesicDisc.h"
 
 #include "Geodesic/RoiScissor.h"
 #include "KerfDrawnInput.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>
@@ -50,11 +51,11 @@ int vtkGeodesicDisc::RequestData(
     kerf::CheckDifferentNames(this->RegionArrayName, this->DistanceArrayName, "point arrays");
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::ClickDistances& distances = this->State->surface.SessionFor(this->State->clickDistances);
-    const kerf::DiscClicks clicks = kerf::ReadDiscClicks(distances.surface(),
-      this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
+    const kerf::DiscClicks clicks =
+      kerf::ReadDiscClicks(distances.surface(), this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
     this->UpdateProgress(0.1);
-    const kerf::GeodesicDiscs discs = kerf::geodesicDiscs(distances.surface(), clicks.added, clicks.subtracted,
-      clicks.tolerance, kerf::HeatGeodesicOptions(), &distances);
+    const kerf::GeodesicDiscs discs = kerf::geodesicDiscs(
+      distances.surface(), clicks.added, clicks.subtracted, clicks.tolerance, kerf::HeatGeodesicOptions(), &distances);
     this->UpdateProgress(0.9);
 
     const kerf::SurfaceInput& surface = this->State->surface;
@@ -62,7 +63,8 @@ int vtkGeodesicDisc::RequestData(
     output->GetPointData()->AddArray(kerf::MakeArray(this->RegionArrayName,
       surface.ToInputPoints(std::vector<unsigned char>(discs.vertices.begin(), discs.vertices.end()))));
     output->GetPointData()->SetActiveScalars(this->RegionArrayName);
-    output->GetPointData()->AddArray(kerf::MakeArray(this->DistanceArrayName, surface.ToInputPoints(discs.nearestAdded)));
+    output->GetPointData()->AddArray(
+      kerf::MakeArray(this->DistanceArrayName, surface.ToInputPoints(discs.nearestAdded)));
     output->GetCellData()->AddArray(
       kerf::MakeArray(this->RegionArrayName, std::vector<unsigned char>(discs.faces.begin(), discs.faces.end())));
     kerf::WriteSegmentSizes(std::vector<int>(discs.faces.begin(), discs.faces.end()), output);

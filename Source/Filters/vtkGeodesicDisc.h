@@ -5,8 +5,8 @@
  *
  * Input 0: the surface. Input 1 (optional): the clicks, each adding a geodesic disc or, with a
  * non-zero value in the point array ClickSubtractArrayName, subtracting it (ROI Scissor, section
- * 5.2), each with the radius Radius or its own; without input 1, ClickPoint. The clicks' parameters and the rules that place
- * them on the surface are vtkDiscClickAlgorithm's.
+ * 5.2), each with the radius Radius or its own; without input 1, ClickPoint. The clicks' parameters and the rules that
+ * place them on the surface are vtkDiscClickAlgorithm's.
  *
  * The disc of a click s is C(r) = {i | d_g(i, s) < r} with d_g by the heat method (the
  * factorization cached on the surface); the region is the union of the added discs minus the
@@ -16,8 +16,8 @@
  * Output: the surface with the point array "GeodesicDisc" (1 inside, 0 outside; the name is a
  * parameter, its active scalars), the cell array of the same name (the same rule at each face's
  * centroid, its distances averaged), the point array "ClickDistance" (the geodesic distance to
- * the nearest adding click; +infinity off its component) and the field data SegmentSizes (the faces outside and inside), RegionArea,
- * RegionAreaFraction (of the whole surface) and ClickDistanceFields (the distance fields this
+ * the nearest adding click; +infinity off its component) and the field data SegmentSizes (the faces outside and
+ * inside), RegionArea, RegionAreaFraction (of the whole surface) and ClickDistanceFields (the distance fields this
  * filter has computed for its clicks on this surface, kept ones not counted again).
  *
  * Errors (vtkErrorMacro, return 0): surfaces refused by validation, a click of input 1 farther
@@ -58,8 +58,8 @@ protected:
   vtkGeodesicDisc();
   ~vtkGeodesicDisc() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   char* RegionArrayName = nullptr;
   char* DistanceArrayName = nullptr;

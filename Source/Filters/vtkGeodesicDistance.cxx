@@ -1,12 +1,13 @@
-// vtkGeodesicDistance: sources placed on the surface, the heat method or Vector Dijkstra through the Core, one array out.
+// vtkGeodesicDistance: sources placed on the surface, the heat method or Vector Dijkstra through the Core, one array
+// out.
 #include "vtkGeodesicDistance.h"
 
 #include "Error.h"
 #include "Geodesic/GeodesicPaths.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfPanelPoints.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>
@@ -16,7 +17,6 @@
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPolyData.h>
-
 
 vtkStandardNewMacro(vtkGeodesicDistance);
 
@@ -98,8 +98,8 @@ int vtkGeodesicDistance::RequestData(
 void vtkGeodesicDistance::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "SourcePoint: " << this->SourcePoint[0] << " " << this->SourcePoint[1] << " "
-     << this->SourcePoint[2] << "\n";
+  os << indent << "SourcePoint: " << this->SourcePoint[0] << " " << this->SourcePoint[1] << " " << this->SourcePoint[2]
+     << "\n";
   os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "Depth: " << this->Depth << "\n";
   os << indent << "TimeFactor: " << this->TimeFactor << "\n";

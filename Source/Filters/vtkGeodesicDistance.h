@@ -4,10 +4,10 @@
  * heat method or, under an anisotropic metric, by Short-Term Vector Dijkstra.
  *
  * Input 0: the surface. Input 1 (optional): the sources, a vtkPointSet whose points are each
- * moved to the nearest surface point (refused beyond MaximumProjectionDistance); when it is a vtkPolyData with lines, its polylines are
- * sources too (placed on the surface as kerf::placeCurveOnSurface does). Without input 1 the
- * source is SourcePoint, moved to the nearest surface point whatever its distance (ParaView's
- * handle starts at the input's bounds).
+ * moved to the nearest surface point (refused beyond MaximumProjectionDistance); when it is a vtkPolyData with lines,
+ * its polylines are sources too (placed on the surface as kerf::placeCurveOnSurface does). Without input 1 the source
+ * is SourcePoint, moved to the nearest surface point whatever its distance (ParaView's handle starts at the input's
+ * bounds).
  *
  * With Gamma = 0 the distance is isotropic, by the heat method (Crane et al. 2013) on the
  * intrinsic Delaunay triangulation; its factorizations are cached on the surface, so a new source
@@ -96,8 +96,8 @@ protected:
   ~vtkGeodesicDistance() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double SourcePoint[3] = { 0.0, 0.0, 0.0 };
   double Gamma = 0.0;

@@ -1,13 +1,14 @@
-// vtkGeodesicPolyline: the points placed on the surface, kerf::geodesicPolyline through them, the polyline and its arrays out.
+// vtkGeodesicPolyline: the points placed on the surface, kerf::geodesicPolyline through them, the polyline and its
+// arrays out.
 #include "vtkGeodesicPolyline.h"
 
 #include "Error.h"
 #include "Geodesic/GeodesicPaths.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
-#include "KerfPanelPoints.h"
 #include "KerfOutputArrays.h"
+#include "KerfPanelPoints.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>
@@ -134,7 +135,8 @@ int vtkGeodesicPolyline::RequestData(
     output->GetPointData()->SetActiveScalars("ArcLength");
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("TotalLength", path.path.length));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SelfCrossings", static_cast<double>(path.selfCrossings)));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("LegsTraced", static_cast<double>(this->State->legs.computed())));
+    output->GetFieldData()->AddArray(
+      kerf::MakeFieldValue("LegsTraced", static_cast<double>(this->State->legs.computed())));
   });
 }
 

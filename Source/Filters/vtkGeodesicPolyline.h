@@ -112,8 +112,8 @@ protected:
   ~vtkGeodesicPolyline() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int Metric = ISOTROPIC;
   double Gamma = 1.0;

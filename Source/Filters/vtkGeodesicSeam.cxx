@@ -1,13 +1,14 @@
-// vtkGeodesicSeam: the cut lines and the target placed on the surface, the seam traced through the surface's SeamSession.
+// vtkGeodesicSeam: the cut lines and the target placed on the surface, the seam traced through the surface's
+// SeamSession.
 #include "vtkGeodesicSeam.h"
 
 #include "Error.h"
 #include "Geodesic/Seams.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
-#include "KerfPanelPoints.h"
 #include "KerfOutputArrays.h"
+#include "KerfPanelPoints.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkDoubleArray.h>
@@ -17,7 +18,6 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
-
 
 vtkStandardNewMacro(vtkGeodesicSeam);
 
@@ -105,26 +105,28 @@ int vtkGeodesicSeam::RequestData(
     this->UpdateProgress(0.8);
     const kerf::SurfacePath seam = this->UseAnchor
       ? field.anchoredSeam(target,
-          kerf::PanelPointOnSurface(
-            surface, kerf::Vector3(this->AnchorPoint[0], this->AnchorPoint[1], this->AnchorPoint[2]), "the anchor point"))
+          kerf::PanelPointOnSurface(surface,
+            kerf::Vector3(this->AnchorPoint[0], this->AnchorPoint[1], this->AnchorPoint[2]), "the anchor point"))
       : field.seam(target);
 
     this->State->surface.MakeOutput(input, output);
-    output->GetPointData()->AddArray(kerf::MakeArray(this->ArrayName, this->State->surface.ToInputPoints(field.distance())));
+    output->GetPointData()->AddArray(
+      kerf::MakeArray(this->ArrayName, this->State->surface.ToInputPoints(field.distance())));
     output->GetPointData()->SetActiveScalars(this->ArrayName);
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("SeamWork", reused ? "regrowth" : "field"));
-    kerf::WritePolylines({ { &seam.curve.points, seam.curve.closed, seam.length } }, vtkPolyData::GetData(outputVector, 1));
+    kerf::WritePolylines(
+      { { &seam.curve.points, seam.curve.closed, seam.length } }, vtkPolyData::GetData(outputVector, 1));
   });
 }
 
 void vtkGeodesicSeam::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "TargetPoint: " << this->TargetPoint[0] << " " << this->TargetPoint[1] << " "
-     << this->TargetPoint[2] << "\n";
+  os << indent << "TargetPoint: " << this->TargetPoint[0] << " " << this->TargetPoint[1] << " " << this->TargetPoint[2]
+     << "\n";
   os << indent << "UseAnchor: " << this->UseAnchor << "\n";
-  os << indent << "AnchorPoint: " << this->AnchorPoint[0] << " " << this->AnchorPoint[1] << " "
-     << this->AnchorPoint[2] << "\n";
+  os << indent << "AnchorPoint: " << this->AnchorPoint[0] << " " << this->AnchorPoint[1] << " " << this->AnchorPoint[2]
+     << "\n";
   os << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "Depth: " << this->Depth << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";

@@ -104,8 +104,8 @@ protected:
   ~vtkGeodesicSeam() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double TargetPoint[3] = { 0.0, 0.0, 0.0 };
   bool UseAnchor = false;

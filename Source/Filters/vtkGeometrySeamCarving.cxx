@@ -1,4 +1,5 @@
-// vtkGeometrySeamCarving: reads the preprocessed surface and the handle transform, runs a kerf::GeometrySeamCarving session, writes the deformed surface.
+// vtkGeometrySeamCarving: reads the preprocessed surface and the handle transform, runs a kerf::GeometrySeamCarving
+// session, writes the deformed surface.
 #include "vtkGeometrySeamCarving.h"
 
 #include "Error.h"
@@ -109,7 +110,8 @@ void writeCarving(const kerf::SeamCarvingResult& result, const std::vector<doubl
     points->SetPoint(static_cast<vtkIdType>(i), result.points[i].data());
   }
   vtkNew<vtkCellArray> triangles;
-  triangles->AllocateExact(static_cast<vtkIdType>(result.triangles.size()), 3 * static_cast<vtkIdType>(result.triangles.size()));
+  triangles->AllocateExact(
+    static_cast<vtkIdType>(result.triangles.size()), 3 * static_cast<vtkIdType>(result.triangles.size()));
   for (const kerf::Triangle& t : result.triangles)
   {
     const vtkIdType ids[3] = { t[0], t[1], t[2] };
@@ -129,8 +131,10 @@ void writeCarving(const kerf::SeamCarvingResult& result, const std::vector<doubl
   output->GetCellData()->SetActiveScalars("RingSeam");
   output->GetFieldData()->AddArray(kerf::MakeIntArray("SectorState", result.sectorState));
   output->GetFieldData()->AddArray(kerf::MakeFieldValue("SplitSegments", static_cast<double>(result.splitSegments)));
-  output->GetFieldData()->AddArray(kerf::MakeFieldValue("CollapsedSegments", static_cast<double>(result.collapsedSegments)));
-  output->GetFieldData()->AddArray(kerf::MakeFieldValue("SkippedOperations", static_cast<double>(result.skippedOperations)));
+  output->GetFieldData()->AddArray(
+    kerf::MakeFieldValue("CollapsedSegments", static_cast<double>(result.collapsedSegments)));
+  output->GetFieldData()->AddArray(
+    kerf::MakeFieldValue("SkippedOperations", static_cast<double>(result.skippedOperations)));
 }
 } // namespace
 
@@ -165,9 +169,12 @@ int vtkGeometrySeamCarving::RequestData(
     const vtkIdType cells = input->GetNumberOfCells();
     kerf::SeamCarvingInput in;
     in.mesh = &mesh;
-    in.region = fromGeometrySeams("region", [&] { return kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface"); });
-    in.faceRing = fromGeometrySeams("ring seam", [&] { return kerf::ReadTriangleLabels(this, 1, surface, cells, "the surface"); });
-    in.faceSector = fromGeometrySeams("sector", [&] { return kerf::ReadTriangleLabels(this, 2, surface, cells, "the surface"); });
+    in.region = fromGeometrySeams(
+      "region", [&] { return kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface"); });
+    in.faceRing =
+      fromGeometrySeams("ring seam", [&] { return kerf::ReadTriangleLabels(this, 1, surface, cells, "the surface"); });
+    in.faceSector =
+      fromGeometrySeams("sector", [&] { return kerf::ReadTriangleLabels(this, 2, surface, cells, "the surface"); });
     in.faceCost = fromGeometrySeams("edge cost", [&] { return kerf::ReadInputArray(this, 3, cells, "the surface"); });
     in.normalConeAngle = surface.GetSurface().descriptors().normalConeAngle;
 
@@ -175,7 +182,8 @@ int vtkGeometrySeamCarving::RequestData(
     options.stiffnessScale = this->StiffnessScale;
     options.stiffnessEpsilon = this->StiffnessEpsilon;
     options.plastic = this->Plastic;
-    const std::array<double, 3> optionKey{ { options.stiffnessScale, options.stiffnessEpsilon, options.plastic ? 1.0 : 0.0 } };
+    const std::array<double, 3> optionKey{ { options.stiffnessScale, options.stiffnessEpsilon,
+      options.plastic ? 1.0 : 0.0 } };
     std::vector<double> arrayKey = in.region;
     arrayKey.insert(arrayKey.end(), in.faceRing.begin(), in.faceRing.end());
     arrayKey.insert(arrayKey.end(), in.faceSector.begin(), in.faceSector.end());

@@ -78,8 +78,8 @@ protected:
   vtkGeometrySeamCarving();
   ~vtkGeometrySeamCarving() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double StiffnessScale = 10.0;
   double StiffnessEpsilon = 0.1;

@@ -1,10 +1,11 @@
-// vtkGeometrySeams: reads the regions, runs kerf::computeGeometrySeams, writes the field, sectors, rings, costs and contours.
+// vtkGeometrySeams: reads the regions, runs kerf::computeGeometrySeams, writes the field, sectors, rings, costs and
+// contours.
 #include "vtkGeometrySeams.h"
 
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 #include "SeamCarving/GeometrySeams.h"
 
@@ -53,7 +54,8 @@ vtkPolyData* vtkGeometrySeams::GetContours()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int vtkGeometrySeams::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkGeometrySeams::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot compute geometry seams", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -67,8 +69,7 @@ int vtkGeometrySeams::RequestData(vtkInformation*, vtkInformationVector** inputV
     requirements.consistentOrientation = true;
     kerf::SurfaceInput& surface = this->State->surface;
     kerf::LoadSurface(surface, input, requirements);
-    const std::vector<double> region =
-      kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
+    const std::vector<double> region = kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
 
     kerf::GeometrySeamsOptions options;
     options.ringCount = this->NumberOfRings;

@@ -102,8 +102,8 @@ protected:
   vtkGeometrySeams();
   ~vtkGeometrySeams() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int NumberOfRings = 15;
   int NumberOfIsoContours = 10;

@@ -1,17 +1,17 @@
 // vtkHarmonicField: reads the constraints, solves with the surface's HarmonicCutSession, writes the field.
 #include "vtkHarmonicField.h"
 
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
+#include "Numerics/FieldGradient.h"
 
 #include <vtkCellData.h>
-#include <vtkDoubleArray.h>
 #include <vtkDataObject.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -74,7 +74,8 @@ int vtkHarmonicField::RequestData(
     vtkPointSet* constraintPoints = vtkPointSet::GetData(inputVector[1], 0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
     kerf::CheckOutputNames({ this->FieldArrayName, this->GradientArrayName, this->GradientMagnitudeArrayName });
-    kerf::CheckDifferentNames(this->GradientArrayName, this->GradientMagnitudeArrayName, "the gradient and its magnitude");
+    kerf::CheckDifferentNames(
+      this->GradientArrayName, this->GradientMagnitudeArrayName, "the gradient and its magnitude");
 
     kerf::MeshRequirements requirements;
     requirements.manifold = true;
@@ -87,8 +88,7 @@ int vtkHarmonicField::RequestData(
     kerf::FieldConstraints constraints;
     if (this->UseHardValues)
     {
-      const std::vector<double> values =
-        kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
+      const std::vector<double> values = kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
       std::vector<int> vertices(values.size());
       for (std::size_t i = 0; i < values.size(); ++i)
       {
@@ -100,10 +100,11 @@ int vtkHarmonicField::RequestData(
     {
       kerf::ConstraintPlacement placement;
       placement.hard = this->HardConstraints;
-      placement.maximumDistance = kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
+      placement.maximumDistance =
+        kerf::RelativeDistance(this->MaximumProjectionDistance, diagonal, "MaximumProjectionDistance");
       session.projectConstraints(kerf::ReadPoints(constraintPoints),
-        kerf::ReadNamedPointArray(constraintPoints, this->ConstraintValueArrayName, "the constraint points"),
-        placement, constraints);
+        kerf::ReadNamedPointArray(constraintPoints, this->ConstraintValueArrayName, "the constraint points"), placement,
+        constraints);
     }
     this->UpdateProgress(0.3);
 
@@ -118,7 +119,8 @@ int vtkHarmonicField::RequestData(
 
     const std::vector<kerf::Vector3> gradients = kerf::computeFaceGradients(session.mesh(), solution.field);
     std::vector<double> magnitudes(gradients.size());
-    std::transform(gradients.begin(), gradients.end(), magnitudes.begin(), [](const kerf::Vector3& g) { return g.norm(); });
+    std::transform(
+      gradients.begin(), gradients.end(), magnitudes.begin(), [](const kerf::Vector3& g) { return g.norm(); });
     kerf::CheckFinite({ &solution.field, &magnitudes }, solution.relativeResidual,
       "the field or its gradient overflows (hard or constraint values too large for double precision)");
     this->State->surface.MakeOutput(input, output);
@@ -140,8 +142,9 @@ void vtkHarmonicField::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HardConstraints: " << this->HardConstraints << "\n";
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "UseHardValues: " << this->UseHardValues << "\n";
-  os << indent << "ConstraintValueArrayName: "
-     << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "(none)") << "\n";
+  os << indent
+     << "ConstraintValueArrayName: " << (this->ConstraintValueArrayName ? this->ConstraintValueArrayName : "(none)")
+     << "\n";
   os << indent << "FieldArrayName: " << (this->FieldArrayName ? this->FieldArrayName : "(none)") << "\n";
   os << indent << "GradientArrayName: " << (this->GradientArrayName ? this->GradientArrayName : "(none)") << "\n";
   os << indent << "GradientMagnitudeArrayName: "

@@ -167,8 +167,8 @@ protected:
   ~vtkHarmonicField() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int Weighting = COTANGENT;
   int Formulation = AUTOMATIC;

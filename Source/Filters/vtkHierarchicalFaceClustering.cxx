@@ -1,12 +1,12 @@
 // vtkHierarchicalFaceClustering: converts and validates the surface, runs the Core segmentation, writes the labels.
 #include "vtkHierarchicalFaceClustering.h"
 
-#include "Segmentation/HierarchicalFaceClustering.h"
 #include "Error.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
+#include "Segmentation/HierarchicalFaceClustering.h"
 
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
@@ -66,8 +66,7 @@ int vtkHierarchicalFaceClustering::RequestData(
         fieldData->AddArray(kerf::MakeIntArray("MergeFirst", first));
         fieldData->AddArray(kerf::MakeIntArray("MergeSecond", second));
         fieldData->AddArray(kerf::MakeArray("MergeCost", hierarchy.costs));
-        fieldData->AddArray(
-          kerf::MakeFieldValue("Work", built ? std::string("hierarchy") : std::string("relabel")));
+        fieldData->AddArray(kerf::MakeFieldValue("Work", built ? std::string("hierarchy") : std::string("relabel")));
         return this->SegmentCount > 0
           ? kerf::cutHierarchyAtCount(hierarchy, this->SegmentCount)
           : kerf::cutHierarchyAtError(hierarchy, kerf::Finite(this->MaximumError, "MaximumError"));

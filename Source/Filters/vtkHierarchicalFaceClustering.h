@@ -1,4 +1,5 @@
-// vtkHierarchicalFaceClustering: Garland et al. 2001 face clusters by dual-edge contraction, cut at k clusters or an error.
+// vtkHierarchicalFaceClustering: Garland et al. 2001 face clusters by dual-edge contraction, cut at k clusters or an
+// error.
 /**
  * @class vtkHierarchicalFaceClustering
  * @brief Hierarchical Face Clustering: Garland et al. 2001 face clusters by dual-edge contraction,
@@ -82,8 +83,8 @@ protected:
   vtkHierarchicalFaceClustering();
   ~vtkHierarchicalFaceClustering() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int SegmentCount = 6;
   double MaximumError = 0.1;

@@ -1,13 +1,13 @@
 // vtkIsolineCut: reads the field and the stroke, chooses the cut with the surface's session, writes it.
 #include "vtkIsolineCut.h"
 
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
+#include "Numerics/FieldGradient.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -99,8 +99,7 @@ void writeCandidates(const kerf::CutResult& cut, vtkTable* table)
 }
 } // namespace
 
-int vtkIsolineCut::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkIsolineCut::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot extract isolines", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -117,8 +116,7 @@ int vtkIsolineCut::RequestData(
     {
       options.stroke = kerf::ReadPoints(stroke);
     }
-    const std::vector<double> field =
-      kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
+    const std::vector<double> field = kerf::ReadInputArray(this, 0, input->GetNumberOfPoints(), "the surface");
     const kerf::CutResult cut = session.chooseCut(field, options);
     this->UpdateProgress(0.8);
 

@@ -60,8 +60,8 @@ protected:
   vtkKMeansSegmentation();
   ~vtkKMeansSegmentation() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int SegmentCount = 6;
   double PhysicalWeight = 0.2;

@@ -1,11 +1,12 @@
-// vtkROIScissor: clicks placed on the surface, ROI Scissor through the Core with the surface's click distances kept, labels and boundary out.
+// vtkROIScissor: clicks placed on the surface, ROI Scissor through the Core with the surface's click distances kept,
+// labels and boundary out.
 #include "vtkROIScissor.h"
 
 #include "Geodesic/RoiScissor.h"
 #include "KerfDrawnInput.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>
@@ -44,8 +45,7 @@ vtkPolyData* vtkROIScissor::GetBoundary()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int vtkROIScissor::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkROIScissor::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot select the region", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -53,8 +53,8 @@ int vtkROIScissor::RequestData(
     kerf::CheckOutputNames({ this->RegionArrayName });
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     kerf::ClickDistances& distances = this->State->surface.SessionFor(this->State->clickDistances);
-    const kerf::DiscClicks clicks = kerf::ReadDiscClicks(distances.surface(),
-      this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
+    const kerf::DiscClicks clicks =
+      kerf::ReadDiscClicks(distances.surface(), this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
     kerf::RoiScissorOptions options;
     options.innerFraction = kerf::Finite(this->InnerFraction, "InnerFraction");
     options.isolineCount = this->IsolineCount;
@@ -62,7 +62,8 @@ int vtkROIScissor::RequestData(
     options.paths.metric.gamma = kerf::Finite(this->Gamma, "Gamma");
     options.clickTolerance = clicks.tolerance;
     this->UpdateProgress(0.1);
-    const kerf::RoiScissorResult result = kerf::roiScissor(distances.surface(), clicks.added, clicks.subtracted, options, &distances);
+    const kerf::RoiScissorResult result =
+      kerf::roiScissor(distances.surface(), clicks.added, clicks.subtracted, options, &distances);
     this->UpdateProgress(0.9);
 
     const kerf::SurfaceInput& surface = this->State->surface;
@@ -71,12 +72,13 @@ int vtkROIScissor::RequestData(
     kerf::WriteSegmentSizes(result.faceLabels, output);
     output->GetCellData()->SetActiveScalars(this->RegionArrayName);
     output->GetPointData()->AddArray(kerf::MakeArray("RoiField", surface.ToInputPoints(result.field)));
-    output->GetPointData()->AddArray(kerf::MakeArray("RoiCandidate", surface.ToInputPoints(
-      std::vector<unsigned char>(result.candidate.begin(), result.candidate.end()))));
+    output->GetPointData()->AddArray(kerf::MakeArray("RoiCandidate",
+      surface.ToInputPoints(std::vector<unsigned char>(result.candidate.begin(), result.candidate.end()))));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("IsoValue", result.isovalue));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("Score", result.score));
     output->GetFieldData()->AddArray(kerf::MakeFieldValue("BoundaryEncloses", result.boundaryEncloses ? 1.0 : 0.0));
-    output->GetFieldData()->AddArray(kerf::MakeFieldValue("ClickDistanceFields", static_cast<double>(distances.computations())));
+    output->GetFieldData()->AddArray(
+      kerf::MakeFieldValue("ClickDistanceFields", static_cast<double>(distances.computations())));
 
     std::vector<kerf::PolylineToWrite> loops;
     std::vector<int> selfCrossings;

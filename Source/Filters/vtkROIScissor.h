@@ -5,8 +5,8 @@
  *
  * Input 0: the surface. Input 1 (optional): the clicks, each adding a geodesic disc or, with a
  * non-zero value in the point array ClickSubtractArrayName, subtracting it (ROI Scissor, section
- * 5.2), each with the radius Radius or its own; without input 1, ClickPoint. The clicks' parameters and the rules that place
- * them on the surface are vtkDiscClickAlgorithm's.
+ * 5.2), each with the radius Radius or its own; without input 1, ClickPoint. The clicks' parameters and the rules that
+ * place them on the surface are vtkDiscClickAlgorithm's.
  *
  * The candidate region is the union of the added clicks' geodesic discs minus the subtracted ones'
  * (of radius Radius unless the clicks give theirs) around the clicks
@@ -22,9 +22,9 @@
  * Output 0: the surface with the cell array "RoiRegion" (1 inside, 0 outside; the name is a
  * parameter, its active scalars), the point arrays "RoiField" (the harmonic field, NaN outside
  * the faces it was solved on) and "RoiCandidate" (1 inside the discs), and the field data
- * IsoValue and Score of the chosen isoline, SegmentSizes (the faces outside and inside) and ClickDistanceFields (the distance fields this
- * filter has computed for its clicks on this surface, kept ones not counted again). Output 1: the boundary as closed polylines with the
- * cell arrays Length (under the metric), Closed and SelfCrossings.
+ * IsoValue and Score of the chosen isoline, SegmentSizes (the faces outside and inside) and ClickDistanceFields (the
+ * distance fields this filter has computed for its clicks on this surface, kept ones not counted again). Output 1: the
+ * boundary as closed polylines with the cell arrays Length (under the metric), Closed and SelfCrossings.
  *
  * Errors (vtkErrorMacro, return 0): surfaces refused by validation, a click of input 1 farther
  * from the surface than MaximumProjectionDistance, clicks on several components, discs covering
@@ -85,8 +85,8 @@ protected:
   vtkROIScissor();
   ~vtkROIScissor() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double InnerFraction = 0.1;
   int IsolineCount = 50;

@@ -1,12 +1,13 @@
-// vtkRegionGrowing: labelled strokes of input 1 grown over the surface under the isophotic metric (kerf::easyMeshCut without refinement).
+// vtkRegionGrowing: labelled strokes of input 1 grown over the surface under the isophotic metric (kerf::easyMeshCut
+// without refinement).
 #include "vtkRegionGrowing.h"
 
 #include "Error.h"
+#include "KerfDrawnInput.h"
 #include "KerfEasyMeshCutting.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
-#include "KerfDrawnInput.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>
@@ -31,7 +32,8 @@ vtkRegionGrowing::vtkRegionGrowing()
 
 vtkRegionGrowing::~vtkRegionGrowing() = default;
 
-int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkRegionGrowing::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot grow regions from the strokes", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -39,8 +41,8 @@ int vtkRegionGrowing::RequestData(vtkInformation*, vtkInformationVector** inputV
     kerf::CheckOutputNames({ this->SegmentArrayName });
     kerf::LoadSurface(this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
-    const kerf::PanelLabelledStrokes strokes = kerf::ReadGrowingStrokes(
-      vtkPolyData::GetData(inputVector[1], 0), this->StrokeLabelArrayName, *this->DrawnStrokes, {}, surface.GetSurface());
+    const kerf::PanelLabelledStrokes strokes = kerf::ReadGrowingStrokes(vtkPolyData::GetData(inputVector[1], 0),
+      this->StrokeLabelArrayName, *this->DrawnStrokes, {}, surface.GetSurface());
     if (!strokes.overrides.empty())
     {
       throw kerf::Error("override strokes (label -1) edit the boundaries of Easy Mesh Cut and Snake Refinement; Region "

@@ -22,8 +22,8 @@
  * "IsophoticDistance" (the metric distance to the nearest stroke, -1 where none reaches) and, with
  * random walks, "Probability" (the probability of each point's label; where the cut gave a point
  * its second label, the larger of its two probabilities), field
- * data "UnreachableVertices" and "SegmentSizes" (the faces of each label). Output 1: the boundaries between labels along mesh edges, as
- * polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller label on
+ * data "UnreachableVertices" and "SegmentSizes" (the faces of each label). Output 1: the boundaries between labels
+ * along mesh edges, as polylines with the cell arrays Length, Closed, LeftLabel and RightLabel (the smaller label on
  * the left seen from outside).
  *
  * Errors (vtkErrorMacro, return 0): no stroke input, no line in it, a missing or malformed label
@@ -50,8 +50,8 @@ protected:
   vtkRegionGrowing();
   ~vtkRegionGrowing() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
 private:
   vtkRegionGrowing(const vtkRegionGrowing&) = delete;

@@ -1,8 +1,8 @@
 // vtkSegmentationMetrics: reads two label arrays, checks them, calls kerf::SegmentationEvaluator.
 #include "vtkSegmentationMetrics.h"
 
-#include "Evaluation/SegmentationMetrics.h"
 #include "Error.h"
+#include "Evaluation/SegmentationMetrics.h"
 #include "KerfFilterBorder.h"
 #include "KerfInputArrays.h"
 #include "KerfSurfaceInput.h"
@@ -44,8 +44,7 @@ bool sameMesh(vtkPolyData* a, vtkPolyData* b)
     double p[3], q[3];
     a->GetPoint(i, p);
     b->GetPoint(i, q);
-    if (std::abs(p[0] - q[0]) > tolerance || std::abs(p[1] - q[1]) > tolerance ||
-      std::abs(p[2] - q[2]) > tolerance)
+    if (std::abs(p[0] - q[0]) > tolerance || std::abs(p[1] - q[1]) > tolerance || std::abs(p[2] - q[2]) > tolerance)
     {
       return false;
     }
@@ -101,8 +100,8 @@ int vtkSegmentationMetrics::RequestData(
     {
       throw kerf::Error("the two inputs are different meshes (" + std::to_string(mesh->GetNumberOfPoints()) +
         " points, " + std::to_string(mesh->GetNumberOfCells()) + " cells against " +
-        std::to_string(reference->GetNumberOfPoints()) + " points, " +
-        std::to_string(reference->GetNumberOfCells()) + " cells, or points that differ)");
+        std::to_string(reference->GetNumberOfPoints()) + " points, " + std::to_string(reference->GetNumberOfCells()) +
+        " cells, or points that differ)");
     }
 
     // The metrics need no manifold: benchmark meshes may have any defect but NaN coordinates.

@@ -52,8 +52,8 @@ protected:
   ~vtkSegmentationMetrics() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
 private:
   vtkSegmentationMetrics(const vtkSegmentationMetrics&) = delete;

@@ -1,13 +1,14 @@
-// vtkSnakeRefinement: the boundaries of a per-triangle labelling refined as snakes and edited by override strokes (kerf::refineBoundaries).
+// vtkSnakeRefinement: the boundaries of a per-triangle labelling refined as snakes and edited by override strokes
+// (kerf::refineBoundaries).
 #include "vtkSnakeRefinement.h"
 
 #include "Error.h"
-#include "KerfEasyMeshCutting.h"
 #include "KerfDrawnInput.h"
+#include "KerfEasyMeshCutting.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>
@@ -52,12 +53,14 @@ int vtkSnakeRefinement::FillInputPortInformation(int port, vtkInformation* info)
   return 1;
 }
 
-int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSnakeRefinement::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot refine the boundaries", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    const kerf::InputLabels read = kerf::LoadLabelledSurface(this, this->State->surface, input, kerf::MeshRequirements());
+    const kerf::InputLabels read =
+      kerf::LoadLabelledSurface(this, this->State->surface, input, kerf::MeshRequirements());
     const kerf::SurfaceInput& surface = this->State->surface;
 
     kerf::EasyMeshCutOptions options;
@@ -76,7 +79,8 @@ int vtkSnakeRefinement::RequestData(vtkInformation*, vtkInformationVector** inpu
     }
     if (!options.overrides.empty())
     {
-      options.overrideRadius = kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
+      options.overrideRadius =
+        kerf::Finite(this->OverrideRadius, "OverrideRadius") * surface.Mesh().boundingBoxDiagonal();
     }
     this->UpdateProgress(0.1);
     const kerf::EasyMeshCutResult result = kerf::refineBoundaries(surface.SharedSurface(), read.labels, options);

@@ -1,6 +1,7 @@
 /**
  * @class vtkSnakeRefinement
- * @brief The boundaries of a segmented surface moved as snakes to where they are short, smooth and curved (Ji et al. 2006, section 5.1).
+ * @brief The boundaries of a segmented surface moved as snakes to where they are short, smooth and curved (Ji et al.
+ * 2006, section 5.1).
  *
  * Input 0: a surface with a cell array of integer labels >= -1 (selected with
  * SetInputArrayToProcess(0, ...); default "Segment"): the output of vtkRegionGrowing, or of any
@@ -61,8 +62,8 @@ protected:
   ~vtkSnakeRefinement() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double MaximumProjectionDistance = 0.05;
 

@@ -1,12 +1,12 @@
 // vtkSpectralSegmentation: converts and validates the surface, runs the Core segmentation, writes the labels.
 #include "vtkSpectralSegmentation.h"
 
-#include "Segmentation/SpectralSegmentation.h"
-#include "Segmentation/FaceGraph.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
+#include "Segmentation/FaceGraph.h"
+#include "Segmentation/SpectralSegmentation.h"
 
 #include <vtkFieldData.h>
 #include <vtkInformation.h>

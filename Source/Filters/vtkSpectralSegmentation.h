@@ -67,8 +67,8 @@ protected:
   vtkSpectralSegmentation();
   ~vtkSpectralSegmentation() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int SegmentCount = 6;
   double GeodesicWeight = 0.03;

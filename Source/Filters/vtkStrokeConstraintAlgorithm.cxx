@@ -1,4 +1,5 @@
-// vtkStrokeConstraintAlgorithm: the stroke and sampling parameters shared by the filters that place a harmonic cut's constraints along strokes.
+// vtkStrokeConstraintAlgorithm: the stroke and sampling parameters shared by the filters that place a harmonic cut's
+// constraints along strokes.
 #include "vtkStrokeConstraintAlgorithm.h"
 
 #include "KerfPanelPoints.h"

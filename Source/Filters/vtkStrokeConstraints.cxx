@@ -5,8 +5,8 @@
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfDrawnInput.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellArray.h>
@@ -52,7 +52,8 @@ int vtkStrokeConstraints::RequestData(
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
 
-    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(strokeInput, *this->DrawnStrokes, *this->StrokePoints, session.surface());
+    const std::vector<std::vector<kerf::Vector3>> strokes =
+      kerf::ReadStrokes(strokeInput, *this->DrawnStrokes, *this->StrokePoints, session.surface());
 
     const kerf::StrokeConstraintSet set = session.strokeConstraints(strokes, kerf::ReadStrokeOptions(this, diagonal));
 

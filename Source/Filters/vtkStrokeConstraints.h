@@ -40,8 +40,8 @@ protected:
   vtkStrokeConstraints();
   ~vtkStrokeConstraints() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
 private:
   vtkStrokeConstraints(const vtkStrokeConstraints&) = delete;

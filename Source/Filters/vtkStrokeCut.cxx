@@ -5,8 +5,8 @@
 #include "Harmonic/HarmonicCutSession.h"
 #include "KerfDrawnInput.h"
 #include "KerfFilterBorder.h"
-#include "KerfParameterChecks.h"
 #include "KerfOutputArrays.h"
+#include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 
 #include <vtkCellData.h>
@@ -41,8 +41,7 @@ vtkPolyData* vtkStrokeCut::GetCut()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int vtkStrokeCut::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkStrokeCut::RequestData(vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   return kerf::RunGuarded(this, "Cannot cut along the stroke", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
@@ -54,8 +53,8 @@ int vtkStrokeCut::RequestData(
     kerf::LoadSurface(this->State->surface, input, requirements);
     kerf::HarmonicCutSession& session = this->State->surface.SessionFor(this->State->session);
     const double diagonal = session.mesh().boundingBoxDiagonal();
-    const std::vector<std::vector<kerf::Vector3>> strokes =
-      kerf::ReadStrokes(vtkPolyData::GetData(inputVector[1], 0), *this->DrawnStrokes, *this->StrokePoints, session.surface());
+    const std::vector<std::vector<kerf::Vector3>> strokes = kerf::ReadStrokes(
+      vtkPolyData::GetData(inputVector[1], 0), *this->DrawnStrokes, *this->StrokePoints, session.surface());
     this->UpdateProgress(0.1);
 
     kerf::FieldConstraints constraints;

@@ -15,8 +15,8 @@
  * Output 0: the surface with the point arrays "HarmonicField" and "HarmonicFieldClamped" (for
  * display, see vtkHarmonicField), the cell array "Segment" (the two sides of the cut, split
  * further into connected components; the active scalars, what ParaView colours by) and the
- * field data "SolverWork", "RelativeResidual" and "SegmentSizes" (the faces of each segment). Output 1: the cut as polylines (IsoValue,
- * Score, Length, Closed).
+ * field data "SolverWork", "RelativeResidual" and "SegmentSizes" (the faces of each segment). Output 1: the cut as
+ * polylines (IsoValue, Score, Length, Closed).
  *
  * On a surface of several connected components, the strokes cut the components they touch; the
  * others stay whole (each one segment), as if on the strokes' +1 side.
@@ -67,8 +67,8 @@ protected:
   vtkStrokeCut();
   ~vtkStrokeCut() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int Weighting = 1;
   int Formulation = 2;

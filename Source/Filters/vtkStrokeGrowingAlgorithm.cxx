@@ -1,4 +1,5 @@
-// vtkStrokeGrowingAlgorithm: the stroke and metric parameters, ports and boundary output shared by the filters that grow parts from labelled strokes.
+// vtkStrokeGrowingAlgorithm: the stroke and metric parameters, ports and boundary output shared by the filters that
+// grow parts from labelled strokes.
 #include "vtkStrokeGrowingAlgorithm.h"
 
 #include <vtkInformation.h>
@@ -43,6 +44,7 @@ void vtkStrokeGrowingAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumProjectionDistance: " << this->MaximumProjectionDistance << "\n";
   os << indent << "BoundaryPlacement: " << this->BoundaryPlacement << "\n";
   os << indent << "CutBand: " << this->CutBand << "\n";
-  os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)") << "\n";
+  os << indent << "StrokeLabelArrayName: " << (this->StrokeLabelArrayName ? this->StrokeLabelArrayName : "(none)")
+     << "\n";
   os << indent << "SegmentArrayName: " << (this->SegmentArrayName ? this->SegmentArrayName : "(none)") << "\n";
 }

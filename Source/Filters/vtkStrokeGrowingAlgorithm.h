@@ -16,11 +16,10 @@
  * face takes the label that a random walk from it, on the concavity-aware Laplacian, most likely
  * reaches first (kerf::randomWalkLabels), so parts end at concave creases rather than halfway
  * between strokes, and a minimum cut through the band where the walks hesitate between two labels
- * (CutBand) puts the boundary on the shortest, most concave way there; or where the fronts meet (the paper's rule: every vertex to the stroke nearest
- * to it under the metric); or where the fronts meet moved by a minimum cut through the band
- * around them (CutBand; kerf::placeCuts).
- * The labels are written as SegmentArrayName; output 1 holds the boundaries between labels.
- * kerf::ReadGrowingOptions reads the parameters.
+ * (CutBand) puts the boundary on the shortest, most concave way there; or where the fronts meet (the paper's rule:
+ * every vertex to the stroke nearest to it under the metric); or where the fronts meet moved by a minimum cut through
+ * the band around them (CutBand; kerf::placeCuts). The labels are written as SegmentArrayName; output 1 holds the
+ * boundaries between labels. kerf::ReadGrowingOptions reads the parameters.
  */
 #ifndef vtkStrokeGrowingAlgorithm_h
 #define vtkStrokeGrowingAlgorithm_h

@@ -14,7 +14,6 @@
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 
-
 vtkStandardNewMacro(vtkSurfaceDescriptors);
 
 struct vtkSurfaceDescriptors::Internals
@@ -59,10 +58,9 @@ int vtkSurfaceDescriptors::RequestData(
   return kerf::RunGuarded(this, "Cannot compute surface descriptors", [&]() {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    kerf::CheckOutputNames({ this->NormalsArrayName, this->MaximumCurvatureArrayName,
-      this->MinimumCurvatureArrayName, this->MaximumDirectionArrayName, this->MinimumDirectionArrayName,
-      this->MeanCurvatureArrayName, this->GaussianCurvatureArrayName, this->ConcaveArrayName,
-      this->NormalConeAngleArrayName });
+    kerf::CheckOutputNames({ this->NormalsArrayName, this->MaximumCurvatureArrayName, this->MinimumCurvatureArrayName,
+      this->MaximumDirectionArrayName, this->MinimumDirectionArrayName, this->MeanCurvatureArrayName,
+      this->GaussianCurvatureArrayName, this->ConcaveArrayName, this->NormalConeAngleArrayName });
 
     // What the algorithm accepts: the curvature tensor needs an oriented 2-manifold; boundaries,
     // several components and zero-area triangles are handled.

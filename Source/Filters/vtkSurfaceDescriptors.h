@@ -23,10 +23,10 @@
  *
  * Accepted input: a vtkPolyData surface whose polygons and strips are triangulated on the fly.
  * Points with identical coordinates (OBJ texture seams, STL facets) are welded and share their
- * values; a triangle that welding leaves with a repeated point is refused. Boundaries, several components, zero-area triangles (which contribute nothing) and points
- * used by no triangle (which get zero values) are accepted. Refused with an error: no triangles,
- * NaN or infinite coordinates, triangles repeating a point, duplicate triangles, non-manifold
- * edges or vertices, and inconsistently oriented neighbouring triangles.
+ * values; a triangle that welding leaves with a repeated point is refused. Boundaries, several components, zero-area
+ * triangles (which contribute nothing) and points used by no triangle (which get zero values) are accepted. Refused
+ * with an error: no triangles, NaN or infinite coordinates, triangles repeating a point, duplicate triangles,
+ * non-manifold edges or vertices, and inconsistently oriented neighbouring triangles.
  *
  * The output keeps the input's arrays. When the input holds only triangles its cells are shared;
  * otherwise the output is the triangulated surface with the cell data of each source polygon.
@@ -75,8 +75,8 @@ protected:
   vtkSurfaceDescriptors();
   ~vtkSurfaceDescriptors() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   char* NormalsArrayName = nullptr;
   char* MaximumCurvatureArrayName = nullptr;

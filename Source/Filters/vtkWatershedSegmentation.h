@@ -58,8 +58,8 @@ protected:
   vtkWatershedSegmentation();
   ~vtkWatershedSegmentation() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   double DepthThreshold = 0.05;
   int SegmentCount = 0;

@@ -52,8 +52,8 @@ vtkSmartPointer<vtkDataArray> toDataArray(const MeshFileArray& source)
     for (std::size_t i = 0; i < source.values.size(); ++i)
     {
       const double v = source.values[i];
-      colors->SetValue(static_cast<vtkIdType>(i),
-        static_cast<unsigned char>(std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 255.0)));
+      colors->SetValue(
+        static_cast<vtkIdType>(i), static_cast<unsigned char>(std::isnan(v) ? 0.0 : std::clamp(v, 0.0, 255.0)));
     }
     array = colors;
   }

@@ -46,8 +46,8 @@ std::string lowerExtension(const char* fileName)
 }
 
 // Decompresses a block of a VTK XML file with VTK's own compressor of that name, quietly.
-bool decompressBlock(const std::string& compressorName, std::string_view compressed,
-  std::size_t uncompressedSize, std::string& uncompressed)
+bool decompressBlock(const std::string& compressorName, std::string_view compressed, std::size_t uncompressedSize,
+  std::string& uncompressed)
 {
   vtkSmartPointer<vtkDataCompressor> compressor;
   if (compressorName == "vtkZLibDataCompressor")
@@ -142,23 +142,23 @@ vtkSmartPointer<vtkPolyData> readFile(const std::string& extension, const char* 
 // A sentence naming the first problem of a cell array's offsets (they start at 0, never decrease
 // and end at the number of point ids) or point ids (each names a point), or "".
 template <typename Offset>
-std::string checkCellArray(const Offset* offsets, vtkIdType offsetCount, const Offset* ids,
-  vtkIdType idCount, vtkIdType points, const char* kind)
+std::string checkCellArray(const Offset* offsets, vtkIdType offsetCount, const Offset* ids, vtkIdType idCount,
+  vtkIdType points, const char* kind)
 {
   std::ostringstream out;
   for (vtkIdType i = 0; i < offsetCount; ++i)
   {
     if ((i == 0 && offsets[0] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) || offsets[i] > idCount)
     {
-      out << kind << " offset " << i << " is " << offsets[i] << ", out of order or past the "
-          << idCount << " point ids";
+      out << kind << " offset " << i << " is " << offsets[i] << ", out of order or past the " << idCount
+          << " point ids";
       return out.str();
     }
   }
   if (offsetCount > 0 && offsets[offsetCount - 1] != idCount)
   {
-    out << "the " << kind << " offsets end at " << offsets[offsetCount - 1] << ", not at the "
-        << idCount << " point ids";
+    out << "the " << kind << " offsets end at " << offsets[offsetCount - 1] << ", not at the " << idCount
+        << " point ids";
     return out.str();
   }
   for (vtkIdType i = 0; i < idCount; ++i)
@@ -228,8 +228,7 @@ int vtkKerfMeshFileReader::IsSupportedExtension(const char* fileName)
   return 0;
 }
 
-int vtkKerfMeshFileReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkKerfMeshFileReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   if (!this->FileName || !*this->FileName)
@@ -244,9 +243,8 @@ int vtkKerfMeshFileReader::RequestData(
   }
   if (!IsSupportedExtension(this->FileName))
   {
-    vtkErrorMacro("Unsupported mesh file extension '" << lowerExtension(this->FileName) << "' ("
-                                                     << this->FileName
-                                                     << "); use .off, .ply, .obj, .stl, .vtp or .vtk.");
+    vtkErrorMacro("Unsupported mesh file extension '" << lowerExtension(this->FileName) << "' (" << this->FileName
+                                                      << "); use .off, .ply, .obj, .stl, .vtp or .vtk.");
     return 0;
   }
   vtkSmartPointer<vtkPolyData> result;

@@ -38,8 +38,8 @@ protected:
   vtkKerfMeshFileReader();
   ~vtkKerfMeshFileReader() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   char* FileName = nullptr;
 

@@ -9,9 +9,9 @@
 #include <vtkExecutive.h>
 #include <vtkFloatArray.h>
 #include <vtkInformation.h>
+#include <vtkNew.h>
 #include <vtkOBJWriter.h>
 #include <vtkObjectFactory.h>
-#include <vtkNew.h>
 #include <vtkPLYWriter.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -120,8 +120,8 @@ void vtkKerfMeshFileWriter::WriteData()
   const Writer writer = makeWriter(extension, this->FileName);
   if (!writer.algorithm)
   {
-    vtkErrorMacro("Unsupported mesh file extension '"
-      << extension << "' (" << this->FileName << "); use .vtp, .vtk, .ply, .obj, .stl or .off.");
+    vtkErrorMacro("Unsupported mesh file extension '" << extension << "' (" << this->FileName
+                                                      << "); use .vtp, .vtk, .ply, .obj, .stl or .off.");
     this->SetErrorCode(vtkErrorCode::UnrecognizedFileTypeError);
     return;
   }
@@ -141,14 +141,13 @@ void vtkKerfMeshFileWriter::WriteData()
   writer.algorithm->SetInputDataObject(written);
   auto errors = vtkSmartPointer<kerf::ErrorCollector>::New();
   writer.algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
-  writer.algorithm->GetExecutive()->AddObserver(
-    vtkCommand::ErrorEvent, vtkSmartPointer<kerf::ErrorCollector>::New());
-  const unsigned long code = writer.write() == 1 ? writer.algorithm->GetErrorCode()
-                                                 : static_cast<unsigned long>(vtkErrorCode::UnknownError);
+  writer.algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, vtkSmartPointer<kerf::ErrorCollector>::New());
+  const unsigned long code =
+    writer.write() == 1 ? writer.algorithm->GetErrorCode() : static_cast<unsigned long>(vtkErrorCode::UnknownError);
   if (code != vtkErrorCode::NoError || !errors->Message.empty())
   {
-    vtkErrorMacro("Cannot write " << this->FileName << ": "
-                                  << (errors->Message.empty() ? "the writer failed" : errors->Message));
+    vtkErrorMacro(
+      "Cannot write " << this->FileName << ": " << (errors->Message.empty() ? "the writer failed" : errors->Message));
     this->SetErrorCode(code != vtkErrorCode::NoError ? code : vtkErrorCode::UnknownError);
   }
 }

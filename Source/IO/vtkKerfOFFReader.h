@@ -35,8 +35,8 @@ protected:
   vtkKerfOFFReader();
   ~vtkKerfOFFReader() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   char* FileName = nullptr;
 

@@ -52,9 +52,8 @@ int vtkKerfSegmentationReader::RequestData(
   }
   if (static_cast<vtkIdType>(labels.size()) != input->GetNumberOfCells())
   {
-    vtkErrorMacro("The segmentation " << this->FileName << " has " << labels.size()
-                                      << " labels but the mesh has " << input->GetNumberOfCells()
-                                      << " cells.");
+    vtkErrorMacro("The segmentation " << this->FileName << " has " << labels.size() << " labels but the mesh has "
+                                      << input->GetNumberOfCells() << " cells.");
     return 0;
   }
   output->ShallowCopy(input);

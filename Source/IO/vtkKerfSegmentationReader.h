@@ -37,8 +37,8 @@ protected:
   vtkKerfSegmentationReader();
   ~vtkKerfSegmentationReader() override;
 
-  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+  int RequestData(
+    vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   char* FileName = nullptr;
   char* ArrayName = nullptr;

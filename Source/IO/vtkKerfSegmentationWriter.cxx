@@ -42,19 +42,16 @@ void vtkKerfSegmentationWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
-  vtkDataArray* array =
-    input && this->ArrayName ? input->GetCellData()->GetArray(this->ArrayName) : nullptr;
+  vtkDataArray* array = input && this->ArrayName ? input->GetCellData()->GetArray(this->ArrayName) : nullptr;
   if (!array)
   {
-    vtkErrorMacro("The input has no cell array named '" << (this->ArrayName ? this->ArrayName : "")
-                                                        << "'.");
+    vtkErrorMacro("The input has no cell array named '" << (this->ArrayName ? this->ArrayName : "") << "'.");
     this->SetErrorCode(vtkErrorCode::UnknownError);
     return;
   }
   if (array->GetNumberOfComponents() != 1)
   {
-    vtkErrorMacro("The cell array '" << this->ArrayName << "' has "
-                                     << array->GetNumberOfComponents()
+    vtkErrorMacro("The cell array '" << this->ArrayName << "' has " << array->GetNumberOfComponents()
                                      << " components; a segmentation has one.");
     this->SetErrorCode(vtkErrorCode::UnknownError);
     return;
@@ -63,11 +60,10 @@ void vtkKerfSegmentationWriter::WriteData()
   for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
   {
     const double value = array->GetComponent(i, 0);
-    if (!std::isfinite(value) || value != std::floor(value) ||
-      std::abs(value) > std::numeric_limits<int>::max())
+    if (!std::isfinite(value) || value != std::floor(value) || std::abs(value) > std::numeric_limits<int>::max())
     {
-      vtkErrorMacro("Cell " << i << " of '" << this->ArrayName << "' holds " << value
-                            << ", which is not an integer label.");
+      vtkErrorMacro(
+        "Cell " << i << " of '" << this->ArrayName << "' holds " << value << ", which is not an integer label.");
       this->SetErrorCode(vtkErrorCode::UnknownError);
       return;
     }

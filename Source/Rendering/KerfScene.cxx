@@ -46,17 +46,16 @@ double quantile(std::vector<double> values, double fraction)
   {
     return 0.0;
   }
-  const std::size_t k = std::min(values.size() - 1,
-    static_cast<std::size_t>(std::floor(fraction * static_cast<double>(values.size() - 1))));
+  const std::size_t k = std::min(
+    values.size() - 1, static_cast<std::size_t>(std::floor(fraction * static_cast<double>(values.size() - 1))));
   std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
   return values[k];
 }
 
 // Twelve well-separated colours for labels.
-const double LabelColors[12][3] = { { 0.122, 0.467, 0.706 }, { 1.000, 0.498, 0.055 },
-  { 0.173, 0.627, 0.173 }, { 0.839, 0.153, 0.157 }, { 0.580, 0.404, 0.741 },
-  { 0.549, 0.337, 0.294 }, { 0.890, 0.467, 0.761 }, { 0.498, 0.498, 0.498 },
-  { 0.737, 0.741, 0.133 }, { 0.090, 0.745, 0.812 }, { 0.682, 0.780, 0.910 },
+const double LabelColors[12][3] = { { 0.122, 0.467, 0.706 }, { 1.000, 0.498, 0.055 }, { 0.173, 0.627, 0.173 },
+  { 0.839, 0.153, 0.157 }, { 0.580, 0.404, 0.741 }, { 0.549, 0.337, 0.294 }, { 0.890, 0.467, 0.761 },
+  { 0.498, 0.498, 0.498 }, { 0.737, 0.741, 0.133 }, { 0.090, 0.745, 0.812 }, { 0.682, 0.780, 0.910 },
   { 1.000, 0.733, 0.471 } };
 
 // The edges between cells with different labels, as lines lifted slightly off the surface.
@@ -161,8 +160,7 @@ vtkSmartPointer<vtkTexture> checkerboardTexture(int squares)
 }
 
 // A renderer showing the surface as the options say, or nullptr and `error`.
-vtkSmartPointer<vtkRenderer> makeRenderer(
-  vtkPolyData* surface, const SceneOptions& options, std::string& error)
+vtkSmartPointer<vtkRenderer> makeRenderer(vtkPolyData* surface, const SceneOptions& options, std::string& error)
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(surface);
@@ -276,8 +274,7 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
     {
       vtkNew<vtkScalarBarActor> legend;
       legend->SetLookupTable(colors);
-      legend->SetTitle(options.legendTitle.empty() ? options.colorArray.c_str()
-                                                   : options.legendTitle.c_str());
+      legend->SetTitle(options.legendTitle.empty() ? options.colorArray.c_str() : options.legendTitle.c_str());
       legend->SetNumberOfLabels(5);
       legend->SetLabelFormat("%-#6.3g");
       legend->SetWidth(0.14);
@@ -307,8 +304,8 @@ vtkSmartPointer<vtkRenderer> makeRenderer(
     vtkNew<vtkContourFilter> contours;
     contours->SetInputData(surface);
     contours->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, options.colorArray.c_str());
-    contours->GenerateValues(options.isolineCount, lo + (hi - lo) / (options.isolineCount + 1),
-      hi - (hi - lo) / (options.isolineCount + 1));
+    contours->GenerateValues(
+      options.isolineCount, lo + (hi - lo) / (options.isolineCount + 1), hi - (hi - lo) / (options.isolineCount + 1));
     contours->ComputeScalarsOff();
     vtkNew<vtkPolyDataMapper> contourMapper;
     contourMapper->SetInputConnection(contours->GetOutputPort());
@@ -454,8 +451,7 @@ vtkSmartPointer<vtkRenderWindow> renderTwoViews(vtkPolyData* leftSurface, const 
 }
 } // namespace
 
-vtkSmartPointer<vtkRenderWindow> RenderScene(
-  vtkPolyData* surface, const SceneOptions& options, std::string& error)
+vtkSmartPointer<vtkRenderWindow> RenderScene(vtkPolyData* surface, const SceneOptions& options, std::string& error)
 {
   vtkSmartPointer<vtkRenderer> renderer = makeRenderer(surface, options, error);
   if (!renderer)
@@ -468,8 +464,8 @@ vtkSmartPointer<vtkRenderWindow> RenderScene(
   return window;
 }
 
-vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
-  const SceneOptions& right, std::string& error)
+vtkSmartPointer<vtkRenderWindow> RenderSideBySide(
+  vtkPolyData* surface, const SceneOptions& left, const SceneOptions& right, std::string& error)
 {
   return renderTwoViews(surface, left, surface, right, true, error);
 }

@@ -78,8 +78,8 @@ KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderScene(
 
 /// Two views of one surface side by side with a shared camera, for example a method's
 /// segmentation beside a human's. The window takes the left options' size; each view gets half.
-KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderSideBySide(vtkPolyData* surface, const SceneOptions& left,
-  const SceneOptions& right, std::string& error);
+KERFRENDERING_EXPORT vtkSmartPointer<vtkRenderWindow> RenderSideBySide(
+  vtkPolyData* surface, const SceneOptions& left, const SceneOptions& right, std::string& error);
 
 /// Two surfaces side by side, each with its own camera (a textured surface beside its texture
 /// layout, for example). The window takes the left options' size; each view gets half.

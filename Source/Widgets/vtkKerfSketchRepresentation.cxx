@@ -1,4 +1,5 @@
-// vtkKerfSketchRepresentation: the drawn strokes, discs and points, the gestures that make them on the view's depth buffer, and their display.
+// vtkKerfSketchRepresentation: the drawn strokes, discs and points, the gestures that make them on the view's depth
+// buffer, and their display.
 #include "vtkKerfSketchRepresentation.h"
 
 #include "Error.h"
@@ -6,12 +7,12 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkMatrix4x4.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIntArray.h>
+#include <vtkMatrix4x4.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPoints.h>
@@ -311,16 +312,16 @@ void vtkKerfSketchRepresentation::SetCurrentLabel(int label)
 void vtkKerfSketchRepresentation::LabelColor(int label, bool labelled, double rgb[3])
 {
   static const double palette[][3] = {
-    { 0.15, 0.45, 1.0 },  // 0: background, blue
-    { 1.0, 0.3, 0.1 },    // 1: foreground, red-orange
-    { 0.2, 0.8, 0.25 },   // 2: green
-    { 0.95, 0.8, 0.1 },   // 3: yellow
-    { 0.7, 0.3, 0.9 },    // 4: purple
-    { 0.1, 0.85, 0.85 },  // 5: cyan
-    { 1.0, 0.5, 0.75 },   // 6: pink
-    { 0.6, 0.4, 0.2 },    // 7: brown
-    { 0.55, 0.75, 0.2 },  // 8: olive
-    { 0.3, 0.3, 0.75 },   // 9: indigo
+    { 0.15, 0.45, 1.0 }, // 0: background, blue
+    { 1.0, 0.3, 0.1 },   // 1: foreground, red-orange
+    { 0.2, 0.8, 0.25 },  // 2: green
+    { 0.95, 0.8, 0.1 },  // 3: yellow
+    { 0.7, 0.3, 0.9 },   // 4: purple
+    { 0.1, 0.85, 0.85 }, // 5: cyan
+    { 1.0, 0.5, 0.75 },  // 6: pink
+    { 0.6, 0.4, 0.2 },   // 7: brown
+    { 0.55, 0.75, 0.2 }, // 8: olive
+    { 0.3, 0.3, 0.75 },  // 9: indigo
   };
   const double* c = !labelled ? palette[3] : label < 0 ? nullptr : palette[label % 10];
   const double white[3] = { 1.0, 1.0, 1.0 };
@@ -336,12 +337,15 @@ void vtkKerfSketchRepresentation::LabelColor(int label, bool labelled, double rg
 
 void vtkKerfSketchRepresentation::SetNumberOfStrokePoints(int count)
 {
-  this->ListChanged(static_cast<int>(resizeList(this->State->drawn.strokePoints, count, Vector3(Vector3::Zero()))), true);
+  this->ListChanged(
+    static_cast<int>(resizeList(this->State->drawn.strokePoints, count, Vector3(Vector3::Zero()))), true);
 }
 
 void vtkKerfSketchRepresentation::SetStrokePoint(int index, double x, double y, double z)
 {
-  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.strokePoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), true);
+  this->ListChanged(
+    static_cast<int>(setEntry(this->State->drawn.strokePoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()))),
+    true);
 }
 
 vtkDoubleArray* vtkKerfSketchRepresentation::GetStrokePoints()
@@ -439,7 +443,6 @@ void vtkKerfSketchRepresentation::SetNumberOfDiscs(int count)
 {
   this->ListChanged(static_cast<int>(resizeList(this->State->drawn.discs, count, std::array<double, 5>{})), true);
   resizeList(this->State->drawn.rims, count, std::vector<Vector3>());
-
 }
 
 void vtkKerfSketchRepresentation::SetDisc(int index, double x, double y, double z, double radius, double subtract)
@@ -452,7 +455,6 @@ void vtkKerfSketchRepresentation::SetDisc(int index, double x, double y, double 
   }
   this->ListChanged(static_cast<int>(setEntry(this->State->drawn.discs, index, disc, std::array<double, 5>{})), true);
   setEntry(this->State->drawn.rims, index, std::vector<Vector3>(), std::vector<Vector3>());
-
 }
 
 vtkDoubleArray* vtkKerfSketchRepresentation::GetDiscs()
@@ -478,7 +480,8 @@ void vtkKerfSketchRepresentation::SetNumberOfClickedPoints(int count)
 
 void vtkKerfSketchRepresentation::SetClickedPoint(int index, double x, double y, double z)
 {
-  this->ListChanged(static_cast<int>(setEntry(this->State->drawn.points, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), true);
+  this->ListChanged(
+    static_cast<int>(setEntry(this->State->drawn.points, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), true);
 }
 
 vtkDoubleArray* vtkKerfSketchRepresentation::GetClickedPoints()
@@ -504,7 +507,8 @@ void vtkKerfSketchRepresentation::SetNumberOfTypedStrokePoints(int count)
 
 void vtkKerfSketchRepresentation::SetTypedStrokePoint(int index, double x, double y, double z)
 {
-  this->ListChanged(static_cast<int>(setEntry(this->State->typedStroke, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
+  this->ListChanged(
+    static_cast<int>(setEntry(this->State->typedStroke, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetNumberOfTypedForegroundPoints(int count)
@@ -514,7 +518,8 @@ void vtkKerfSketchRepresentation::SetNumberOfTypedForegroundPoints(int count)
 
 void vtkKerfSketchRepresentation::SetTypedForegroundPoint(int index, double x, double y, double z)
 {
-  this->ListChanged(static_cast<int>(setEntry(this->State->typedForeground, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
+  this->ListChanged(
+    static_cast<int>(setEntry(this->State->typedForeground, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetNumberOfTypedBackgroundPoints(int count)
@@ -524,7 +529,8 @@ void vtkKerfSketchRepresentation::SetNumberOfTypedBackgroundPoints(int count)
 
 void vtkKerfSketchRepresentation::SetTypedBackgroundPoint(int index, double x, double y, double z)
 {
-  this->ListChanged(static_cast<int>(setEntry(this->State->typedBackground, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
+  this->ListChanged(
+    static_cast<int>(setEntry(this->State->typedBackground, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 void vtkKerfSketchRepresentation::SetTypedDiscCenter(double x, double y, double z)
@@ -547,7 +553,8 @@ void vtkKerfSketchRepresentation::SetNumberOfTypedPoints(int count)
 
 void vtkKerfSketchRepresentation::SetTypedPoint(int index, double x, double y, double z)
 {
-  this->ListChanged(static_cast<int>(setEntry(this->State->typedPoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
+  this->ListChanged(
+    static_cast<int>(setEntry(this->State->typedPoints, index, Vector3(x, y, z), Vector3(Vector3::Zero()))), false);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -823,7 +830,8 @@ int vtkKerfSketchRepresentation::EndGesture(double x, double y)
     else
     {
       s.remember(this->MaximumUndo);
-      s.drawn.discs.push_back({ s.pressPoint->x(), s.pressPoint->y(), s.pressPoint->z(), s.discRadius, s.subtract ? 1.0 : 0.0 });
+      s.drawn.discs.push_back(
+        { s.pressPoint->x(), s.pressPoint->y(), s.pressPoint->z(), s.discRadius, s.subtract ? 1.0 : 0.0 });
       s.drawn.rims.push_back(s.discRim);
       outcome = GESTURE_CHANGED;
     }
@@ -852,8 +860,8 @@ int vtkKerfSketchRepresentation::EndGesture(double x, double y)
     }
     else if (this->MaximumPoints > 1 && static_cast<int>(s.drawn.points.size()) >= this->MaximumPoints)
     {
-      this->Message = "There are already " + std::to_string(this->MaximumPoints) +
-        " points: click on one to erase it first.";
+      this->Message =
+        "There are already " + std::to_string(this->MaximumPoints) + " points: click on one to erase it first.";
     }
     else
     {
@@ -916,8 +924,10 @@ bool vtkKerfSketchRepresentation::AddDiscAround(vtkPoints* points)
   {
     centroid += p / static_cast<double>(around.size());
   }
-  const Vector3 centre = *std::min_element(around.begin(), around.end(),
-    [&centroid](const Vector3& a, const Vector3& b) { return (a - centroid).squaredNorm() < (b - centroid).squaredNorm(); });
+  const Vector3 centre =
+    *std::min_element(around.begin(), around.end(), [&centroid](const Vector3& a, const Vector3& b) {
+      return (a - centroid).squaredNorm() < (b - centroid).squaredNorm();
+    });
   double radius = 0.0;
   for (const Vector3& p : around)
   {
@@ -1022,7 +1032,8 @@ void vtkKerfSketchRepresentation::BuildRepresentation()
       }
     }
     auto hasLabel = [&strokes](int label) {
-      return std::any_of(strokes.begin(), strokes.end(), [label](const Stroke& stroke) { return stroke.label == label; });
+      return std::any_of(
+        strokes.begin(), strokes.end(), [label](const Stroke& stroke) { return stroke.label == label; });
     };
     if (!this->Labelled && strokes.empty())
     {

@@ -146,7 +146,8 @@ void vtkKerfSketchWidget::KeyAction(vtkAbstractWidget* widget)
     return;
   }
   // Ctrl+Z alone: Ctrl+Shift+Z is redo elsewhere.
-  if (interactor->GetControlKey() && !interactor->GetShiftKey() && (std::strcmp(key, "z") == 0 || std::strcmp(key, "Z") == 0))
+  if (interactor->GetControlKey() && !interactor->GetShiftKey() &&
+    (std::strcmp(key, "z") == 0 || std::strcmp(key, "Z") == 0))
   {
     self->Undo();
     self->EventCallbackCommand->SetAbortFlag(1);

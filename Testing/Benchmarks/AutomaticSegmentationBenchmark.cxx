@@ -1,4 +1,5 @@
-// Benchmarks of automatic segmentation: hierarchical face clustering (Garland et al.) at 100k and 1M triangles, and the ensemble with its reference at a psb-dev model's size.
+// Benchmarks of automatic segmentation: hierarchical face clustering (Garland et al.) at 100k and 1M triangles, and the
+// ensemble with its reference at a psb-dev model's size.
 //
 // On the cube dumbbell of the harmonic-cut benchmarks (kerf::benchmarks::MakeBenchmarkDumbbell,
 // 99,372 and 1,002,252 triangles):
@@ -20,8 +21,8 @@
 //   BM_BoundaryBandCut/22k           kerf::refineSegmentBoundaries of the ensemble's labels
 //                                    without its band (computed once): the band's own cost
 // The meshes are built once per size, outside the timed loops.
-#include "KerfBenchmarks.h"
 #include "BenchmarkMeshes.h"
+#include "KerfBenchmarks.h"
 
 #include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
@@ -121,7 +122,8 @@ void clusterSlideBenchmark(benchmark::State& state, const ClusterSize& size)
   kerf::benchmarks::RunOnScene(
     state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
     [](benchmark::State& st, const ClusterScene& scene) {
-      const kerf::FaceClusterHierarchy tree = kerf::buildFaceClusterHierarchy(*scene.graph, kerf::HierarchicalClusteringOptions());
+      const kerf::FaceClusterHierarchy tree =
+        kerf::buildFaceClusterHierarchy(*scene.graph, kerf::HierarchicalClusteringOptions());
       for (auto _ : st)
       {
         for (int k = 2; k <= 21; ++k)
@@ -207,8 +209,10 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
   {
     const std::string label = size.label;
     for (benchmark::internal::Benchmark* registered : {
-           benchmark::RegisterBenchmark(("BM_FaceClusterHierarchy/" + label).c_str(), clusterHierarchyBenchmark, size, false),
-           benchmark::RegisterBenchmark(("BM_FaceClusterHierarchyExact/" + label).c_str(), clusterHierarchyBenchmark, size, true),
+           benchmark::RegisterBenchmark(
+             ("BM_FaceClusterHierarchy/" + label).c_str(), clusterHierarchyBenchmark, size, false),
+           benchmark::RegisterBenchmark(
+             ("BM_FaceClusterHierarchyExact/" + label).c_str(), clusterHierarchyBenchmark, size, true),
            benchmark::RegisterBenchmark(("BM_FaceClusterGraph/" + label).c_str(), clusterGraphBenchmark, size),
            benchmark::RegisterBenchmark(("BM_FaceClusterSlide/" + label).c_str(), clusterSlideBenchmark, size),
          })

@@ -1,4 +1,5 @@
-// Builds the cube-based dumbbell (a subdivided cube, spread over the sphere, stretched like kerf::makeDumbbell) and strokes on it.
+// Builds the cube-based dumbbell (a subdivided cube, spread over the sphere, stretched like kerf::makeDumbbell) and
+// strokes on it.
 #include "BenchmarkMeshes.h"
 
 #include "Error.h"
@@ -12,8 +13,8 @@ namespace kerf
 namespace benchmarks
 {
 
-TriangleMesh MakeCubeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
-  double neckHeight, double neckDepth, int cells)
+TriangleMesh MakeCubeDumbbell(
+  double halfLength, const std::array<double, 2>& lobeRadii, double neckHeight, double neckDepth, int cells)
 {
   if (cells < 1)
   {

@@ -16,8 +16,8 @@ namespace benchmarks
 /// over the sphere before the dumbbell's stretch: 12 cells^2 triangles and 6 cells^2 + 2
 /// vertices, closed, outward oriented, every vertex of valence 6 but six cube corners of valence
 /// 4. kerf::makeDumbbell's icosphere only gives 20 * 4^levels triangles.
-TriangleMesh MakeCubeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
-  double neckHeight, double neckDepth, int cells);
+TriangleMesh MakeCubeDumbbell(
+  double halfLength, const std::array<double, 2>& lobeRadii, double neckHeight, double neckDepth, int cells);
 
 /// The dumbbell of kerf's tests and benchmarks (TestConcavityCut, the harmonic-cut benchmarks).
 constexpr double DumbbellHalfLength = 2.2;

@@ -1,8 +1,9 @@
-// Benchmarks of kerf::parameterizeCharts (split, LSCM or LinABF per chart, distortion, packing, overlap count) with each solver.
+// Benchmarks of kerf::parameterizeCharts (split, LSCM or LinABF per chart, distortion, packing, overlap count) with
+// each solver.
 //
 // The surfaces are the benchmarks' cube dumbbells (BenchmarkMeshes.h) of 22,188, 99,372 and
-// 1,002,252 triangles (1M with the default solver only), cut into 12 charts: each of the six cube faces it is made from (2 cells^2
-// consecutive triangles, row by row) cut in two halves of rows, each a disk.
+// 1,002,252 triangles (1M with the default solver only), cut into 12 charts: each of the six cube faces it is made from
+// (2 cells^2 consecutive triangles, row by row) cut in two halves of rows, each a disk.
 //   BM_ChartParameterization/<size>/<solver>   the whole of parameterizeCharts with LSCM, one
 //                                               thread, with CHOLMOD or Eigen's SimplicialLDLT
 //                                               (at 1M the complex forms only)
@@ -92,9 +93,10 @@ void chartParameterization(benchmark::State& state, int cells, kerf::ChartMethod
       }
       if (result.charts.size() != 12 || result.overlappingChartPairs != 0 || result.distortion.flippedFaces != 0)
       {
-        kerf::benchmarks::Fail(s, "expected 12 charts without overlaps or flips, got " +
-            std::to_string(result.charts.size()) + " charts, " + std::to_string(result.overlappingChartPairs) +
-            " overlapping pairs, " + std::to_string(result.distortion.flippedFaces) + " flipped triangles");
+        kerf::benchmarks::Fail(s,
+          "expected 12 charts without overlaps or flips, got " + std::to_string(result.charts.size()) + " charts, " +
+            std::to_string(result.overlappingChartPairs) + " overlapping pairs, " +
+            std::to_string(result.distortion.flippedFaces) + " flipped triangles");
       }
     },
     [&](benchmark::State& s, const ChartScene& scene) {
@@ -189,7 +191,8 @@ void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
   };
   const Variant variants[] = { { "ComplexCHOLMOD", ChartMethod::LSCM, ChartSolver::ComplexCHOLMOD },
     { "ComplexLDLT", ChartMethod::LSCM, ChartSolver::ComplexLDLT },
-    { "RealCHOLMOD", ChartMethod::LSCM, ChartSolver::RealCHOLMOD }, { "RealLDLT", ChartMethod::LSCM, ChartSolver::RealLDLT },
+    { "RealCHOLMOD", ChartMethod::LSCM, ChartSolver::RealCHOLMOD },
+    { "RealLDLT", ChartMethod::LSCM, ChartSolver::RealLDLT },
     { "LinABF", ChartMethod::LinABF, ChartSolver::ComplexCHOLMOD } };
   for (const auto& [label, cells] : sizes)
   {
@@ -200,8 +203,10 @@ void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
         continue; // at 1M the complex form only, with either method
       }
       const std::string name = std::string("BM_ChartParameterization/") + label + "/" + variant.name;
-      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(name.c_str(),
-        [cells = cells, variant](benchmark::State& state) { chartParameterization(state, cells, variant.method, variant.solver); });
+      benchmark::internal::Benchmark* registered =
+        benchmark::RegisterBenchmark(name.c_str(), [cells = cells, variant](benchmark::State& state) {
+          chartParameterization(state, cells, variant.method, variant.solver);
+        });
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {
@@ -212,15 +217,16 @@ void RegisterChartParameterizationBenchmarks(bool useSizeMinimumTimes)
   for (const auto& [label, cells] : sizes)
   {
     const std::string name = std::string("BM_ChartSplit/") + label;
-    benchmark::internal::Benchmark* registered =
-      benchmark::RegisterBenchmark(name.c_str(), [cells = cells](benchmark::State& state) { chartSplit(state, cells); });
+    benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
+      name.c_str(), [cells = cells](benchmark::State& state) { chartSplit(state, cells); });
     registered->Unit(benchmark::kMillisecond)->UseRealTime();
     if (useSizeMinimumTimes)
     {
       registered->MinTime(1.0);
     }
   }
-  for (const auto& [label, levels] : { std::pair<const char*, int>{ "20k", 5 }, std::pair<const char*, int>{ "82k", 6 } })
+  for (const auto& [label, levels] :
+    { std::pair<const char*, int>{ "20k", 5 }, std::pair<const char*, int>{ "82k", 6 } })
   {
     for (ChartMethod method : { ChartMethod::LSCM, ChartMethod::LinABF })
     {

@@ -50,7 +50,7 @@ namespace
 struct GrowingSize
 {
   const char* name;
-  int cells; ///< 6 cells^2 + 2 vertices
+  int cells;  ///< 6 cells^2 + 2 vertices
   bool small; ///< the first-run and snake cases run at this size
   double minimumSeconds;
 };
@@ -222,7 +222,8 @@ void vtkEdgeConnectivity(benchmark::State& state, GrowingScene& scene)
   }
   if (regions != 2)
   {
-    kerf::benchmarks::Fail(state, "vtkPolyDataEdgeConnectivityFilter found " + std::to_string(regions) + " regions, not 2");
+    kerf::benchmarks::Fail(
+      state, "vtkPolyDataEdgeConnectivityFilter found " + std::to_string(regions) + " regions, not 2");
   }
 }
 
@@ -281,8 +282,8 @@ void RegisterEasyMeshCuttingBenchmarks(bool useSizeMinimumTimes)
       {
         continue;
       }
-      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
-        (std::string(name) + "/" + size.name).c_str(), run, &size, body);
+      benchmark::internal::Benchmark* registered =
+        benchmark::RegisterBenchmark((std::string(name) + "/" + size.name).c_str(), run, &size, body);
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {

@@ -1,4 +1,5 @@
-// Benchmarks of the geodesics family: heat-method set-up and sources, paths beside VTK's Dijkstra path and CGAL's heat method, seams, ROI Scissor.
+// Benchmarks of the geodesics family: heat-method set-up and sources, paths beside VTK's Dijkstra path and CGAL's heat
+// method, seams, ROI Scissor.
 //
 // Surfaces: the harmonic-cut benchmark's dumbbell (half length 2.2, lobe radii 1 and 0.8, neck at
 // 0.3 pinched by 0.65) from a subdivided cube (kerf::benchmarks::MakeCubeDumbbell) with 22,188,
@@ -43,9 +44,9 @@
 
 #include "Geodesic/GeodesicPaths.h"
 #include "Geodesic/HeatGeodesics.h"
-#include "Geometry/ClosestPoint.h"
 #include "Geodesic/RoiScissor.h"
 #include "Geodesic/Seams.h"
+#include "Geometry/ClosestPoint.h"
 #include "Harmonic/Isolines.h"
 #include "Mesh/MeshGenerators.h"
 #include "Session/Surface.h"
@@ -290,8 +291,8 @@ void geodesicDiscClick(benchmark::State& state, const Scene& scene, bool keepDis
 {
   kerf::ClickDistances distances(scene.surface);
   const auto disc = [&]() {
-    return kerf::geodesicDiscs(*scene.surface, { scene.click }, {}, 1e-3, kerf::HeatGeodesicOptions(),
-      keepDistances ? &distances : nullptr);
+    return kerf::geodesicDiscs(
+      *scene.surface, { scene.click }, {}, 1e-3, kerf::HeatGeodesicOptions(), keepDistances ? &distances : nullptr);
   };
   kerf::GeodesicDiscs discs = disc(); // the heat set-up, and the click's distance when kept
   for (auto _ : state)
@@ -366,7 +367,8 @@ void cgalSource(benchmark::State& state, const Scene& scene)
 }
 #endif
 
-void run(benchmark::State& state, const GeodesicSize* size, const std::function<void(benchmark::State&, const Scene&)>& body)
+void run(
+  benchmark::State& state, const GeodesicSize* size, const std::function<void(benchmark::State&, const Scene&)>& body)
 {
   try
   {
@@ -390,8 +392,10 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
   std::vector<std::pair<std::string, Body>> benchmarks = {
     { "BM_HeatSetup", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::Automatic); } },
     { "BM_HeatSetupAMD", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::AMD); } },
-    { "BM_HeatSetupMetis", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::METIS); } },
-    { "BM_HeatSetupGeometric", [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::Geometric); } },
+    { "BM_HeatSetupMetis",
+      [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::METIS); } },
+    { "BM_HeatSetupGeometric",
+      [](benchmark::State& s, const Scene& c) { heatSetup(s, c, kerf::CholeskyOrdering::Geometric); } },
     { "BM_HeatSource", heatSource },
     { "BM_VTKDijkstraPath", vtkDijkstraPath },
     { "BM_GeodesicPolylineFirst", geodesicPathFirst },
@@ -416,8 +420,8 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
         continue;
       }
       const std::string fullName = name + "/" + size.label;
-      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(fullName.c_str(),
-        [size = &size, body = body](benchmark::State& state) { run(state, size, body); });
+      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(
+        fullName.c_str(), [size = &size, body = body](benchmark::State& state) { run(state, size, body); });
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {
@@ -425,36 +429,45 @@ void RegisterGeodesicsBenchmarks(bool useSizeMinimumTimes)
       }
     }
   }
-  benchmark::RegisterBenchmark("BM_SphereErrorKerf", [](benchmark::State& state) {
-    const kerf::HeatGeodesics heat(errorSphere());
-    std::vector<double> distance;
-    for (auto _ : state)
-    {
-      kerf::GeodesicSource from;
-      from.vertices = { SphereSource };
-      distance = heat.compute(from).distance;
-    }
-    sphereErrors(state, errorSphere(), distance, SphereSource);
-  })->Unit(benchmark::kMillisecond)->UseRealTime();
+  benchmark::RegisterBenchmark("BM_SphereErrorKerf",
+    [](benchmark::State& state) {
+      const kerf::HeatGeodesics heat(errorSphere());
+      std::vector<double> distance;
+      for (auto _ : state)
+      {
+        kerf::GeodesicSource from;
+        from.vertices = { SphereSource };
+        distance = heat.compute(from).distance;
+      }
+      sphereErrors(state, errorSphere(), distance, SphereSource);
+    })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 #ifdef KERF_HAVE_CGAL
-  benchmark::RegisterBenchmark("BM_SphereErrorCGAL", [](benchmark::State& state) {
-    const CgalMesh mesh = toCgal(errorSphere());
-    std::vector<double> distance;
-    for (auto _ : state)
-    {
-      distance = cgalDistances<CGAL::Heat_method_3::Direct>(mesh, SphereSource);
-    }
-    sphereErrors(state, errorSphere(), distance, SphereSource);
-  })->Unit(benchmark::kMillisecond)->UseRealTime();
-  benchmark::RegisterBenchmark("BM_SphereErrorCGALIntrinsic", [](benchmark::State& state) {
-    const CgalMesh mesh = toCgal(errorSphere());
-    std::vector<double> distance;
-    for (auto _ : state)
-    {
-      distance = cgalDistances<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, SphereSource);
-    }
-    sphereErrors(state, errorSphere(), distance, SphereSource);
-  })->Unit(benchmark::kMillisecond)->UseRealTime();
+  benchmark::RegisterBenchmark("BM_SphereErrorCGAL",
+    [](benchmark::State& state) {
+      const CgalMesh mesh = toCgal(errorSphere());
+      std::vector<double> distance;
+      for (auto _ : state)
+      {
+        distance = cgalDistances<CGAL::Heat_method_3::Direct>(mesh, SphereSource);
+      }
+      sphereErrors(state, errorSphere(), distance, SphereSource);
+    })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+  benchmark::RegisterBenchmark("BM_SphereErrorCGALIntrinsic",
+    [](benchmark::State& state) {
+      const CgalMesh mesh = toCgal(errorSphere());
+      std::vector<double> distance;
+      for (auto _ : state)
+      {
+        distance = cgalDistances<CGAL::Heat_method_3::Intrinsic_Delaunay>(mesh, SphereSource);
+      }
+      sphereErrors(state, errorSphere(), distance, SphereSource);
+    })
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 #endif
 }
 

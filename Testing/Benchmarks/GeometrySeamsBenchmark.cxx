@@ -232,7 +232,9 @@ void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes)
         [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::Exhaustive, 1); }),
       benchmark::RegisterBenchmark(("BM_SeamCarvingSession/" + label).c_str(), seamCarvingSession, size),
       benchmark::RegisterBenchmark(("BM_SeamCarvingUpdate/" + label).c_str(),
-        [size](benchmark::State& state) { seamCarvingUpdate(state, size, 1.0, 1.0 + 1e-4 / (size.height / (size.rings - 1))); }),
+        [size](benchmark::State& state) {
+          seamCarvingUpdate(state, size, 1.0, 1.0 + 1e-4 / (size.height / (size.rings - 1)));
+        }),
       benchmark::RegisterBenchmark(("BM_SeamCarvingSeamStep/" + label).c_str(),
         [size](benchmark::State& state) { seamCarvingUpdate(state, size, 0.0, 1.0); }),
     };

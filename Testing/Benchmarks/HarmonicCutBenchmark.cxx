@@ -44,12 +44,12 @@
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Mesh/MeshGenerators.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <benchmark/benchmark.h>
 
@@ -80,7 +80,6 @@ namespace
 {
 
 using kerf::benchmarks::Fail;
-
 
 using kerf::benchmarks::DumbbellHalfLength;
 using Strokes = kerf::benchmarks::DumbbellStrokes;
@@ -184,8 +183,7 @@ struct CutPipeline
     vtkDataArray* closed = lines->GetCellData()->GetArray("Closed");
     if (lines->GetNumberOfCells() != 1 || !closed || closed->GetComponent(0, 0) != 1)
     {
-      return "the cut is not one closed isoline (" + std::to_string(lines->GetNumberOfCells()) +
-        " polylines)";
+      return "the cut is not one closed isoline (" + std::to_string(lines->GetNumberOfCells()) + " polylines)";
     }
     vtkDataArray* segments = this->cut->GetLabelledSurface()->GetCellData()->GetArray("Segment");
     if (!segments || segments->GetRange()[0] != 0 || segments->GetRange()[1] != 1)
@@ -235,8 +233,8 @@ std::unique_ptr<HarmonicScene> buildScene(const CutSize& size)
   options.samplesPerSegment = 4;
   options.offset = 0.01 * mesh.boundingBoxDiagonal();
   options.maximumDistance = 0.05 * mesh.boundingBoxDiagonal();
-  const kerf::StrokeConstraintSet set = kerf::strokeConstraints(
-    mesh, locator, kerf::computeVertexNormals(mesh), { scene->strokes.around[0] }, options);
+  const kerf::StrokeConstraintSet set =
+    kerf::strokeConstraints(mesh, locator, kerf::computeVertexNormals(mesh), { scene->strokes.around[0] }, options);
   double diagonalSum = 0.0;
   for (double w : scene->weights)
   {
@@ -337,8 +335,9 @@ void harmonicFactorization(benchmark::State& state, HarmonicScene& scene)
   }
   else if (!(solution.relativeResidual < 1e-6) || !(*range.first < -0.5 && *range.second > 0.5))
   {
-    Fail(state, "unexpected field: relative residual " + std::to_string(solution.relativeResidual) +
-        ", range " + std::to_string(*range.first) + " to " + std::to_string(*range.second));
+    Fail(state,
+      "unexpected field: relative residual " + std::to_string(solution.relativeResidual) + ", range " +
+        std::to_string(*range.first) + " to " + std::to_string(*range.second));
   }
 }
 
@@ -360,8 +359,9 @@ void harmonicDirichletFactorization(benchmark::State& state, HarmonicScene& scen
   }
   else if (!(solution.relativeResidual < 1e-6) || *range.first < -1e-9 || *range.second > 1.0 + 1e-9)
   {
-    Fail(state, "unexpected field: relative residual " + std::to_string(solution.relativeResidual) +
-        ", range " + std::to_string(*range.first) + " to " + std::to_string(*range.second));
+    Fail(state,
+      "unexpected field: relative residual " + std::to_string(solution.relativeResidual) + ", range " +
+        std::to_string(*range.first) + " to " + std::to_string(*range.second));
   }
 }
 
@@ -441,8 +441,9 @@ void vtkContourFilterOneValue(benchmark::State& state, HarmonicScene& scene)
   const std::size_t kerfPoints = pointCount(kerf::extractIsolines(scene.mesh, field, 0.0));
   if (output->GetNumberOfLines() == 0 || static_cast<std::size_t>(output->GetNumberOfPoints()) != kerfPoints)
   {
-    Fail(state, "vtkContourFilter made " + std::to_string(output->GetNumberOfPoints()) +
-        " points, kerf::extractIsolines " + std::to_string(kerfPoints));
+    Fail(state,
+      "vtkContourFilter made " + std::to_string(output->GetNumberOfPoints()) + " points, kerf::extractIsolines " +
+        std::to_string(kerfPoints));
   }
   state.counters["points"] = static_cast<double>(output->GetNumberOfPoints());
 }
@@ -576,7 +577,8 @@ using Function = void (*)(benchmark::State&, HarmonicScene&);
 // Runs one benchmark on its size's scene; any exception fails it.
 void run(benchmark::State& state, const CutSize* size, Function function)
 {
-  kerf::benchmarks::RunOnScene(state, [size]() -> HarmonicScene& { return sceneOfSize(*size); }, function, setCounters);
+  kerf::benchmarks::RunOnScene(
+    state, [size]() -> HarmonicScene& { return sceneOfSize(*size); }, function, setCounters);
 }
 
 } // namespace
@@ -605,8 +607,7 @@ void RegisterHarmonicCutBenchmarks(bool useSizeMinimumTimes)
     for (const auto& [name, function] : benchmarks)
     {
       const std::string fullName = std::string(name) + "/" + size.label;
-      benchmark::internal::Benchmark* registered =
-        benchmark::RegisterBenchmark(fullName.c_str(), run, &size, function);
+      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(fullName.c_str(), run, &size, function);
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {

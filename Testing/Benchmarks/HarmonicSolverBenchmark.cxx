@@ -1,4 +1,5 @@
-// Benchmarks of the harmonic-cut solver at the Core level: factorizations, low-rank routes, and cuts from stroke to labels.
+// Benchmarks of the harmonic-cut solver at the Core level: factorizations, low-rank routes, and cuts from stroke to
+// labels.
 //
 // Every benchmark runs on HarmonicCutBenchmark.cxx's cube dumbbells (22,188, 99,372 and
 // 1,002,252 triangles), cotangent weights and strokes: a closed stroke around the neck (64
@@ -58,11 +59,11 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
+#include "Harmonic/StrokeConstraints.h"
+#include "Mesh/MeshValidation.h"
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/NestedDissection.h"
 #include "Numerics/SparseCholesky.h"
-#include "Harmonic/StrokeConstraints.h"
-#include "Mesh/MeshValidation.h"
 
 #include <benchmark/benchmark.h>
 
@@ -133,8 +134,9 @@ std::vector<kerf::SoftConstraint> constraintsOf(
 
 /// A cut from the constraints to the labels: the solve, the isoline at `value` nearest to the
 /// stroke, and the faces' labels. Returns the number of segments (0 if there is no isoline).
-int cutToLabels(kerf::HarmonicFieldSolver& solver, const SurfaceData& surface, const kerf::FieldConstraints& constraints,
-  const std::vector<kerf::Vector3>& stroke, double value, kerf::HarmonicFieldSolution& solution)
+int cutToLabels(kerf::HarmonicFieldSolver& solver, const SurfaceData& surface,
+  const kerf::FieldConstraints& constraints, const std::vector<kerf::Vector3>& stroke, double value,
+  kerf::HarmonicFieldSolution& solution)
 {
   solution = solver.solve(surface.mesh, surface.weights, constraints);
   const std::vector<kerf::Isoline> isolines = kerf::extractIsolines(surface.mesh, solution.field, value);
@@ -202,14 +204,15 @@ Eigen::SparseMatrix<double> constraintColumns(
       }
     }
   }
-  Eigen::SparseMatrix<double> u(static_cast<Eigen::Index>(surface.mesh.vertexCount() - 1),
-    static_cast<Eigen::Index>(soft.size()));
+  Eigen::SparseMatrix<double> u(
+    static_cast<Eigen::Index>(surface.mesh.vertexCount() - 1), static_cast<Eigen::Index>(soft.size()));
   u.setFromTriplets(entries.begin(), entries.end());
   u.makeCompressed();
   return u;
 }
 
-std::vector<kerf::SoftConstraint> joined(std::vector<kerf::SoftConstraint> a, const std::vector<kerf::SoftConstraint>& b)
+std::vector<kerf::SoftConstraint> joined(
+  std::vector<kerf::SoftConstraint> a, const std::vector<kerf::SoftConstraint>& b)
 {
   a.insert(a.end(), b.begin(), b.end());
   return a;
@@ -275,8 +278,8 @@ void setCounters(benchmark::State& state, const SolverScene& scene)
 
 using Formulation = kerf::SoftConstraintFormulation;
 
-void firstCut(benchmark::State& state, SolverScene& scene, Formulation formulation, bool alwaysAMD = false,
-  bool automatic = false)
+void firstCut(
+  benchmark::State& state, SolverScene& scene, Formulation formulation, bool alwaysAMD = false, bool automatic = false)
 {
   int segments = 0;
   kerf::HarmonicFieldSolution solution;
@@ -353,8 +356,8 @@ void alternateCuts(benchmark::State& state, SolverScene& scene, Formulation form
   }
   if (!updated || segments != 2)
   {
-    Fail(state, std::string(updated ? "" : "a cut cost more than an update; ") + "fewest segments " +
-        std::to_string(segments));
+    Fail(state,
+      std::string(updated ? "" : "a cut cost more than an update; ") + "fewest segments " + std::to_string(segments));
   }
   state.counters["residual"] = solution.relativeResidual;
 }
@@ -476,7 +479,8 @@ void supernodalFactorization(benchmark::State& state, SolverScene& scene, Matrix
   }
   state.counters["factorNonZeros"] = static_cast<double>(nonZeros);
   state.counters["residual"] = residual;
-  state.counters["route"] = static_cast<double>(route == kerf::SupernodalRoute::Automatic ? kerf::automaticSupernodalRoute() : route);
+  state.counters["route"] =
+    static_cast<double>(route == kerf::SupernodalRoute::Automatic ? kerf::automaticSupernodalRoute() : route);
 }
 
 // Relative error of apply(prepare(U), s) against U's columns solved one by one with solve().
@@ -488,8 +492,8 @@ double checkAgainstSolve(const Cholesky& factor, const Eigen::SparseMatrix<doubl
 }
 
 // prepare() alternating between two sets of columns that share `kept` leading ones.
-void alternatePrepare(benchmark::State& state, const Cholesky& factor, const std::array<Eigen::SparseMatrix<double>, 2>& u,
-  Cholesky::LowRankRoute route, bool apply)
+void alternatePrepare(benchmark::State& state, const Cholesky& factor,
+  const std::array<Eigen::SparseMatrix<double>, 2>& u, Cholesky::LowRankRoute route, bool apply)
 {
   std::size_t which = 0;
   Cholesky::LowRank lowRank = factor.prepare(u[1], route);
@@ -517,7 +521,8 @@ void newStroke(benchmark::State& state, SolverScene& scene, Matrix matrix, Chole
 {
   const Cholesky& factor = factorOf(scene, matrix, ordering);
   const std::vector<int>& column = scene.matrices->column;
-  const std::array<Eigen::SparseMatrix<double>, 2> u = { { constraintColumns(scene.surface, column, scene.strokeConstraints[0]),
+  const std::array<Eigen::SparseMatrix<double>, 2> u = { { constraintColumns(
+                                                             scene.surface, column, scene.strokeConstraints[0]),
     constraintColumns(scene.surface, column, scene.strokeConstraints[1]) } };
   alternatePrepare(state, factor, u, Cholesky::LowRankRoute::SupernodalSweep, true);
 }
@@ -542,8 +547,7 @@ void lowRankRoute(benchmark::State& state, SolverScene& scene, Matrix matrix, in
   for (int i = 0; i < 2; ++i)
   {
     const std::vector<kerf::SoftConstraint>& stroke = scene.strokeConstraints[i];
-    u[i] = constraintColumns(
-      scene.surface, column, k == 64 ? stroke : joined(stroke, scene.refinementConstraints[i]));
+    u[i] = constraintColumns(scene.surface, column, k == 64 ? stroke : joined(stroke, scene.refinementConstraints[i]));
   }
   if (route == Cholesky::LowRankRoute::CholmodSolve2)
   {
@@ -589,7 +593,8 @@ void solveOne(benchmark::State& state, SolverScene& scene, Matrix matrix, bool l
 void applyLowRank(benchmark::State& state, SolverScene& scene, Matrix matrix)
 {
   const Cholesky& factor = factorOf(scene, matrix, Cholesky::Ordering::AMD);
-  const Eigen::SparseMatrix<double> u = constraintColumns(scene.surface, scene.matrices->column, scene.strokeConstraints[0]);
+  const Eigen::SparseMatrix<double> u =
+    constraintColumns(scene.surface, scene.matrices->column, scene.strokeConstraints[0]);
   const Cholesky::LowRank lowRank = factor.prepare(u);
   const Eigen::VectorXd s = Eigen::VectorXd::LinSpaced(u.cols(), -1.0, 1.0);
   for (auto _ : state)
@@ -606,13 +611,15 @@ void applyLowRank(benchmark::State& state, SolverScene& scene, Matrix matrix)
 template <typename Function>
 void run(benchmark::State& state, const SolverSize* size, Function function)
 {
-  kerf::benchmarks::RunOnScene(state, [size]() -> SolverScene& { return sceneOfSize(*size); }, function, setCounters);
+  kerf::benchmarks::RunOnScene(
+    state, [size]() -> SolverScene& { return sceneOfSize(*size); }, function, setCounters);
 }
 
 template <typename Function>
 void add(const std::string& name, const SolverSize& size, Function function)
 {
-  benchmark::RegisterBenchmark(name.c_str(), [&size, function](benchmark::State& state) { run(state, &size, function); })
+  benchmark::RegisterBenchmark(
+    name.c_str(), [&size, function](benchmark::State& state) { run(state, &size, function); })
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime();
 }
@@ -643,8 +650,9 @@ void RegisterHarmonicSolverBenchmarks()
         [formulation](benchmark::State& state, SolverScene& scene) { firstCut(state, scene, formulation); });
       add("BM_SolverFirstCutAMD" + suffix, size,
         [formulation](benchmark::State& state, SolverScene& scene) { firstCut(state, scene, formulation, true); });
-      add("BM_SolverNewCut" + suffix, size,
-        [formulation](benchmark::State& state, SolverScene& scene) { alternateCuts(state, scene, formulation, false); });
+      add("BM_SolverNewCut" + suffix, size, [formulation](benchmark::State& state, SolverScene& scene) {
+        alternateCuts(state, scene, formulation, false);
+      });
       add("BM_SolverRefinement" + suffix, size,
         [formulation](benchmark::State& state, SolverScene& scene) { alternateCuts(state, scene, formulation, true); });
     }
@@ -657,13 +665,16 @@ void RegisterHarmonicSolverBenchmarks()
       for (Cholesky::Ordering ordering : orderings)
       {
         const std::string suffix = label + "/" + matrixName(matrix) + "/" + orderingName(ordering);
-        add("BM_SolverFactorization" + suffix, size,
-          [matrix, ordering](benchmark::State& state, SolverScene& scene) { factorization(state, scene, matrix, ordering); });
-        add("BM_SolverNewStroke" + suffix, size,
-          [matrix, ordering](benchmark::State& state, SolverScene& scene) { newStroke(state, scene, matrix, ordering); });
-        add("BM_SolverRefinementStroke" + suffix, size, [matrix, ordering](benchmark::State& state, SolverScene& scene) {
-          refinementStroke(state, scene, matrix, ordering);
+        add("BM_SolverFactorization" + suffix, size, [matrix, ordering](benchmark::State& state, SolverScene& scene) {
+          factorization(state, scene, matrix, ordering);
         });
+        add("BM_SolverNewStroke" + suffix, size, [matrix, ordering](benchmark::State& state, SolverScene& scene) {
+          newStroke(state, scene, matrix, ordering);
+        });
+        add(
+          "BM_SolverRefinementStroke" + suffix, size, [matrix, ordering](benchmark::State& state, SolverScene& scene) {
+            refinementStroke(state, scene, matrix, ordering);
+          });
       }
       for (int k : { 64, 128 })
       {

@@ -3,7 +3,8 @@
 //
 // The files are the cube dumbbell (BenchmarkMeshes.h) written once per run into the temporary
 // folder, as `kerf convert` writes them (vtkKerfMeshFileWriter: binary PLY, STL, legacy VTK, VTP with
-// raw appended LZ4 blocks, zlib before 2026-11-26; OBJ as text) plus ASCII PLY and STL. Each iteration reads the file with a new reader.
+// raw appended LZ4 blocks, zlib before 2026-11-26; OBJ as text) plus ASCII PLY and STL. Each iteration reads the file
+// with a new reader.
 #include "BenchmarkMeshes.h"
 #include "BenchmarkPolyData.h"
 #include "KerfBenchmarks.h"
@@ -85,11 +86,10 @@ std::string fileFor(Flavour flavour, const ReaderSize& size)
   {
     return found->second;
   }
-  vtkSmartPointer<vtkPolyData> mesh = kerf::benchmarks::MakePolyData(
-    kerf::benchmarks::MakeCubeDumbbell(1.0, { 0.5, 0.5 }, 0.25, 0.1, size.cells));
+  vtkSmartPointer<vtkPolyData> mesh =
+    kerf::benchmarks::MakePolyData(kerf::benchmarks::MakeCubeDumbbell(1.0, { 0.5, 0.5 }, 0.25, 0.1, size.cells));
   const std::string file = (std::filesystem::temp_directory_path() /
-    ("kerf-reader-benchmark-" + std::to_string(static_cast<int>(flavour)) + "-" + size.label +
-      extensionOf(flavour)))
+    ("kerf-reader-benchmark-" + std::to_string(static_cast<int>(flavour)) + "-" + size.label + extensionOf(flavour)))
                              .string();
   int ok = 0;
   if (flavour == Flavour::PLYAscii)

@@ -52,8 +52,8 @@ constexpr int TorusTube = 112;
 struct SegmentedTorus
 {
   kerf::TriangleMesh mesh;
-  std::vector<int> evaluated; ///< Bands bands about the axis
-  std::vector<int> reference; ///< the same bands turned by 0.3 band
+  std::vector<int> evaluated;            ///< Bands bands about the axis
+  std::vector<int> reference;            ///< the same bands turned by 0.3 band
   vtkSmartPointer<vtkPolyData> polyData; ///< with the cell arrays "Segment" and "Reference"
 };
 
@@ -105,20 +105,19 @@ void setCounters(benchmark::State& state, const SegmentedTorus& torus)
 {
   state.counters["triangles"] = torus.mesh.faceCount();
   state.counters["vertices"] = torus.mesh.vertexCount();
-  state.SetLabel("torus " + std::to_string(TorusAround) + "x" + std::to_string(TorusTube) + ", " +
-    std::to_string(Bands) + " bands");
+  state.SetLabel(
+    "torus " + std::to_string(TorusAround) + "x" + std::to_string(TorusTube) + ", " + std::to_string(Bands) + " bands");
 }
 
 // Empty if the scores are those of two different 10-band segmentations of the whole torus.
 std::string checkScores(const kerf::SegmentationScores& scores, int faces)
 {
-  if (scores.segments1 != Bands || scores.segments2 != Bands || scores.comparedFaces != faces ||
-    !scores.cutsCompared || !(scores.cutDiscrepancy > 0.0) || !(scores.randIndexError > 0.0))
+  if (scores.segments1 != Bands || scores.segments2 != Bands || scores.comparedFaces != faces || !scores.cutsCompared ||
+    !(scores.cutDiscrepancy > 0.0) || !(scores.randIndexError > 0.0))
   {
-    return "unexpected scores: " + std::to_string(scores.segments1) + " and " +
-      std::to_string(scores.segments2) + " segments, " + std::to_string(scores.comparedFaces) +
-      " faces compared, cut discrepancy " + std::to_string(scores.cutDiscrepancy) +
-      ", 1 - Rand index " + std::to_string(scores.randIndexError);
+    return "unexpected scores: " + std::to_string(scores.segments1) + " and " + std::to_string(scores.segments2) +
+      " segments, " + std::to_string(scores.comparedFaces) + " faces compared, cut discrepancy " +
+      std::to_string(scores.cutDiscrepancy) + ", 1 - Rand index " + std::to_string(scores.randIndexError);
   }
   return "";
 }
@@ -135,8 +134,7 @@ void segmentationMetricsFilter(benchmark::State& state)
     metrics->Update();
   }
   // The filter's table must hold the Core's scores.
-  const kerf::SegmentationScores expected =
-    kerf::compareSegmentations(torus.mesh, torus.evaluated, torus.reference);
+  const kerf::SegmentationScores expected = kerf::compareSegmentations(torus.mesh, torus.evaluated, torus.reference);
   vtkTable* table = metrics->GetOutput();
   const std::string problem = checkScores(expected, torus.mesh.faceCount());
   const double cutDiscrepancy =
@@ -147,8 +145,9 @@ void segmentationMetricsFilter(benchmark::State& state)
   }
   else if (!(std::abs(cutDiscrepancy - expected.cutDiscrepancy) <= 1e-9 * expected.cutDiscrepancy))
   {
-    Fail(state, "vtkSegmentationMetrics' CutDiscrepancy " + std::to_string(cutDiscrepancy) +
-        " differs from the Core's " + std::to_string(expected.cutDiscrepancy));
+    Fail(state,
+      "vtkSegmentationMetrics' CutDiscrepancy " + std::to_string(cutDiscrepancy) + " differs from the Core's " +
+        std::to_string(expected.cutDiscrepancy));
   }
   setCounters(state, torus);
 }
@@ -233,9 +232,10 @@ void humanBaseline(benchmark::State& state, const std::vector<int>* models)
   }
   if (table->GetNumberOfRows() != static_cast<vtkIdType>(models->size()) || comparisons < models->size() || !finite)
   {
-    Fail(state, "the human baseline has " + std::to_string(table->GetNumberOfRows()) + " rows for " +
-        std::to_string(models->size()) + " models, " + std::to_string(comparisons) +
-        " comparisons" + (finite ? "" : ", and NaN scores"));
+    Fail(state,
+      "the human baseline has " + std::to_string(table->GetNumberOfRows()) + " rows for " +
+        std::to_string(models->size()) + " models, " + std::to_string(comparisons) + " comparisons" +
+        (finite ? "" : ", and NaN scores"));
   }
   state.counters["models"] = static_cast<double>(models->size());
   state.counters["comparisons"] = comparisons;
@@ -269,8 +269,8 @@ void RegisterSegmentationEvaluationBenchmarks(bool useSizeMinimumTimes)
   static const std::vector<int> all = vtkSegmentationBenchmark::FindModels(PsbDirectory, error);
   if (all.empty())
   {
-    benchmark::AddCustomContext("psb_dev",
-      (error.empty() ? PsbDirectory + " holds no model" : error) + "; BM_HumanBaseline not registered");
+    benchmark::AddCustomContext(
+      "psb_dev", (error.empty() ? PsbDirectory + " holds no model" : error) + "; BM_HumanBaseline not registered");
     return;
   }
   benchmark::AddCustomContext("psb_dev", PsbDirectory);

@@ -1,4 +1,5 @@
-// Benchmarks of the sketch widget's gestures, which cost the same on any mesh: a stroke and a disc drawn on a view's depth image.
+// Benchmarks of the sketch widget's gestures, which cost the same on any mesh: a stroke and a disc drawn on a view's
+// depth image.
 //
 // The view: 1300 x 770 pixels (the render view of a 1600 x 1000 ParaView window) showing a sphere
 // of radius 0.5 filling its height, seen by an orthographic camera; the depth image is computed
@@ -111,7 +112,9 @@ namespace benchmarks
 void RegisterSketchBenchmarks()
 {
   benchmark::RegisterBenchmark("BM_SketchStroke/1300x770", sketchStroke)->Unit(benchmark::kMillisecond)->UseRealTime();
-  benchmark::RegisterBenchmark("BM_SketchDiscMove/1300x770", sketchDiscMove)->Unit(benchmark::kMillisecond)->UseRealTime();
+  benchmark::RegisterBenchmark("BM_SketchDiscMove/1300x770", sketchDiscMove)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 }
 
 } // namespace benchmarks

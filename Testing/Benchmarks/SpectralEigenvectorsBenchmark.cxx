@@ -1,4 +1,5 @@
-// Benchmarks of the spectral segmentation's leading eigenvectors: Kerf's tridiagonal route, its Lanczos route and Spectra's solvers alone, on the affinities the segmentation builds.
+// Benchmarks of the spectral segmentation's leading eigenvectors: Kerf's tridiagonal route, its Lanczos route and
+// Spectra's solvers alone, on the affinities the segmentation builds.
 //
 // Each matrix is kerf::spectralAffinity on kerf::spectralPatches with the segmentation's defaults
 // (400 patches, so 400 x 400 on every mesh above 400 faces), built once outside the timed loops;
@@ -20,8 +21,8 @@
 // Each result but the reference is checked against it: the same eigenvalues to 1e-9 and the same
 // invariant subspace (the projectors' difference below 1e-6); the counters give both differences
 // and the gap after the k-th eigenvalue.
-#include "KerfBenchmarks.h"
 #include "BenchmarkMeshes.h"
+#include "KerfBenchmarks.h"
 
 #include "IO/MeshFormats.h"
 #include "Mesh/SurfaceConversion.h"
@@ -107,20 +108,21 @@ void setCounters(benchmark::State& state, const AffinityScene& scene)
 }
 
 // `values` and `vectors` in ascending order, as Kerf gives them.
-void checkAgainstReference(benchmark::State& state, const AffinityScene& scene, const Eigen::VectorXd& values,
-  const Eigen::MatrixXd& vectors)
+void checkAgainstReference(
+  benchmark::State& state, const AffinityScene& scene, const Eigen::VectorXd& values, const Eigen::MatrixXd& vectors)
 {
   const double valueError = (values - scene.values).cwiseAbs().maxCoeff();
-  const double subspaceError =
-    (vectors * vectors.transpose() - scene.vectors * scene.vectors.transpose()).norm();
-  const Eigen::VectorXd all = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scene.affinity, Eigen::EigenvaluesOnly).eigenvalues();
+  const double subspaceError = (vectors * vectors.transpose() - scene.vectors * scene.vectors.transpose()).norm();
+  const Eigen::VectorXd all =
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scene.affinity, Eigen::EigenvaluesOnly).eigenvalues();
   state.counters["value_error"] = valueError;
   state.counters["subspace_error"] = subspaceError;
   state.counters["gap"] = all[all.size() - scene.k] - all[all.size() - scene.k - 1];
   if (!(valueError <= 1e-9) || !(subspaceError <= 1e-6))
   {
-    kerf::benchmarks::Fail(state, "the eigenpairs differ from the tridiagonal route's: eigenvalues by " +
-        std::to_string(valueError) + ", subspace by " + std::to_string(subspaceError));
+    kerf::benchmarks::Fail(state,
+      "the eigenpairs differ from the tridiagonal route's: eigenvalues by " + std::to_string(valueError) +
+        ", subspace by " + std::to_string(subspaceError));
   }
 }
 
@@ -132,8 +134,8 @@ int subspaceSize(const AffinityScene& scene)
 // Runs a built solver to the tolerance and keeps its eigenpairs; false (the benchmark failed) if
 // it did not converge.
 template <typename Solver>
-bool solveAndKeep(benchmark::State& state, Solver& solver, Spectra::SortRule rule, Eigen::VectorXd& values,
-  Eigen::MatrixXd& vectors)
+bool solveAndKeep(
+  benchmark::State& state, Solver& solver, Spectra::SortRule rule, Eigen::VectorXd& values, Eigen::MatrixXd& vectors)
 {
   solver.init();
   solver.compute(rule, 1000, 1e-10);
@@ -250,7 +252,8 @@ void RegisterSpectralEigenvectorsBenchmarks(bool useSizeMinimumTimes)
     }
     for (const auto& [family, function] : families)
     {
-      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark((std::string(family) + c.label).c_str(), function, &c);
+      benchmark::internal::Benchmark* registered =
+        benchmark::RegisterBenchmark((std::string(family) + c.label).c_str(), function, &c);
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {

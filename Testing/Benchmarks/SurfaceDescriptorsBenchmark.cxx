@@ -106,8 +106,7 @@ void setCounters(benchmark::State& state, const BenchmarkSurface& surface, const
 bool hasPointArray(vtkPolyData* output, const char* name)
 {
   vtkDataArray* array = output ? output->GetPointData()->GetArray(name) : nullptr;
-  return array && array->GetNumberOfTuples() == output->GetNumberOfPoints() &&
-    output->GetNumberOfPoints() > 0;
+  return array && array->GetNumberOfTuples() == output->GetNumberOfPoints() && output->GetNumberOfPoints() > 0;
 }
 
 void surfaceDescriptorsFilter(benchmark::State& state, const SurfaceSize& size)
@@ -199,9 +198,8 @@ void coreMeshBuildAndValidation(benchmark::State& state, const SurfaceSize& size
     benchmark::DoNotOptimize(report);
   }
   // A closed torus: no boundary, one component, Euler characteristic 0, no defects.
-  const bool clean = report.faces == surface->mesh.faceCount() && report.boundaryEdges == 0 &&
-    report.components == 1 && report.eulerCharacteristic == 0 &&
-    kerf::describeProblems(report, kerf::MeshRequirements()).empty();
+  const bool clean = report.faces == surface->mesh.faceCount() && report.boundaryEdges == 0 && report.components == 1 &&
+    report.eulerCharacteristic == 0 && kerf::describeProblems(report, kerf::MeshRequirements()).empty();
   if (!clean)
   {
     Fail(state, "unexpected mesh report: " + report.summary());
@@ -230,8 +228,7 @@ void RegisterSurfaceDescriptorsBenchmarks(bool useSizeMinimumTimes)
     for (const auto& [name, function] : benchmarks)
     {
       const std::string fullName = std::string(name) + "/" + size.label;
-      benchmark::internal::Benchmark* registered =
-        benchmark::RegisterBenchmark(fullName.c_str(), function, size);
+      benchmark::internal::Benchmark* registered = benchmark::RegisterBenchmark(fullName.c_str(), function, size);
       registered->Unit(benchmark::kMillisecond)->UseRealTime();
       if (useSizeMinimumTimes)
       {

@@ -85,7 +85,8 @@ struct ProtrusionsWithStrokes
     for (int i = 0; i < Count; ++i)
     {
       const double a = 2.0 * 3.14159265358979323846 * i / Count;
-      const double alpha = std::acos(std::max(-1.0, std::min(1.0, p.normalized().dot(Vector3(std::cos(a), std::sin(a), 0.0)))));
+      const double alpha =
+        std::acos(std::max(-1.0, std::min(1.0, p.normalized().dot(Vector3(std::cos(a), std::sin(a), 0.0)))));
       if (alpha < angle)
       {
         angle = alpha;

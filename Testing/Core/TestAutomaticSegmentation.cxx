@@ -1,4 +1,6 @@
-// The automatic segmentation methods in the Core on a body with three fingers (k = 4) and on two lobes joined by a neck (k = 2): every face labelled, segments connected, deterministic, and 1 - Rand index against the construction within a committed baseline.
+// The automatic segmentation methods in the Core on a body with three fingers (k = 4) and on two lobes joined by a neck
+// (k = 2): every face labelled, segments connected, deterministic, and 1 - Rand index against the construction within a
+// committed baseline.
 #include "Error.h"
 #include "Evaluation/SegmentationMetrics.h"
 #include "Mesh/MeshGenerators.h"
@@ -18,12 +20,12 @@
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
-#include <cstdlib>
 #include <array>
 #include <cmath>
+#include <cstdlib>
+#include <functional>
 #include <iostream>
 #include <limits>
-#include <functional>
 #include <map>
 #include <memory>
 #include <set>
@@ -43,7 +45,8 @@ constexpr double Pi = 3.14159265358979323846;
 
 struct Fingers
 {
-  std::shared_ptr<Surface> surface = std::make_shared<Surface>(makeProtrusions(FingerCount, FingerLength, FingerWidth, 4));
+  std::shared_ptr<Surface> surface =
+    std::make_shared<Surface>(makeProtrusions(FingerCount, FingerLength, FingerWidth, 4));
   /// The construction's parts: a face belongs to the finger whose axis is nearest to its
   /// centroid's direction when that angle is below the crease's, else to the body.
   std::vector<int> parts;
@@ -116,7 +119,8 @@ struct Lobes
     for (int f = 0; f < mesh.faceCount(); ++f)
     {
       const Triangle& t = mesh.triangle(f);
-      this->parts.push_back((mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0 > crease ? 1 : 0);
+      this->parts.push_back(
+        (mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0 > crease ? 1 : 0);
     }
   }
 };
@@ -165,7 +169,8 @@ const BoxWithCylinder& boxWithCylinder()
 
 /// Checks what every method must give: one label per face, `expected` segments numbered from 0,
 /// each segment edge-connected; returns 1 - Rand index against the construction.
-double checkSegmentation(const TriangleMesh& mesh, const std::vector<int>& parts, const std::vector<int>& labels, int expected)
+double checkSegmentation(
+  const TriangleMesh& mesh, const std::vector<int>& parts, const std::vector<int>& labels, int expected)
 {
   EXPECT_EQ(static_cast<int>(labels.size()), mesh.faceCount());
   std::set<int> distinct(labels.begin(), labels.end());
@@ -245,9 +250,11 @@ void expectLobes(const std::string& method, const std::function<std::vector<int>
   expectTwoParts(method, "the two lobes", lobes().surface->mesh(), lobes().parts, segment, threshold);
 }
 
-void expectBoxWithCylinder(const std::string& method, const std::function<std::vector<int>()>& segment, double threshold)
+void expectBoxWithCylinder(
+  const std::string& method, const std::function<std::vector<int>()>& segment, double threshold)
 {
-  expectTwoParts(method, "the box and its cylinder", boxWithCylinder().surface->mesh(), boxWithCylinder().parts, segment, threshold);
+  expectTwoParts(
+    method, "the box and its cylinder", boxWithCylinder().surface->mesh(), boxWithCylinder().parts, segment, threshold);
 }
 
 } // namespace
@@ -260,11 +267,13 @@ TEST(AutomaticSegmentation, ConsensusCutsOnABodyWithThreeFingers)
   // Measured 0.087: the three fingers are found, the random walks from the segments' spines
   // moving the cuts towards the creases (0.113 without them, each cut a little below the crease,
   // about 110 body faces on each finger's side).
-  expectFingers("consensus cuts",
+  expectFingers(
+    "consensus cuts",
     [] { return segmentByConsensusCuts(*fingers().surface, FingerCount + 1, ConsensusCutOptions()).labels; }, 0.1);
   ConsensusCutOptions cutsOnly;
   cutsOnly.walkDepth = 0.0;
-  expectFingers("consensus cuts without the walks",
+  expectFingers(
+    "consensus cuts without the walks",
     [&] { return segmentByConsensusCuts(*fingers().surface, FingerCount + 1, cutsOnly).labels; }, 0.13);
   const ConsensusCutResult walked = segmentByConsensusCuts(*fingers().surface, FingerCount + 1, ConsensusCutOptions());
   const ConsensusCutResult cut = segmentByConsensusCuts(*fingers().surface, FingerCount + 1, cutsOnly);
@@ -283,8 +292,9 @@ TEST(AutomaticSegmentation, ConvexFloodingOnABodyWithThreeFingers)
   // Measured 0.020: the three fingers, cut within a ring of the crease.
   ConvexFloodingOptions options;
   options.segmentCount = FingerCount + 1;
-  expectFingers("convex flooding",
-    [&] { return segmentByConvexFlooding(FaceGraph(fingers().surface->mesh()), options).labels; }, 0.03);
+  expectFingers(
+    "convex flooding", [&] { return segmentByConvexFlooding(FaceGraph(fingers().surface->mesh()), options).labels; },
+    0.03);
 }
 
 TEST(AutomaticSegmentation, WatershedOnABodyWithThreeFingers)
@@ -293,15 +303,18 @@ TEST(AutomaticSegmentation, WatershedOnABodyWithThreeFingers)
   // 8 to 24 faces on one finger (the weakness the documentation names).
   WatershedOptions options;
   options.segmentCount = FingerCount + 1;
-  expectFingers("watershed", [&] { return segmentByWatershed(FaceGraph(fingers().surface->mesh()), options).labels; }, 0.25);
+  expectFingers(
+    "watershed", [&] { return segmentByWatershed(FaceGraph(fingers().surface->mesh()), options).labels; }, 0.25);
 }
 
 TEST(AutomaticSegmentation, SpectralClusteringOnABodyWithThreeFingers)
 {
   // Measured 0.461: two finger tips and the body split in two halves.
-  expectFingers("spectral",
+  expectFingers(
+    "spectral",
     [] {
-      return segmentSpectrally(FaceGraph(fingers().surface->mesh()), FingerCount + 1, SpectralSegmentationOptions()).labels;
+      return segmentSpectrally(FaceGraph(fingers().surface->mesh()), FingerCount + 1, SpectralSegmentationOptions())
+        .labels;
     },
     0.48);
 }
@@ -309,7 +322,8 @@ TEST(AutomaticSegmentation, SpectralClusteringOnABodyWithThreeFingers)
 TEST(AutomaticSegmentation, KMeansOnABodyWithThreeFingers)
 {
   // Measured 0.614: four sectors of the body, the fingers shared among them.
-  expectFingers("k-means",
+  expectFingers(
+    "k-means",
     [] {
       return segmentByKMeans(FaceGraph(fingers().surface->mesh()), FingerCount + 1, KMeansSegmentationOptions()).labels;
     },
@@ -319,10 +333,12 @@ TEST(AutomaticSegmentation, KMeansOnABodyWithThreeFingers)
 TEST(AutomaticSegmentation, FaceClusteringOnABodyWithThreeFingers)
 {
   // Measured 0.622: four sectors of the body, as k-means.
-  expectFingers("face clustering",
+  expectFingers(
+    "face clustering",
     [] {
       return cutHierarchyAtCount(
-        buildFaceClusterHierarchy(FaceGraph(fingers().surface->mesh()), HierarchicalClusteringOptions()), FingerCount + 1);
+        buildFaceClusterHierarchy(FaceGraph(fingers().surface->mesh()), HierarchicalClusteringOptions()),
+        FingerCount + 1);
     },
     0.64);
 }
@@ -331,7 +347,8 @@ TEST(AutomaticSegmentation, FaceClusteringOnABodyWithThreeFingers)
 TEST(AutomaticSegmentation, ConsensusCutsOnTwoLobes)
 {
   // Measured 0.025 (0.026 without the random walks): the cut runs in the neck.
-  expectLobes("consensus cuts", [] { return segmentByConsensusCuts(*lobes().surface, 2, ConsensusCutOptions()).labels; }, 0.035);
+  expectLobes(
+    "consensus cuts", [] { return segmentByConsensusCuts(*lobes().surface, 2, ConsensusCutOptions()).labels; }, 0.035);
 }
 
 TEST(AutomaticSegmentation, ConvexFloodingOnTwoLobes)
@@ -339,7 +356,9 @@ TEST(AutomaticSegmentation, ConvexFloodingOnTwoLobes)
   ConvexFloodingOptions options;
   options.segmentCount = 2;
   // Measured 0.032: the two lobes, split a ring below the crease.
-  expectLobes("convex flooding", [&] { return segmentByConvexFlooding(FaceGraph(lobes().surface->mesh()), options).labels; }, 0.04);
+  expectLobes(
+    "convex flooding", [&] { return segmentByConvexFlooding(FaceGraph(lobes().surface->mesh()), options).labels; },
+    0.04);
 }
 
 TEST(AutomaticSegmentation, WatershedOnTwoLobes)
@@ -347,21 +366,25 @@ TEST(AutomaticSegmentation, WatershedOnTwoLobes)
   WatershedOptions options;
   options.segmentCount = 2;
   // Measured 0.0047: the basins of the two lobes meet at the crease.
-  expectLobes("watershed", [&] { return segmentByWatershed(FaceGraph(lobes().surface->mesh()), options).labels; }, 0.01);
+  expectLobes(
+    "watershed", [&] { return segmentByWatershed(FaceGraph(lobes().surface->mesh()), options).labels; }, 0.01);
 }
 
 TEST(AutomaticSegmentation, SpectralClusteringOnTwoLobes)
 {
   // Measured 0.026: the Fiedler-like split at the neck.
-  expectLobes("spectral",
-    [] { return segmentSpectrally(FaceGraph(lobes().surface->mesh()), 2, SpectralSegmentationOptions()).labels; }, 0.035);
+  expectLobes(
+    "spectral",
+    [] { return segmentSpectrally(FaceGraph(lobes().surface->mesh()), 2, SpectralSegmentationOptions()).labels; },
+    0.035);
 }
 
 TEST(AutomaticSegmentation, KMeansOnTwoLobes)
 {
   // Measured 0.4995: two halves split along the axis; the distance of faces (angle and geodesic)
   // does not see the neck with two representatives.
-  expectLobes("k-means",
+  expectLobes(
+    "k-means",
     [] { return segmentByKMeans(FaceGraph(lobes().surface->mesh()), 2, KMeansSegmentationOptions()).labels; }, 0.51);
 }
 
@@ -369,8 +392,12 @@ TEST(AutomaticSegmentation, FaceClusteringOnTwoLobes)
 {
   // Measured 0.498: two halves along the axis, as k-means (planarity, not the neck, drives the
   // merges).
-  expectLobes("face clustering",
-    [] { return cutHierarchyAtCount(buildFaceClusterHierarchy(FaceGraph(lobes().surface->mesh()), HierarchicalClusteringOptions()), 2); },
+  expectLobes(
+    "face clustering",
+    [] {
+      return cutHierarchyAtCount(
+        buildFaceClusterHierarchy(FaceGraph(lobes().surface->mesh()), HierarchicalClusteringOptions()), 2);
+    },
     0.51);
 }
 
@@ -378,7 +405,9 @@ TEST(AutomaticSegmentation, FaceClusteringOnTwoLobes)
 TEST(AutomaticSegmentation, ConsensusCutsOnABoxWithACylinder)
 {
   // Measured 0.021 (0.029 without the random walks): the cut in the crease around the cylinder.
-  expectBoxWithCylinder("consensus cuts", [] { return segmentByConsensusCuts(*boxWithCylinder().surface, 2, ConsensusCutOptions()).labels; }, 0.03);
+  expectBoxWithCylinder(
+    "consensus cuts",
+    [] { return segmentByConsensusCuts(*boxWithCylinder().surface, 2, ConsensusCutOptions()).labels; }, 0.03);
 }
 
 TEST(AutomaticSegmentation, ConvexFloodingOnABoxWithACylinder)
@@ -386,7 +415,9 @@ TEST(AutomaticSegmentation, ConvexFloodingOnABoxWithACylinder)
   ConvexFloodingOptions options;
   options.segmentCount = 2;
   // Measured 0.0031: the cylinder, cut at the crease.
-  expectBoxWithCylinder("convex flooding", [&] { return segmentByConvexFlooding(FaceGraph(boxWithCylinder().surface->mesh()), options).labels; }, 0.01);
+  expectBoxWithCylinder(
+    "convex flooding",
+    [&] { return segmentByConvexFlooding(FaceGraph(boxWithCylinder().surface->mesh()), options).labels; }, 0.01);
 }
 
 TEST(AutomaticSegmentation, WatershedOnABoxWithACylinder)
@@ -394,28 +425,40 @@ TEST(AutomaticSegmentation, WatershedOnABoxWithACylinder)
   WatershedOptions options;
   options.segmentCount = 2;
   // Measured 0.027.
-  expectBoxWithCylinder("watershed", [&] { return segmentByWatershed(FaceGraph(boxWithCylinder().surface->mesh()), options).labels; }, 0.035);
+  expectBoxWithCylinder(
+    "watershed", [&] { return segmentByWatershed(FaceGraph(boxWithCylinder().surface->mesh()), options).labels; },
+    0.035);
 }
 
 TEST(AutomaticSegmentation, SpectralClusteringOnABoxWithACylinder)
 {
   // Measured 0.082: the cylinder with a band of the box around its base.
-  expectBoxWithCylinder("spectral",
-    [] { return segmentSpectrally(FaceGraph(boxWithCylinder().surface->mesh()), 2, SpectralSegmentationOptions()).labels; }, 0.095);
+  expectBoxWithCylinder(
+    "spectral",
+    [] {
+      return segmentSpectrally(FaceGraph(boxWithCylinder().surface->mesh()), 2, SpectralSegmentationOptions()).labels;
+    },
+    0.095);
 }
 
 TEST(AutomaticSegmentation, KMeansOnABoxWithACylinder)
 {
   // Measured 0.49999: two halves of the box, the cylinder in one.
-  expectBoxWithCylinder("k-means",
-    [] { return segmentByKMeans(FaceGraph(boxWithCylinder().surface->mesh()), 2, KMeansSegmentationOptions()).labels; }, 0.51);
+  expectBoxWithCylinder(
+    "k-means",
+    [] { return segmentByKMeans(FaceGraph(boxWithCylinder().surface->mesh()), 2, KMeansSegmentationOptions()).labels; },
+    0.51);
 }
 
 TEST(AutomaticSegmentation, FaceClusteringOnABoxWithACylinder)
 {
   // Measured 0.489: two halves of the box, the cylinder in one.
-  expectBoxWithCylinder("face clustering",
-    [] { return cutHierarchyAtCount(buildFaceClusterHierarchy(FaceGraph(boxWithCylinder().surface->mesh()), HierarchicalClusteringOptions()), 2); },
+  expectBoxWithCylinder(
+    "face clustering",
+    [] {
+      return cutHierarchyAtCount(
+        buildFaceClusterHierarchy(FaceGraph(boxWithCylinder().surface->mesh()), HierarchicalClusteringOptions()), 2);
+    },
     0.5);
 }
 
@@ -452,8 +495,9 @@ FaceClusterHierarchy referenceFaceClusterHierarchy(const FaceGraph& graph, const
     }
     const double direction = f > 0.0 ? std::max(0.0, (n.dot(D * n) + 2.0 * e.dot(n) + f) / f) : 0.0;
     const double gamma = irregularity(x.perimeter + y.perimeter - 2.0 * shared, area);
-    const double shape =
-      gamma > 0.0 ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma : 0.0;
+    const double shape = gamma > 0.0
+      ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma
+      : 0.0;
     return fit + options.directionWeight * direction + options.shapeWeight * shape;
   };
   const TriangleMesh& mesh = graph.mesh();
@@ -566,13 +610,14 @@ TEST(AutomaticSegmentation, FaceClusterHierarchyFollowsTheReferenceContractionOr
       const FaceClusterHierarchy reference = referenceFaceClusterHierarchy(graph, options);
       ASSERT_EQ(built.merges.size(), reference.merges.size()) << name;
       std::size_t firstDifference = 0;
-      while (firstDifference < built.merges.size() && built.merges[firstDifference] == reference.merges[firstDifference] &&
+      while (firstDifference < built.merges.size() &&
+        built.merges[firstDifference] == reference.merges[firstDifference] &&
         built.costs[firstDifference] == reference.costs[firstDifference])
       {
         ++firstDifference;
       }
-      EXPECT_EQ(firstDifference, built.merges.size()) << name << ", a2 = " << shapeWeight << ": merge " << firstDifference
-                                                      << " of " << built.merges.size() << " differs";
+      EXPECT_EQ(firstDifference, built.merges.size()) << name << ", a2 = " << shapeWeight << ": merge "
+                                                      << firstDifference << " of " << built.merges.size() << " differs";
       EXPECT_LT(built.costEvaluations, reference.costEvaluations / 2) << name;
       std::cout << name << ", a2 = " << shapeWeight << ": " << built.costEvaluations << " costs computed, "
                 << reference.costEvaluations << " by the reference\n";
@@ -694,7 +739,8 @@ TEST(AutomaticSegmentation, FaceClusteringInBlocks)
     ASSERT_EQ(restarted.costs.size(), plain.costs.size()) << name;
     for (std::size_t i = 0; i < plain.costs.size(); ++i)
     {
-      ASSERT_NEAR(restarted.costs[i], plain.costs[i], 1e-12 * (1.0 + std::abs(plain.costs[i]))) << name << ", merge " << i;
+      ASSERT_NEAR(restarted.costs[i], plain.costs[i], 1e-12 * (1.0 + std::abs(plain.costs[i])))
+        << name << ", merge " << i;
     }
     // Blocks of one face contract nothing: the greedy on all faces, the paper's tree to the bit.
     HierarchicalClusteringOptions single;
@@ -744,14 +790,17 @@ TEST(AutomaticSegmentation, EnsembleOnTheThreeShapes)
   // Measured 0.068 (0.063 before the boundaries are re-cut; the consensus cuts alone 0.087, convex
   // flooding alone 0.020): the three fingers; where the two that find them disagree, the other
   // three members decide.
-  expectFingers("ensemble",
+  expectFingers(
+    "ensemble",
     [] { return segmentByEnsemble(*fingers().surface, FingerCount + 1, EnsembleSegmentationOptions()).labels; }, 0.075);
   // Measured 0.0047 (as the watershed): the cut at the neck.
-  expectLobes("ensemble", [] { return segmentByEnsemble(*lobes().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.01);
+  expectLobes(
+    "ensemble", [] { return segmentByEnsemble(*lobes().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.01);
   // Measured 0.027 (0.021 before the boundaries are re-cut): the cylinder, cut at the box's
   // concave crease.
-  expectBoxWithCylinder("ensemble",
-    [] { return segmentByEnsemble(*boxWithCylinder().surface, 2, EnsembleSegmentationOptions()).labels; }, 0.03);
+  expectBoxWithCylinder(
+    "ensemble", [] { return segmentByEnsemble(*boxWithCylinder().surface, 2, EnsembleSegmentationOptions()).labels; },
+    0.03);
   const EnsembleSegmentationResult result =
     segmentByEnsemble(*fingers().surface, FingerCount + 1, EnsembleSegmentationOptions());
   EXPECT_EQ(result.members, 5);
@@ -766,7 +815,8 @@ TEST(AutomaticSegmentation, CombinedPartitionsFollowTheMajority)
   const std::vector<int>& parts = fingers().parts;
   const std::vector<int> other = segmentByKMeans(graph, FingerCount + 1, KMeansSegmentationOptions()).labels;
   ASSERT_NE(other, parts);
-  const PartitionConsensus majority = combinePartitions(graph, { { parts, 1.0 }, { other, 1.0 }, { parts, 1.0 } }, FingerCount + 1);
+  const PartitionConsensus majority =
+    combinePartitions(graph, { { parts, 1.0 }, { other, 1.0 }, { parts, 1.0 } }, FingerCount + 1);
   EXPECT_EQ(majority.labels, finalizeSegments(graph, parts, FingerCount + 1));
   EXPECT_GT(majority.atoms, FingerCount + 1);
   EXPECT_EQ(majority.merges, majority.atoms - (FingerCount + 1));
@@ -805,7 +855,8 @@ TEST(AutomaticSegmentation, CombinedPartitionsWeighZeroAreaFaces)
     quarters.push_back((graph.centroid(f).x() < 1.0 ? 0 : 1) + (graph.centroid(f).y() < 0.5 ? 0 : 2));
   }
   ASSERT_GT(std::count_if(graph.areas().begin(), graph.areas().end(), [](double a) { return a == 0.0; }), 0);
-  const PartitionConsensus consensus = combinePartitions(graph, { { halves, 1.0 }, { quarters, 1.0 }, { halves, 1.0 } }, 2, true);
+  const PartitionConsensus consensus =
+    combinePartitions(graph, { { halves, 1.0 }, { quarters, 1.0 }, { halves, 1.0 } }, 2, true);
   checkSegmentation(flattened, halves, consensus.labels, 2);
   EXPECT_EQ(consensus.labels, finalizeSegments(graph, halves, 2));
 }
@@ -818,7 +869,13 @@ TEST(AutomaticSegmentation, CombinedPartitionsIgnoreNumberingAndOrder)
   const int k = FingerCount + 1;
   const std::vector<std::vector<int>> members{ segmentByKMeans(graph, k, KMeansSegmentationOptions()).labels,
     segmentSpectrally(graph, k, SpectralSegmentationOptions()).labels, fingers().parts,
-    segmentByWatershed(graph, [] { WatershedOptions o; o.segmentCount = FingerCount + 1; return o; }()).labels };
+    segmentByWatershed(graph,
+      [] {
+        WatershedOptions o;
+        o.segmentCount = FingerCount + 1;
+        return o;
+      }())
+      .labels };
   std::vector<WeightedPartition> partitions, renamed, reversed;
   for (const std::vector<int>& labels : members)
   {
@@ -869,9 +926,8 @@ TEST(AutomaticSegmentation, RefinedBoundariesFindTheNeckAndTheCylindersCrease)
     return labels;
   };
   const TriangleMesh& lobesMesh = lobes().surface->mesh();
-  const std::vector<int> offNeck = wavy(lobesMesh, [](const Vector3& c) {
-    return c.z() > NeckHeight + 0.3 + 0.12 * std::sin(6.0 * std::atan2(c.y(), c.x()));
-  });
+  const std::vector<int> offNeck = wavy(lobesMesh,
+    [](const Vector3& c) { return c.z() > NeckHeight + 0.3 + 0.12 * std::sin(6.0 * std::atan2(c.y(), c.x())); });
   const double before = checkSegmentation(lobesMesh, lobes().parts, offNeck, 2);
   const FaceGraph lobesGraph(lobesMesh);
   const BoundaryRefinementResult refined = refineSegmentBoundaries(lobesGraph, offNeck, BoundaryRefinementOptions());
@@ -889,7 +945,8 @@ TEST(AutomaticSegmentation, RefinedBoundariesFindTheNeckAndTheCylindersCrease)
   const double crease = fingers().creaseAngle;
   const std::vector<int> offCrease = wavy(boxMesh, [crease](const Vector3& c) {
     const Vector3 d = c.normalized();
-    return std::acos(std::max(-1.0, std::min(1.0, d.x()))) < crease - 0.12 + 0.06 * std::sin(6.0 * std::atan2(d.z(), d.y()));
+    return std::acos(std::max(-1.0, std::min(1.0, d.x()))) <
+      crease - 0.12 + 0.06 * std::sin(6.0 * std::atan2(d.z(), d.y()));
   });
   const double boxBefore = checkSegmentation(boxMesh, boxWithCylinder().parts, offCrease, 2);
   const std::vector<int> boxRefined =
@@ -1004,7 +1061,9 @@ TEST(AutomaticSegmentation, CombinedPartitionsAndTheEnsembleRefuseBadInput)
     catch (const Error& error)
     {
       EXPECT_EQ(std::string(error.what()),
-        method + " needs an edge-manifold, consistently oriented surface (0 non-manifold and 3 inconsistently oriented edges)");
+        method +
+          " needs an edge-manifold, consistently oriented surface (0 non-manifold and 3 inconsistently oriented "
+          "edges)");
     }
   }
   EXPECT_THROW(segmentByEnsemble(*lobes().surface, 0, EnsembleSegmentationOptions()), Error);

@@ -1,6 +1,6 @@
 // Chart layout: the hull of known point sets, minimal boxes against their analytic areas, and the packing's scale.
-#include "Parameterization/ChartPacking.h"
 #include "Error.h"
+#include "Parameterization/ChartPacking.h"
 
 #include <gtest/gtest.h>
 

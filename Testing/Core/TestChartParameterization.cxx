@@ -1,9 +1,10 @@
-// parameterizeCharts: developable charts unroll without distortion, hemispheres without flips, packing, charts cut into disks (cutToDisk), LinABF against LSCM, and the errors.
+// parameterizeCharts: developable charts unroll without distortion, hemispheres without flips, packing, charts cut into
+// disks (cutToDisk), LinABF against LSCM, and the errors.
+#include "Error.h"
+#include "Mesh/MeshGenerators.h"
 #include "Parameterization/ChartParameterization.h"
 #include "Parameterization/CutToDisk.h"
 #include "Parameterization/LinearABF.h"
-#include "Error.h"
-#include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>
 
@@ -136,13 +137,13 @@ TEST(ChartParameterization, IsDeterministicAndSolversAgree)
     ChartParameterizationOptions other;
     other.solver = solver;
     const ChartParameterizationResult third = parameterizeCharts(sphere, labels, other);
-  ASSERT_EQ(first.uv.size(), second.uv.size());
-  for (std::size_t v = 0; v < first.uv.size(); ++v)
-  {
-    EXPECT_EQ(first.uv[v], second.uv[v]);
-  }
-  // The other solver's rounding may turn a chart to another of its near-equal minimal boxes, so
-  // the maps are compared by their distortion.
+    ASSERT_EQ(first.uv.size(), second.uv.size());
+    for (std::size_t v = 0; v < first.uv.size(); ++v)
+    {
+      EXPECT_EQ(first.uv[v], second.uv[v]);
+    }
+    // The other solver's rounding may turn a chart to another of its near-equal minimal boxes, so
+    // the maps are compared by their distortion.
     for (std::size_t f = 0; f < first.faces.size(); ++f)
     {
       EXPECT_NEAR(first.faces[f].stretch, third.faces[f].stretch, 1e-9);
@@ -267,7 +268,8 @@ TEST(ChartParameterization, MinimalBoxOfATurnedRectangle)
 
 TEST(ChartParameterization, OverlapCountSeesOverlappingCharts)
 {
-  const std::vector<Vector2> uv = { { 0.1, 0.1 }, { 0.6, 0.1 }, { 0.1, 0.6 }, { 0.2, 0.2 }, { 0.9, 0.2 }, { 0.2, 0.9 } };
+  const std::vector<Vector2> uv = { { 0.1, 0.1 }, { 0.6, 0.1 }, { 0.1, 0.6 }, { 0.2, 0.2 }, { 0.9, 0.2 },
+    { 0.2, 0.9 } };
   const std::vector<Triangle> triangles = { { { 0, 1, 2 } }, { { 3, 4, 5 } } };
   EXPECT_EQ(countChartOverlaps(uv, triangles, { 0, 1 }, 64), 1);
   EXPECT_EQ(countChartOverlaps(uv, triangles, { 0, 0 }, 64), 0);
@@ -313,7 +315,8 @@ std::string errorOf(const TriangleMesh& mesh, const std::vector<int>& labels, bo
 TEST(ChartParameterization, RefusesChartsThatAreNotDisks)
 {
   const TriangleMesh sphere = makeIcosphere(1.0, 2);
-  EXPECT_NE(errorOf(sphere, oneLabel(sphere, 5)).find("chart 5: it has 0 boundary loops and genus 0"), std::string::npos)
+  EXPECT_NE(
+    errorOf(sphere, oneLabel(sphere, 5)).find("chart 5: it has 0 boundary loops and genus 0"), std::string::npos)
     << errorOf(sphere, oneLabel(sphere, 5));
   const TriangleMesh torus = makeTorus(1.0, 0.3, 24, 12);
   EXPECT_NE(errorOf(torus, oneLabel(torus)).find("genus 1"), std::string::npos);
@@ -454,8 +457,8 @@ TEST(CutToDisk, RefusesWhatCannotBeCut)
 {
   EXPECT_THROW(cutToDisk(TriangleMesh()), Error);
   // Two separate triangles.
-  const TriangleMesh two({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(5, 0, 0), Vector3(6, 0, 0),
-                           Vector3(5, 1, 0) },
+  const TriangleMesh two(
+    { Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(0, 1, 0), Vector3(5, 0, 0), Vector3(6, 0, 0), Vector3(5, 1, 0) },
     { { { 0, 1, 2 } }, { { 3, 4, 5 } } });
   EXPECT_THROW(cutToDisk(two), Error);
   // One flag per edge, or the cut is refused.
@@ -548,8 +551,10 @@ double corner3D(const TriangleMesh& mesh, const Triangle& t, int k)
 
 double cornerUV(const std::vector<Vector2>& uv, const Triangle& t, int k)
 {
-  const Vector2 a = uv[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])] - uv[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
-  const Vector2 b = uv[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)])] - uv[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+  const Vector2 a = uv[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])] -
+    uv[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
+  const Vector2 b = uv[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 2) % 3)])] -
+    uv[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])];
   return std::atan2(std::abs(a.x() * b.y() - a.y() * b.x()), a.dot(b));
 }
 
@@ -597,7 +602,8 @@ TEST(LinearABFCharts, AnglesMeetTheTriangleAndVertexSums)
       EXPECT_GT(angles.angles[c + k], 0.0);
       vertexSum[v] += angles.angles[c + k];
       targetSum[v] += angles.targets[c + k];
-      logRatio[v] += std::log(std::sin(angles.angles[c + (k + 1) % 3])) - std::log(std::sin(angles.angles[c + (k + 2) % 3]));
+      logRatio[v] +=
+        std::log(std::sin(angles.angles[c + (k + 1) % 3])) - std::log(std::sin(angles.angles[c + (k + 2) % 3]));
     }
   }
   int interior = 0;

@@ -90,9 +90,11 @@ TEST(ClosestPoint, LocatorEqualsTheSearchOfEveryFace)
       a = 1.0 - a;
       b = 1.0 - b;
     }
-    const Vector3 on = mesh.point(t[0]) + a * (mesh.point(t[1]) - mesh.point(t[0])) + b * (mesh.point(t[2]) - mesh.point(t[0]));
+    const Vector3 on =
+      mesh.point(t[0]) + a * (mesh.point(t[1]) - mesh.point(t[0])) + b * (mesh.point(t[2]) - mesh.point(t[0]));
     queries.push_back(on);
-    queries.push_back(on + std::pow(10.0, -6.0 + 5.5 * unit(random)) * Vector3(noise(random), noise(random), noise(random)));
+    queries.push_back(
+      on + std::pow(10.0, -6.0 + 5.5 * unit(random)) * Vector3(noise(random), noise(random), noise(random)));
     queries.push_back(Vector3(-3 + 10 * unit(random), -3 + 10 * unit(random), -3 + 10 * unit(random)));
   }
   // Exactly above grid vertices and edge midpoints: up to six faces at the same distance.

@@ -1,11 +1,11 @@
 // The best-scored isoline of a harmonic field lies in the neck of a two-lobe shape.
 #include "BenchmarkMeshes.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <gtest/gtest.h>
 
@@ -68,8 +68,8 @@ TEST_P(ConcavityCut, BestIsolineLiesInTheNeck)
   }
   const std::vector<IsovalueScore> scores = scoreIsovalues(shape, solution.field, magnitudes, 50);
   ASSERT_EQ(scores.size(), 50u);
-  const auto best = std::max_element(scores.begin(), scores.end(),
-    [](const IsovalueScore& a, const IsovalueScore& b) { return a.score < b.score; });
+  const auto best = std::max_element(
+    scores.begin(), scores.end(), [](const IsovalueScore& a, const IsovalueScore& b) { return a.score < b.score; });
   const std::vector<Isoline> lines = extractIsolines(shape, solution.field, best->value);
   ASSERT_FALSE(lines.empty());
   double worst = 0.0;
@@ -83,8 +83,8 @@ TEST_P(ConcavityCut, BestIsolineLiesInTheNeck)
   const double tolerance = 0.1 * std::min(radii[0], radii[1]);
   RecordProperty("Weighting", GetParam().name);
   RecordProperty("WorstDistanceFromNeck", std::to_string(worst));
-  std::cout << GetParam().name << ": best isovalue " << best->value << ", farthest isoline point "
-            << worst << " from the neck (tolerance " << tolerance << ")" << std::endl;
+  std::cout << GetParam().name << ": best isovalue " << best->value << ", farthest isoline point " << worst
+            << " from the neck (tolerance " << tolerance << ")" << std::endl;
   if (GetParam().mustFindTheNeck)
   {
     EXPECT_LE(worst, tolerance);

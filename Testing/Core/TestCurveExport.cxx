@@ -1,6 +1,6 @@
 // Curve export operators: scissor keeps curves and area exactly, snap and inverse snap keep connectivity.
-#include "Export/CurveExport.h"
 #include "Error.h"
+#include "Export/CurveExport.h"
 #include "Geodesic/SurfaceLocation.h"
 #include "Harmonic/Isolines.h"
 #include "Mesh/MeshGenerators.h"
@@ -69,7 +69,8 @@ bool joined(const TriangleMesh& mesh, int a, int b)
 
 // The scissor invariants: the curves' points are vertices, the mesh is a valid manifold with the
 // input's area and Euler characteristic, cut edges separate different charts only where cut.
-void expectValidScissor(const TriangleMesh& input, const std::vector<SurfaceCurve>& curves, const CurveExportResult& result)
+void expectValidScissor(
+  const TriangleMesh& input, const std::vector<SurfaceCurve>& curves, const CurveExportResult& result)
 {
   const MeshReport before = inspectMesh(input);
   const MeshReport report = inspectMesh(result.mesh);
@@ -207,8 +208,8 @@ TEST(CurveExport, ScissorHandlesVerticesInteriorPointsAndCrossings)
   curves.push_back(placeCurveOnSurface(*surface,
     { Vector3(0.0, 1.3, 0.0), Vector3(2.0, 2.0, 0.0), Vector3(3.3, 2.6, 0.0), Vector3(4.0, 3.2, 0.0) }, false, inf,
     "stroke"));
-  curves.push_back(placeCurveOnSurface(*surface,
-    { Vector3(1.1, 0.0, 0.0), Vector3(2.7, 2.75, 0.0), Vector3(3.1, 4.0, 0.0) }, false, inf, "stroke"));
+  curves.push_back(placeCurveOnSurface(
+    *surface, { Vector3(1.1, 0.0, 0.0), Vector3(2.7, 2.75, 0.0), Vector3(3.1, 4.0, 0.0) }, false, inf, "stroke"));
   const CurveExportResult result = exportCurves(grid, curves, CurveExportOptions());
   expectValidScissor(grid, curves, result);
   EXPECT_EQ(result.chartCount, 4);
@@ -218,8 +219,9 @@ TEST(CurveExport, ScissorHandlesVerticesInteriorPointsAndCrossings)
     throughVertex += result.originalPointIds[static_cast<std::size_t>(v)] == 2 * 5 + 2 ? 1 : 0;
   }
   EXPECT_EQ(throughVertex, 1);
-  EXPECT_EQ(result.mesh.vertexCount(), grid.vertexCount() + static_cast<int>(curves[0].points.size()) +
-    static_cast<int>(curves[1].points.size()) - 1 + 1); // all points but the vertex, plus the crossing
+  EXPECT_EQ(result.mesh.vertexCount(),
+    grid.vertexCount() + static_cast<int>(curves[0].points.size()) + static_cast<int>(curves[1].points.size()) - 1 +
+      1); // all points but the vertex, plus the crossing
 }
 
 TEST(CurveExport, ScissorAcceptsACurveCrossingItself)
@@ -256,7 +258,8 @@ TEST(CurveExport, ScissorRefusesAZeroAreaTriangleOnTheCurve)
 TEST(CurveExport, ErrorsNameTheCurveAndPoint)
 {
   const TriangleMesh grid = makeGrid(4.0, 4.0, 4, 4);
-  const std::vector<SurfaceCurve> outside{ SurfaceCurve{ { Vector3(0.5, 0.2, 0), Vector3(0.6, 0.2, 0) }, { 99 }, false } };
+  const std::vector<SurfaceCurve> outside{ SurfaceCurve{
+    { Vector3(0.5, 0.2, 0), Vector3(0.6, 0.2, 0) }, { 99 }, false } };
   EXPECT_THROW(exportCurves(grid, outside, CurveExportOptions()), Error);
   // Segments in triangles 0 and 31 (opposite corners of the grid) do not touch.
   const std::vector<SurfaceCurve> apart{ SurfaceCurve{
@@ -340,13 +343,14 @@ TEST(CurveExport, InverseSnapMovesVerticesExactlyOntoTheCurveWithoutFlips)
     }
   }
   EXPECT_EQ(static_cast<int>(moved.size()), result.movedVertices);
-  EXPECT_EQ(result.movedVertices + result.refusedFlips + result.droppedPoints,
-    static_cast<int>(curves[0].points.size()));
+  EXPECT_EQ(
+    result.movedVertices + result.refusedFlips + result.droppedPoints, static_cast<int>(curves[0].points.size()));
   for (int f = 0; f < sphere.faceCount(); ++f)
   {
     const Triangle& t = sphere.triangle(f);
     const Vector3 before = (sphere.point(t[1]) - sphere.point(t[0])).cross(sphere.point(t[2]) - sphere.point(t[0]));
-    const Vector3 after = (result.mesh.point(t[1]) - result.mesh.point(t[0])).cross(result.mesh.point(t[2]) - result.mesh.point(t[0]));
+    const Vector3 after =
+      (result.mesh.point(t[1]) - result.mesh.point(t[0])).cross(result.mesh.point(t[2]) - result.mesh.point(t[0]));
     EXPECT_GT(before.dot(after), 0.0) << f;
   }
 }

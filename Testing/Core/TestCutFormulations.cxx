@@ -1,4 +1,5 @@
-// The cut of the point-value formulation against SeamCut's least-squares cut: two-lobe shapes, the camel, psb-dev strokes.
+// The cut of the point-value formulation against SeamCut's least-squares cut: two-lobe shapes, the camel, psb-dev
+// strokes.
 #include "BenchmarkMeshes.h"
 #include "Evaluation/PrincetonBenchmark.h"
 #include "Evaluation/SimulatedStrokes.h"
@@ -6,12 +7,12 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshGenerators.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/Triangulation.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <gtest/gtest.h>
 
@@ -35,10 +36,10 @@ namespace
 {
 // These tests solve each cut twice on meshes of 20,000 triangles and more: minutes under
 // valgrind, whose memory checks the smaller harmonic-field tests make on the same code.
-#define KERF_SKIP_UNDER_VALGRIND()                                                                 \
-  if (KERF_RUNNING_ON_VALGRIND)                                                                    \
-  {                                                                                                \
-    GTEST_SKIP() << "too slow under valgrind";                                                     \
+#define KERF_SKIP_UNDER_VALGRIND()                                                                                     \
+  if (KERF_RUNNING_ON_VALGRIND)                                                                                        \
+  {                                                                                                                    \
+    GTEST_SKIP() << "too slow under valgrind";                                                                         \
   }
 
 // The points of a legacy VTK poly-data file (the "POINTS n type" section).
@@ -179,13 +180,16 @@ CutComparison compareCuts(const StrokeSurface& surface, const std::vector<Vector
   StrokeOptions options;
   options.offset = surface.offset;
   options.maximumDistance = 5.0 * surface.offset;
-  const StrokeConstraintSet set = strokeConstraints(surface.mesh, surface.locator, surface.normals, { stroke }, options);
+  const StrokeConstraintSet set =
+    strokeConstraints(surface.mesh, surface.locator, surface.normals, { stroke }, options);
   FieldConstraints constraints;
   constraints.soft = set.constraints;
   constraints.softWeight = laplacianMeanDiagonal(surface.mesh, surface.weights);
   CutComparison comparison;
-  comparison.squares = cutAlong(surface.mesh, surface.weights, constraints, stroke, SoftConstraintFormulation::LeastSquares);
-  comparison.points = cutAlong(surface.mesh, surface.weights, constraints, stroke, SoftConstraintFormulation::PointValues);
+  comparison.squares =
+    cutAlong(surface.mesh, surface.weights, constraints, stroke, SoftConstraintFormulation::LeastSquares);
+  comparison.points =
+    cutAlong(surface.mesh, surface.weights, constraints, stroke, SoftConstraintFormulation::PointValues);
   if (comparison.squares.segments == 0 || comparison.points.segments == 0)
   {
     return comparison;

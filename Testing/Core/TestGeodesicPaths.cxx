@@ -190,7 +190,8 @@ TEST(GeodesicPaths, LoopIsClosedAndSimple)
     expected += greatCircle(surfacePosition(sphere, points[i]), surfacePosition(sphere, points[(i + 1) % 4]));
   }
   EXPECT_NEAR(loop.path.length, expected, 0.01 * expected);
-  const GeodesicLoop bowTie = geodesicLoop(*surface, { points[0], points[2], points[1], points[3] }, GeodesicPathOptions());
+  const GeodesicLoop bowTie =
+    geodesicLoop(*surface, { points[0], points[2], points[1], points[3] }, GeodesicPathOptions());
   EXPECT_GE(bowTie.selfCrossings, 1);
 }
 
@@ -233,7 +234,8 @@ TEST(GeodesicPaths, AnisotropicPathsFollowTheRidge)
     anisotropic.metric.gamma = 4.0;
     const double a = axialAlignment(shortestPath(*surface, from, to, isotropic));
     const double b = axialAlignment(shortestPath(*surface, from, to, anisotropic));
-    RecordProperty("Alignment" + std::to_string(static_cast<int>(s[0] * 10)), std::to_string(a) + " " + std::to_string(b));
+    RecordProperty(
+      "Alignment" + std::to_string(static_cast<int>(s[0] * 10)), std::to_string(a) + " " + std::to_string(b));
     EXPECT_GT(b, a);
     isotropicSum += a;
     anisotropicSum += b;
@@ -323,7 +325,8 @@ TEST(GeodesicPaths, PathToAVertexEndsWithoutDetour)
     {
       offPlane = std::max(offPlane, std::abs(p.y()));
     }
-    RecordProperty(std::string("QuarterLength") + (vectorDijkstra ? "VectorDijkstra" : "Heat"), std::to_string(path.length));
+    RecordProperty(
+      std::string("QuarterLength") + (vectorDijkstra ? "VectorDijkstra" : "Heat"), std::to_string(path.length));
     EXPECT_NEAR(path.length, quarter, 0.005 * quarter);
     EXPECT_LE(offPlane, 0.005);
     expectOnSurface(sphere, path.curve);
@@ -364,7 +367,8 @@ TEST(GeodesicPaths, PolylineJoinsTheLegsThroughEveryPoint)
   EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[1] }, true, GeodesicPathOptions()), Error);
   EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[0], points[1] }, false, GeodesicPathOptions()), Error);
   // A loop's last point may not repeat its first.
-  EXPECT_THROW(geodesicPolyline(*surface, { points[0], points[1], points[2], points[0] }, true, GeodesicPathOptions()), Error);
+  EXPECT_THROW(
+    geodesicPolyline(*surface, { points[0], points[1], points[2], points[0] }, true, GeodesicPathOptions()), Error);
 }
 
 TEST(GeodesicPaths, LegCacheRetracesOnlyTheLegsOfAMovedPoint)
@@ -427,7 +431,8 @@ TEST(GeodesicPaths, PathsToPointsNearAVertexEndThroughIt)
     {
       GeodesicPathOptions options;
       options.vectorDijkstra = vectorDijkstra;
-      for (const SurfacePath& path : { shortestPath(*surface, near, far, options), shortestPath(*surface, far, near, options) })
+      for (const SurfacePath& path :
+        { shortestPath(*surface, near, far, options), shortestPath(*surface, far, near, options) })
       {
         EXPECT_NEAR(path.length, exact, 0.01 * exact) << "vertex " << v;
         expectOnSurface(sphere, path.curve);

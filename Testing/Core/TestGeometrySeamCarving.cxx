@@ -1,9 +1,10 @@
-// Tests of geometry seam carving's editing: feature preservation against plain Laplace editing, exact undo, manifoldness, errors.
-#include "SeamCarving/GeometrySeamCarving.h"
+// Tests of geometry seam carving's editing: feature preservation against plain Laplace editing, exact undo,
+// manifoldness, errors.
 #include "Error.h"
 #include "Geometry/SurfaceDescriptors.h"
 #include "Mesh/MeshGenerators.h"
 #include "Mesh/MeshValidation.h"
+#include "SeamCarving/GeometrySeamCarving.h"
 #include "SeamCarving/GeometrySeams.h"
 
 #include <gtest/gtest.h>
@@ -138,8 +139,8 @@ TEST(GeometrySeamCarving, StretchKeepsTheBumps)
     carved = carving.deform(translation(-1.5 * step / 10.0));
   }
   const double carvedChange = edgeLengthChange(setup.mesh, bumps, carved);
-  std::printf("stretch %.2f: plain Laplace editing %.4f, seam carving %.4f (%d segments split, %d skipped)\n",
-    stretch, plainChange, carvedChange, carved.splitSegments, carved.skippedOperations);
+  std::printf("stretch %.2f: plain Laplace editing %.4f, seam carving %.4f (%d segments split, %d skipped)\n", stretch,
+    plainChange, carvedChange, carved.splitSegments, carved.skippedOperations);
   EXPECT_EQ(plainResult.splitSegments, 0);
   EXPECT_GT(carved.splitSegments, 0);
   EXPECT_EQ(carved.collapsedSegments, 0);

@@ -1,8 +1,8 @@
 // Geometry seam carving's preprocessing: the field against its analytic answer, ring invariants, errors.
-#include "SeamCarving/GeometrySeams.h"
 #include "Error.h"
 #include "Geometry/SurfaceDescriptors.h"
 #include "Mesh/MeshGenerators.h"
+#include "SeamCarving/GeometrySeams.h"
 
 #include <gtest/gtest.h>
 

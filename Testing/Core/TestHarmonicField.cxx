@@ -2,12 +2,12 @@
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Numerics/LaplacianWeights.h"
-#include "Numerics/NestedDissection.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Mesh/MeshGenerators.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/LaplacianWeights.h"
+#include "Numerics/NestedDissection.h"
 
 #include <gtest/gtest.h>
 
@@ -103,7 +103,8 @@ double interpolate(const TriangleMesh& mesh, const std::vector<double>& field, c
   return s.barycentric[0] * field[t[0]] + s.barycentric[1] * field[t[1]] + s.barycentric[2] * field[t[2]];
 }
 
-double maximumMisfit(const TriangleMesh& mesh, const std::vector<double>& field, const std::vector<SoftConstraint>& soft)
+double maximumMisfit(
+  const TriangleMesh& mesh, const std::vector<double>& field, const std::vector<SoftConstraint>& soft)
 {
   double misfit = 0.0;
   for (const SoftConstraint& s : soft)
@@ -168,8 +169,7 @@ void expectKerfError(F&& call, const std::string& expectedFragment)
   }
   catch (const Error& error)
   {
-    EXPECT_NE(std::string(error.what()).find(expectedFragment), std::string::npos)
-      << "message: " << error.what();
+    EXPECT_NE(std::string(error.what()).find(expectedFragment), std::string::npos) << "message: " << error.what();
   }
 }
 
@@ -474,8 +474,7 @@ TEST(HarmonicField, CylinderFieldIsRotationallySymmetricForEveryWeighting)
 TEST(HarmonicField, FaceGradientsOfLinearFieldOnTiltedPlane)
 {
   const TriangleMesh flat = makeGrid(3.0, 2.0, 15, 10);
-  const Eigen::Matrix3d rotation =
-    Eigen::AngleAxisd(0.7, Vector3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Vector3(1.0, 2.0, -0.5).normalized()).toRotationMatrix();
   const Vector3 shift(0.3, -1.2, 2.5);
   std::vector<Vector3> points;
   for (const Vector3& p : flat.points())
@@ -761,8 +760,8 @@ TEST(HarmonicField, HardOnlyCaching)
   const TriangleMesh grid = makeGrid(2.0, 1.5, columns, rows);
   const std::vector<double> weights = cotangentWeights(grid);
   HarmonicFieldSolver solver;
-  ASSERT_EQ(solver.solve(grid, weights, gridColumnConstraints(columns, rows)).work,
-    HarmonicFieldSolution::Work::Factorization);
+  ASSERT_EQ(
+    solver.solve(grid, weights, gridColumnConstraints(columns, rows)).work, HarmonicFieldSolution::Work::Factorization);
   const FieldConstraints other = gridColumnConstraints(columns, rows, -3.0, 2.0);
   const HarmonicFieldSolution b = solver.solve(grid, weights, other);
   EXPECT_EQ(b.work, HarmonicFieldSolution::Work::BackSubstitution);
@@ -830,7 +829,8 @@ TEST(HarmonicField, MixedHardAndConsistentSoftKeepLinearField)
     {
       for (int v : m.mesh.triangle(s.face))
       {
-        touchesHard = touchesHard || v < MixedCylinder::Around || v >= (MixedCylinder::Rings - 1) * MixedCylinder::Around;
+        touchesHard =
+          touchesHard || v < MixedCylinder::Around || v >= (MixedCylinder::Rings - 1) * MixedCylinder::Around;
       }
     }
     ASSERT_TRUE(touchesHard);
@@ -922,8 +922,8 @@ std::vector<SoftConstraint> scatteredConstraints(const TriangleMesh& mesh, int c
 // non-hard vertices. Least squares (SeamCut, Eq. 1): (L_F^T L_F + w^2 C_F^T C_F) f_F =
 // -L_F^T L_D f_D + w^2 C_F^T (c - C_D f_D). Point values: (L_FF + K w C_F^T C_F) f_F = -L_FD f_D +
 // K w C_F^T (c - C_D f_D), K = HarmonicFieldSolver::PointValueStiffness.
-std::vector<double> denseReference(const TriangleMesh& mesh, const std::vector<double>& weights,
-  const FieldConstraints& c)
+std::vector<double> denseReference(
+  const TriangleMesh& mesh, const std::vector<double>& weights, const FieldConstraints& c)
 {
   const int n = mesh.vertexCount();
   Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n, n);
@@ -1184,7 +1184,9 @@ TEST(HarmonicField, RefusesBadHardConstraints)
   const double nan = std::numeric_limits<double>::quiet_NaN();
   expectKerfError([&] { solver.solve(grid, weights, hard({ 0, 3 }, { 0.0, nan })); }, "NaN");
   expectKerfError(
-    [&] { solver.solve(grid, weights, hard({ 0, 3 }, { std::numeric_limits<double>::infinity(), 1.0 })); },
+    [&] {
+      solver.solve(grid, weights, hard({ 0, 3 }, { std::numeric_limits<double>::infinity(), 1.0 }));
+    },
     "infinite");
   expectKerfError([&] { solver.solve(grid, weights, hard({ 0, 3, 0 }, { 0.0, 1.0, 0.5 })); }, "vertex 0");
   expectKerfError([&] { solver.solve(grid, weights, hard({ 0, 3 }, { 0.0 })); }, "values");
@@ -1192,7 +1194,9 @@ TEST(HarmonicField, RefusesBadHardConstraints)
   EXPECT_NO_THROW(solver.solve(grid, weights, hard({ 0, 3, 0 }, { 0.0, 1.0, 0.0 })));
   // Wrong number of weights.
   expectKerfError(
-    [&] { solver.solve(grid, std::vector<double>(weights.size() - 1, 1.0), hard({ 0, 3 }, { 0.0, 1.0 })); },
+    [&] {
+      solver.solve(grid, std::vector<double>(weights.size() - 1, 1.0), hard({ 0, 3 }, { 0.0, 1.0 }));
+    },
     "weight");
 }
 
@@ -1215,8 +1219,7 @@ TEST(HarmonicField, RefusesBadSoftConstraints)
   EXPECT_NO_THROW(solver.solve(grid, weights, soft(faces - 1, 1.0, 1.0)));
   expectKerfError([&] { solver.solve(grid, weights, soft(faces, 1.0, 1.0)); }, "face " + std::to_string(faces));
   expectKerfError([&] { solver.solve(grid, weights, soft(-1, 1.0, 1.0)); }, "face -1");
-  expectKerfError(
-    [&] { solver.solve(grid, weights, soft(0, std::numeric_limits<double>::quiet_NaN(), 1.0)); }, "NaN");
+  expectKerfError([&] { solver.solve(grid, weights, soft(0, std::numeric_limits<double>::quiet_NaN(), 1.0)); }, "NaN");
   FieldConstraints nanBarycentric = soft(0, 1.0, 1.0);
   nanBarycentric.soft[0].barycentric.x() = std::numeric_limits<double>::quiet_NaN();
   expectKerfError([&] { solver.solve(grid, weights, nanBarycentric); }, "NaN");
@@ -1241,8 +1244,7 @@ TEST(StrokeConstraints, StraightStrokeOnPlane)
   const ClosestPointLocator locator(grid);
   const std::vector<Vector3> normals = computeVertexNormals(grid);
   // Three collinear segments of different lengths.
-  const std::vector<Vector3> stroke = { { 0.5, 0.6, 0.0 }, { 0.8, 0.75, 0.0 }, { 1.0, 0.85, 0.0 },
-    { 1.4, 1.05, 0.0 } };
+  const std::vector<Vector3> stroke = { { 0.5, 0.6, 0.0 }, { 0.8, 0.75, 0.0 }, { 1.0, 0.85, 0.0 }, { 1.4, 1.05, 0.0 } };
   StrokeOptions options;
   options.samplesPerSegment = 4;
   options.offset = 0.03;
@@ -1350,27 +1352,40 @@ TEST(StrokeConstraints, RefusesFarAndDegenerateStrokes)
   options.maximumDistance = 0.1;
   // The second half of the stroke leaves the surface.
   expectKerfError(
-    [&] { strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 1.0, 1.0, 1.0 } } }, options); },
+    [&] {
+      strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 1.0, 1.0, 1.0 } } }, options);
+    },
     "away from the surface");
   // One point, or the same point twice.
-  expectKerfError([&] { strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 } } }, options); },
+  expectKerfError(
+    [&] {
+      strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 } } }, options);
+    },
     "two distinct points");
   expectKerfError(
-    [&] { strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 0.5, 0.5, 0.0 } } }, options); },
+    [&] {
+      strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 0.5, 0.5, 0.0 } } }, options);
+    },
     "two distinct points");
   expectKerfError([&] { strokeConstraints(grid, locator, normals, {}, options); }, "no constraint");
   // A stroke along the normal gives no constraint.
   expectKerfError(
-    [&] { strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 0.5, 0.5, 0.05 } } }, options); },
+    [&] {
+      strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 0.5, 0.5, 0.05 } } }, options);
+    },
     "no constraint");
   const double nan = std::numeric_limits<double>::quiet_NaN();
   expectKerfError(
-    [&] { strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { nan, 0.5, 0.0 } } }, options); },
+    [&] {
+      strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { nan, 0.5, 0.0 } } }, options);
+    },
     "NaN");
   StrokeOptions noOffset = options;
   noOffset.offset = 0.0;
   expectKerfError(
-    [&] { strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 1.0, 0.5, 0.0 } } }, noOffset); },
+    [&] {
+      strokeConstraints(grid, locator, normals, { { { 0.5, 0.5, 0.0 }, { 1.0, 0.5, 0.0 } } }, noOffset);
+    },
     "offset");
 }
 
@@ -1446,7 +1461,8 @@ TEST(StrokeConstraints, SparseStrokeFollowsTheSphere)
     EXPECT_NEAR(p.z(), 0.0, 1e-3 * radius) << "sample " << i;
     // Sample k of segment j at longitude (j + (k + 1/2) / 4) * 120 degrees.
     const double expected = 120.0 * (static_cast<double>(i / 4) + (static_cast<double>(i % 4) + 0.5) / 4.0);
-    EXPECT_NEAR(std::atan2(p.y(), p.x()) * 180.0 / Pi + (expected > 180.0 ? 360.0 : 0.0), expected, 1.0) << "sample " << i;
+    EXPECT_NEAR(std::atan2(p.y(), p.x()) * 180.0 / Pi + (expected > 180.0 ? 360.0 : 0.0), expected, 1.0)
+      << "sample " << i;
   }
   for (std::size_t i = 0; i < set.positions.size(); ++i)
   {
@@ -1455,8 +1471,7 @@ TEST(StrokeConstraints, SparseStrokeFollowsTheSphere)
   // The stroke's own points are still held to the allowed distance.
   std::vector<Vector3> away = stroke;
   away[1] *= 1.5;
-  expectKerfError([&] { strokeConstraints(sphere, locator, normals, { away }, options); },
-    "stroke 0 point 1 is");
+  expectKerfError([&] { strokeConstraints(sphere, locator, normals, { away }, options); }, "stroke 0 point 1 is");
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1538,7 +1553,8 @@ TEST(ClosestPoint, LocatorMatchesBruteForceAroundTorus)
     {
       const Triangle& t = torus.triangle(f);
       Vector3 barycentric;
-      const Vector3 p = closestPointOnTriangle(query, torus.point(t[0]), torus.point(t[1]), torus.point(t[2]), barycentric);
+      const Vector3 p =
+        closestPointOnTriangle(query, torus.point(t[0]), torus.point(t[1]), torus.point(t[2]), barycentric);
       const double d = (p - query).norm();
       if (d < best)
       {
@@ -1567,7 +1583,8 @@ TEST(ClosestPoint, LocatorMatchesBruteForceAroundTorus)
       // Only a tie may pick another face.
       Vector3 barycentric;
       const Triangle& u = torus.triangle(hit.face);
-      const Vector3 p = closestPointOnTriangle(query, torus.point(u[0]), torus.point(u[1]), torus.point(u[2]), barycentric);
+      const Vector3 p =
+        closestPointOnTriangle(query, torus.point(u[0]), torus.point(u[1]), torus.point(u[2]), barycentric);
       EXPECT_NEAR((p - query).norm(), best, 1e-12) << "query " << query.transpose();
     }
   }

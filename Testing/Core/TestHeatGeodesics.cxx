@@ -26,7 +26,8 @@ struct ErrorStatistics
 
 // Relative errors of `distance` against `exact` over the vertices where `include` holds.
 template <typename Exact, typename Include>
-ErrorStatistics relativeErrors(const TriangleMesh& mesh, const std::vector<double>& distance, Exact exact, Include include)
+ErrorStatistics relativeErrors(
+  const TriangleMesh& mesh, const std::vector<double>& distance, Exact exact, Include include)
 {
   ErrorStatistics s;
   for (int v = 0; v < mesh.vertexCount(); ++v)
@@ -86,8 +87,8 @@ TEST(HeatGeodesics, SphereMatchesGreatCircleDistance)
   from.vertices = { source };
   const GeodesicDistance result = heat.compute(from);
   EXPECT_DOUBLE_EQ(result.distance[source], 0.0);
-  const ErrorStatistics e = relativeErrors(sphere, result.distance,
-    [&](const Vector3& p) { return std::acos(std::clamp(p.dot(s), -1.0, 1.0)); },
+  const ErrorStatistics e = relativeErrors(
+    sphere, result.distance, [&](const Vector3& p) { return std::acos(std::clamp(p.dot(s), -1.0, 1.0)); },
     [&](int v) { return !inOneRing(sphere, source, v); });
   RecordProperty("MeanRelativeError", std::to_string(e.mean));
   RecordProperty("MaximumRelativeError", std::to_string(e.maximum));
@@ -105,7 +106,8 @@ TEST(HeatGeodesics, EveryOrderingGivesTheSameDistances)
   HeatGeodesicOptions options;
   options.ordering = CholeskyOrdering::AMD;
   const std::vector<double> reference = HeatGeodesics(sphere, options).compute(from).distance;
-  for (CholeskyOrdering ordering : { CholeskyOrdering::Automatic, CholeskyOrdering::METIS, CholeskyOrdering::Geometric })
+  for (CholeskyOrdering ordering :
+    { CholeskyOrdering::Automatic, CholeskyOrdering::METIS, CholeskyOrdering::Geometric })
   {
     options.ordering = ordering;
     const std::vector<double> distance = HeatGeodesics(sphere, options).compute(from).distance;
@@ -135,8 +137,8 @@ TEST(HeatGeodesics, PointInsideAFaceMatchesGreatCircleDistance)
   from.points = { point };
   const GeodesicDistance result = heat.compute(from);
   const Triangle& t = sphere.triangle(point.face);
-  const ErrorStatistics e = relativeErrors(sphere, result.distance,
-    [&](const Vector3& p) { return std::acos(std::clamp(p.dot(s), -1.0, 1.0)); },
+  const ErrorStatistics e = relativeErrors(
+    sphere, result.distance, [&](const Vector3& p) { return std::acos(std::clamp(p.dot(s), -1.0, 1.0)); },
     [&](int v) { return !inOneRing(sphere, t[0], v) && !inOneRing(sphere, t[1], v) && !inOneRing(sphere, t[2], v); });
   // Measured: mean 0.3%, maximum 4.7% (two rings out, where the heat flow's direction is
   // least accurate; a vertex source gets that ring by unfolding).
@@ -174,8 +176,8 @@ TEST(HeatGeodesics, EquatorCurveGivesLatitude)
   const HeatGeodesics heat(sphere);
   const GeodesicDistance result = heat.compute(from);
   // Latitude, away from the band of faces that hold the curve.
-  const ErrorStatistics e = relativeErrors(sphere, result.distance,
-    [](const Vector3& p) { return std::asin(std::min(std::abs(p.z()), 1.0)); },
+  const ErrorStatistics e = relativeErrors(
+    sphere, result.distance, [](const Vector3& p) { return std::asin(std::min(std::abs(p.z()), 1.0)); },
     [&](int v) { return std::abs(sphere.point(v).z()) > 0.1; });
   EXPECT_LE(e.mean, 0.01);
   EXPECT_LE(e.maximum, 0.03);
@@ -198,7 +200,8 @@ TEST(HeatGeodesics, PlanarGridMatchesEuclideanDistance)
     const GeodesicDistance result = heat.compute(from);
     // Beyond five cells: nearer, the one-cell heat step and the triangles' one diagonal direction
     // skew the flow most (PlanarGridBiasShrinksWithTheTimeStepNotTheCells measures the bias beyond).
-    const ErrorStatistics e = relativeErrors(grid, result.distance, [&](const Vector3& p) { return (p - c).norm(); },
+    const ErrorStatistics e = relativeErrors(
+      grid, result.distance, [&](const Vector3& p) { return (p - c).norm(); },
       [&](int v) { return (grid.point(v) - c).norm() > 5.0 / cells; });
     RecordProperty("MeanRelativeError" + std::to_string(static_cast<int>(boundary)), std::to_string(e.mean));
     // Measured with the mean of both conditions: mean 1.2%, maximum 4.1% (just past five cells).
@@ -250,8 +253,8 @@ TEST(HeatGeodesics, PlanarGridBiasShrinksWithTheTimeStepNotTheCells)
   };
   const double coarse = axialBias(60, 1.0), fine = axialBias(120, 1.0);
   const double longer = axialBias(120, 4.0), longest = axialBias(120, 16.0);
-  RecordProperty("AxialBias", std::to_string(coarse) + " " + std::to_string(fine) + " " + std::to_string(longer) + " " +
-      std::to_string(longest));
+  RecordProperty("AxialBias",
+    std::to_string(coarse) + " " + std::to_string(fine) + " " + std::to_string(longer) + " " + std::to_string(longest));
   // Short along the axes at t = h^2, by the same fraction at both resolutions.
   EXPECT_LT(fine, -0.015);
   EXPECT_GT(fine, -0.03);

@@ -1,9 +1,9 @@
 // Huge-page work buffers: the allocator's blocks, the advice the kernel records for them, and the
 // CHOLMOD allocator that Kerf's analyses and factorizations install while they run.
+#include "Mesh/MeshGenerators.h"
 #include "Numerics/HugePages.h"
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/SupernodalFactorization.h"
-#include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>
 
@@ -11,9 +11,9 @@
 
 #include <algorithm>
 #include <condition_variable>
-#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <memory>
 #include <mutex>

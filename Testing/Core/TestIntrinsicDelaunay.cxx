@@ -1,10 +1,10 @@
 // The intrinsic Delaunay Laplacian: Delaunay flips, nonnegative weights, linear precision and the maximum principle.
 #include "Error.h"
-#include "Numerics/IntrinsicTriangulation.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
+#include "Numerics/IntrinsicTriangulation.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <gtest/gtest.h>
 

@@ -1,14 +1,14 @@
 // Isolines of piecewise-linear fields: extraction on analytic fields, ROI Scissor scores and cut sides.
 #include "Error.h"
-#include "Geometry/ClosestPoint.h"
 #include "Evaluation/SegmentationMetrics.h"
 #include "Evaluation/SimulatedStrokes.h"
-#include "Numerics/FieldGradient.h"
+#include "Geometry/ClosestPoint.h"
 #include "Harmonic/HarmonicCutSession.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <gtest/gtest.h>
 
@@ -429,8 +429,8 @@ TEST(Isolines, ScoresAgreeOnSphereWithVertexValues)
 {
   // A polynomial field on a sphere, and isovalues that hit vertex values exactly.
   const TriangleMesh sphere = makeIcosphere(1.0, 3);
-  std::vector<double> field = sampleField(
-    sphere, [](const Vector3& p) { return p.x() + 0.3 * p.y() * p.y() - p.z() * p.z() * p.z(); });
+  std::vector<double> field =
+    sampleField(sphere, [](const Vector3& p) { return p.x() + 0.3 * p.y() * p.y() - p.z() * p.z() * p.z(); });
   // Quantize the field to half steps, so that many vertices (and flat faces) sit exactly on the
   // sampled values.
   const double lo0 = *std::min_element(field.begin(), field.end());
@@ -444,8 +444,7 @@ TEST(Isolines, ScoresAgreeOnSphereWithVertexValues)
   for (double& f : field)
   {
     const int halfSteps = static_cast<int>(std::lround((f - lo0) / step * 2.0));
-    f = halfSteps % 2 == 0 ? sampled(halfSteps / 2)
-                           : 0.5 * (sampled(halfSteps / 2) + sampled(halfSteps / 2 + 1));
+    f = halfSteps % 2 == 0 ? sampled(halfSteps / 2) : 0.5 * (sampled(halfSteps / 2) + sampled(halfSteps / 2 + 1));
   }
   const std::vector<double> magnitudes = gradientMagnitudes(sphere, field);
   const std::vector<IsovalueScore> scores = scoreIsovalues(sphere, field, magnitudes, count);

@@ -47,7 +47,8 @@ TEST(IsophoticMetric, EulerFormulaOnACylinder)
   for (double phi : { 0.3, 0.7848, 1.2 })
   {
     const Vector3 direction = std::cos(phi) * around + std::sin(phi) * axis;
-    EXPECT_NEAR(normalCurvature(descriptors, v, 3.0 * direction), std::cos(phi) * std::cos(phi) / radius, 0.01 / radius);
+    EXPECT_NEAR(
+      normalCurvature(descriptors, v, 3.0 * direction), std::cos(phi) * std::cos(phi) / radius, 0.01 / radius);
   }
   // A component along the normal does not count; along the normal alone, the mean curvature.
   const Vector3 normal = descriptors.normals[v];

@@ -36,11 +36,11 @@ std::string errorOf(Parse parse)
   return "";
 }
 
-#define EXPECT_ERROR(call, text)                                                                   \
-  do                                                                                               \
-  {                                                                                                \
-    const std::string message = errorOf([&] { call; });                                             \
-    EXPECT_NE(message.find(text), std::string::npos) << "message: " << message;                    \
+#define EXPECT_ERROR(call, text)                                                                                       \
+  do                                                                                                                   \
+  {                                                                                                                    \
+    const std::string message = errorOf([&] { call; });                                                                \
+    EXPECT_NE(message.find(text), std::string::npos) << "message: " << message;                                        \
   } while (false)
 
 // A square pyramid: 5 points, 4 triangles and a quad.
@@ -159,11 +159,12 @@ TEST(PLY, StructuralErrorsNameTheHeaderLine)
 {
   const std::string start = "ply\nformat binary_little_endian 1.0\n";
   const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
-  EXPECT_ERROR(parsePLY(start + "element vertex 3\n" + xyz +
-                 "element face 1\nproperty int vertex_indices\nend_header\n"),
+  EXPECT_ERROR(
+    parsePLY(start + "element vertex 3\n" + xyz + "element face 1\nproperty int vertex_indices\nend_header\n"),
     "header line 7: 'vertex_indices' of the face element is a scalar");
-  EXPECT_ERROR(parsePLY(start + "element vertex 3\nproperty list uchar float x\nproperty float y\n"
-                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"),
+  EXPECT_ERROR(parsePLY(start +
+                 "element vertex 3\nproperty list uchar float x\nproperty float y\n"
+                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"),
     "property 'x' of the vertex element is a list");
   EXPECT_ERROR(parsePLY(start + "element vertex 3\n" + xyz +
                  "element face 1\nproperty list float int vertex_indices\nend_header\n"),
@@ -189,8 +190,9 @@ TEST(PLY, CountsBeyondTheFileAreRefusedBeforeAllocating)
   ply[ply.size() - 17] = static_cast<char>(200);
   EXPECT_ERROR(parsePLY(ply), "face row 4 declares a list of 200 items");
   // ASCII: the row and line that run out.
-  EXPECT_ERROR(parsePLY("ply\nformat ascii 1.0\nelement vertex 300000000000\nproperty float x\nproperty float y\n"
-                        "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n"),
+  EXPECT_ERROR(
+    parsePLY("ply\nformat ascii 1.0\nelement vertex 300000000000\nproperty float x\nproperty float y\n"
+             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n"),
     "the file ends after 1 of 300000000000 vertex rows");
 }
 
@@ -232,7 +234,8 @@ std::vector<std::array<float, 9>> pyramidFacets()
     {
       for (int k = 0; k < 3; ++k)
       {
-        f[static_cast<std::size_t>(3 * c + k)] = static_cast<float>(PyramidPoints[static_cast<std::size_t>(3 * t[c] + k)]);
+        f[static_cast<std::size_t>(3 * c + k)] =
+          static_cast<float>(PyramidPoints[static_cast<std::size_t>(3 * t[c] + k)]);
       }
     }
     facets.push_back(f);
@@ -269,7 +272,8 @@ std::string asciiSTL()
     for (int c = 0; c < 3; ++c)
     {
       stl += "      vertex " + std::to_string(f[static_cast<std::size_t>(3 * c)]) + " " +
-        std::to_string(f[static_cast<std::size_t>(3 * c + 1)]) + " " + std::to_string(f[static_cast<std::size_t>(3 * c + 2)]) + "\n";
+        std::to_string(f[static_cast<std::size_t>(3 * c + 1)]) + " " +
+        std::to_string(f[static_cast<std::size_t>(3 * c + 2)]) + "\n";
     }
     stl += "    endloop\n  endfacet\n";
   }
@@ -381,7 +385,8 @@ TEST(OBJ, IndicesOfEveryKindAreChecked)
   EXPECT_ERROR(parseOBJ(v + "vt 0 0\nf 1/99/1 2/1 3/1\n"), "OBJ line 5: texture coordinate index 99");
   EXPECT_ERROR(parseOBJ(v + "f 1//1 2//1 3//1\n"), "normal index 1 is out of range: the file has 0 normals");
   EXPECT_ERROR(parseOBJ(v + "f 1 2 9\n"), "OBJ line 4: vertex index 9 is out of range: the file has 3 vertices");
-  EXPECT_ERROR(parseOBJ(v + "f 1 2 -4\n"), "vertex index -4 reaches before the first vertex (3 vertices defined so far)");
+  EXPECT_ERROR(
+    parseOBJ(v + "f 1 2 -4\n"), "vertex index -4 reaches before the first vertex (3 vertices defined so far)");
   EXPECT_ERROR(parseOBJ(v + "f 0 1 2\n"), "vertex index 0 (OBJ indices start at 1)");
   EXPECT_ERROR(parseOBJ(v + "f 1 2 99999999999999999999\n"), "expected a vertex index");
   EXPECT_ERROR(parseOBJ(v + "f 1 2\n"), "'f' needs at least 3 corners, found 2");
@@ -432,14 +437,17 @@ TEST(LegacyVTK, CountsBeyondTheFileAreRefused)
 {
   EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "ASCII") + "POINTS 2147483648 float\n0 0 0\n"),
     "legacy VTK line 5 (byte 84): POINTS declares 6442450944 values of 2 bytes, but 7 bytes remain");
-  EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "BINARY") + "POINTS 4611686018427387904 float\n" + std::string(36, '\0')),
+  EXPECT_ERROR(
+    checkLegacyVTK(legacyHeader("4.2", "BINARY") + "POINTS 4611686018427387904 float\n" + std::string(36, '\0')),
     "POINTS declares 13835058055282163712 values of 4 bytes, but 36 bytes remain");
-  EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "BINARY") + "POINTS 9223372036854775807 float\n" + std::string(36, '\0')),
+  EXPECT_ERROR(
+    checkLegacyVTK(legacyHeader("4.2", "BINARY") + "POINTS 9223372036854775807 float\n" + std::string(36, '\0')),
     "POINTS declares more values than 2^64");
   EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "ASCII") + "POINTS -1 float\n"), "expected the number of points");
   EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "ASCII") + "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nFIELD f 2147483647\n"),
     "FIELD declares 2147483647 values of 10 bytes");
-  EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "ASCII") + "LOOKUP_TABLE t 5\n"), "unknown section keyword 'lookup_table'");
+  EXPECT_ERROR(
+    checkLegacyVTK(legacyHeader("4.2", "ASCII") + "LOOKUP_TABLE t 5\n"), "unknown section keyword 'lookup_table'");
 }
 
 TEST(LegacyVTK, CellsMustFitTheirSection)
@@ -450,8 +458,8 @@ TEST(LegacyVTK, CellsMustFitTheirSection)
   EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "BINARY") + points.substr(0, 15) +
                  bigEndianInts({ 0, 0, 0, 0, 0, 0, 0, 0, 0 }) + "\nPOLYGONS 1 4\n" + bigEndianInts({ 3, 0, 1 })),
     "legacy VTK line 8 (byte 127): polygons declares 4 values of 4 bytes, but 12 bytes remain");
-  EXPECT_ERROR(checkLegacyVTK(legacyHeader("4.2", "ASCII") + points + "POLYGONS 2 4\n3 0 1 2\n"),
-    "declares 2 cells but holds 1");
+  EXPECT_ERROR(
+    checkLegacyVTK(legacyHeader("4.2", "ASCII") + points + "POLYGONS 2 4\n3 0 1 2\n"), "declares 2 cells but holds 1");
   EXPECT_ERROR(checkLegacyVTK(legacyHeader("5.1", "ASCII") + points +
                  "POLYGONS 3 6\nOFFSETS vtktypeint64\n0 4 3\nCONNECTIVITY vtktypeint64\n0 1 2 0 1 2\n"),
     "cell offset 2 is 3");
@@ -477,8 +485,9 @@ TEST(LegacyVTK, ValuesVTKCannotParseAndAttributeCountsAreRefused)
     "an incomplete %XX escape");
   EXPECT_ERROR(checkLegacyVTK(head + "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n" + std::string(300, ' ') + "\n"),
     "256 blanks without a line break");
-  EXPECT_ERROR(checkLegacyVTK(head + "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nMETADATA\nINFORMATION 1\n"
-                                     "NAME GUI_HIDE LOCATION vtkAbstractArray\nDATA 1\n\n"),
+  EXPECT_ERROR(checkLegacyVTK(head +
+                 "POINTS 3 float\n0 0 0 1 0 0 0 1 0\nMETADATA\nINFORMATION 1\n"
+                 "NAME GUI_HIDE LOCATION vtkAbstractArray\nDATA 1\n\n"),
     "unsupported array information");
   EXPECT_ERROR(checkLegacyVTK("# vtk DataFile Version 4.2\nx\nASCII\nDATASET UNSTRUCTURED_GRID\n"),
     "Kerf reads POLYDATA legacy files only");
@@ -525,7 +534,8 @@ std::string binaryArray(const std::string& data, bool compressed, std::uint32_t 
     append(header, declared, false);
     return base64(header + data);
   }
-  for (std::uint32_t word : { 1u, static_cast<std::uint32_t>(data.size()), declared, static_cast<std::uint32_t>(data.size()) })
+  for (std::uint32_t word :
+    { 1u, static_cast<std::uint32_t>(data.size()), declared, static_cast<std::uint32_t>(data.size()) })
   {
     append(header, word, false);
   }
@@ -546,11 +556,12 @@ std::string vtp(const std::string& points, const std::string& offsets, const std
   const std::string& format, const std::string& rootExtra = "", const std::string& pieceExtra = "")
 {
   return "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt32\"" + rootExtra + ">\n<PolyData>\n<Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\"" +
-    pieceExtra + ">\n<Points><DataArray type=\"Int64\" NumberOfComponents=\"3\" format=\"" + format + "\">" +
-    points + "</DataArray></Points>\n<Polys><DataArray type=\"Int64\" Name=\"connectivity\" format=\"" +
-    format + "\">" + connectivity + "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"" +
-    format + "\">" + offsets + "</DataArray></Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n";
+         "header_type=\"UInt32\"" +
+    rootExtra + ">\n<PolyData>\n<Piece NumberOfPoints=\"3\" NumberOfPolys=\"1\"" + pieceExtra +
+    ">\n<Points><DataArray type=\"Int64\" NumberOfComponents=\"3\" format=\"" + format + "\">" + points +
+    "</DataArray></Points>\n<Polys><DataArray type=\"Int64\" Name=\"connectivity\" format=\"" + format + "\">" +
+    connectivity + "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"" + format + "\">" + offsets +
+    "</DataArray></Polys>\n</Piece>\n</PolyData>\n</VTKFile>\n";
 }
 
 const std::string TrianglePoints = int64s({ 0, 0, 0, 1, 0, 0, 0, 1, 0 });
@@ -562,17 +573,18 @@ TEST(VTP, ValidAsciiBinaryAndCompressedPass)
   EXPECT_NO_THROW(checkVTP(vtp(binaryArray(TrianglePoints, false, 72), binaryArray(int64s({ 3 }), false, 8),
                              binaryArray(int64s({ 0, 1, 2 }), false, 24), "binary"),
     copyBlock));
-  EXPECT_NO_THROW(checkVTP(vtp(binaryArray(TrianglePoints, true, 72), binaryArray(int64s({ 3 }), true, 8),
-                             binaryArray(int64s({ 0, 1, 2 }), true, 24), "binary",
-                             " compressor=\"vtkZLibDataCompressor\""),
-    copyBlock));
+  EXPECT_NO_THROW(
+    checkVTP(vtp(binaryArray(TrianglePoints, true, 72), binaryArray(int64s({ 3 }), true, 8),
+               binaryArray(int64s({ 0, 1, 2 }), true, 24), "binary", " compressor=\"vtkZLibDataCompressor\""),
+      copyBlock));
 }
 
 TEST(VTP, DeclaredCountsMustMatchTheData)
 {
   std::string huge = vtp("0 0 0 1 0 0 0 1 0", "3", "0 1 2", "ascii");
   huge.replace(huge.find("NumberOfPoints=\"3\""), 18, "NumberOfPoints=\"2147483647\"");
-  EXPECT_ERROR(checkVTP(huge, copyBlock), "needs 6442450941 values (2147483647 tuples of 3), but its data holds 9 words");
+  EXPECT_ERROR(
+    checkVTP(huge, copyBlock), "needs 6442450941 values (2147483647 tuples of 3), but its data holds 9 words");
   huge = vtp("0 0 0 1 0 0 0 1 0", "3", "0 1 2", "ascii");
   huge.replace(huge.find("NumberOfPoints=\"3\""), 18, "NumberOfPoints=\"4294967299\"");
   EXPECT_ERROR(checkVTP(huge, copyBlock), "NumberOfPoints='4294967299' is not a count from 0 to 2147483647");
@@ -589,9 +601,10 @@ TEST(VTP, DeclaredCountsMustMatchTheData)
                  copyBlock),
     "needs 9 values (3 tuples of 3), but its data holds 5 values");
   // A compression header whose last block is larger than its blocks.
-  EXPECT_ERROR(checkVTP(vtp(binaryArray(TrianglePoints, true, 1u << 31), binaryArray(int64s({ 3 }), true, 8),
-                          binaryArray(int64s({ 0, 1, 2 }), true, 24), "binary", " compressor=\"vtkZLibDataCompressor\""),
-                 copyBlock),
+  EXPECT_ERROR(
+    checkVTP(vtp(binaryArray(TrianglePoints, true, 1u << 31), binaryArray(int64s({ 3 }), true, 8),
+               binaryArray(int64s({ 0, 1, 2 }), true, 24), "binary", " compressor=\"vtkZLibDataCompressor\""),
+      copyBlock),
     "inconsistent compression header");
 }
 
@@ -601,7 +614,8 @@ TEST(VTP, UnknownTypesAndMalformedXMLAreRefused)
   std::string bad = good;
   EXPECT_ERROR(checkVTP(bad.replace(bad.find("Int64"), 5, "Int128"), copyBlock), "unsupported type 'Int128'");
   bad = good;
-  EXPECT_ERROR(checkVTP(bad.replace(bad.find("</Piece>"), 8, ""), copyBlock), "element 'Piece' is closed by 'PolyData'");
+  EXPECT_ERROR(
+    checkVTP(bad.replace(bad.find("</Piece>"), 8, ""), copyBlock), "element 'Piece' is closed by 'PolyData'");
   bad = good;
   EXPECT_ERROR(checkVTP(bad.replace(bad.find("LittleEndian"), 12, "MiddleEndian"), copyBlock), "unknown byte_order");
   bad = good;

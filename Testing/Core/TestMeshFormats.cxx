@@ -70,27 +70,20 @@ TEST(OFF, MalformedFilesNameTheProblemAndLine)
   EXPECT_NE(errorOf("PLY\n3 1 0\n").find("expected the OFF header"), std::string::npos);
   EXPECT_NE(errorOf("OFF BINARY\n").find("binary OFF"), std::string::npos);
   EXPECT_NE(errorOf("OFF\n-3 1 0\n").find("invalid vertex or face count"), std::string::npos);
-  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n").find("ends after 2 of 3 vertices"),
-    std::string::npos);
-  EXPECT_NE(errorOf("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").find("ends after 1 of 2 faces"),
-    std::string::npos);
-  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n").find("line 4: expected a number"),
-    std::string::npos);
-  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n").find("index 7 is out of range"),
-    std::string::npos);
-  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n").find("at least 3 vertices"),
-    std::string::npos);
-  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n").find("expected an integer"),
-    std::string::npos);
-  EXPECT_NE(errorOf("\x7f\x45\x4c\x46\x02\x01\x01\x00\x00\x00").find("expected the OFF header"),
-    std::string::npos);
+  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n").find("ends after 2 of 3 vertices"), std::string::npos);
+  EXPECT_NE(errorOf("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n").find("ends after 1 of 2 faces"), std::string::npos);
+  EXPECT_NE(
+    errorOf("OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n").find("line 4: expected a number"), std::string::npos);
+  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n").find("index 7 is out of range"), std::string::npos);
+  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n").find("at least 3 vertices"), std::string::npos);
+  EXPECT_NE(errorOf("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n").find("expected an integer"), std::string::npos);
+  EXPECT_NE(errorOf("\x7f\x45\x4c\x46\x02\x01\x01\x00\x00\x00").find("expected the OFF header"), std::string::npos);
 }
 
 TEST(OFF, WriteThenReadIsLossless)
 {
   PolygonMesh mesh;
-  mesh.points = { { 0.1, 1.0 / 3.0, -2e-17 }, { 1e10, std::sqrt(2.0), 3.0 }, { -0.7, 0.25, 1e-300 },
-    { 5, 6, 7 } };
+  mesh.points = { { 0.1, 1.0 / 3.0, -2e-17 }, { 1e10, std::sqrt(2.0), 3.0 }, { -0.7, 0.25, 1e-300 }, { 5, 6, 7 } };
   mesh.polygonIndices = { 0, 1, 2, 0, 2, 3, 1 };
   mesh.polygonOffsets = { 0, 3, 7 };
   const std::string path = temporaryPath("roundtrip.off");

@@ -13,7 +13,8 @@ TEST(MinimumCut, AChainIsCutAtItsWeakestLink)
 {
   // 0 - 1 - 2 - 3 - 4 with capacities 5, 2, 0.5, 3: the cut is the 0.5 link, between 2 and 3.
   const std::vector<std::array<int, 2>> edges{ { { 0, 1 } }, { { 1, 2 } }, { { 2, 3 } }, { { 3, 4 } } };
-  const MinimumCut cut = minimumCut(5, edges, { 5.0, 2.0, 0.5, 3.0 }, std::vector<int>{ 0 }, std::vector<int>{ 4 }, 1e9);
+  const MinimumCut cut =
+    minimumCut(5, edges, { 5.0, 2.0, 0.5, 3.0 }, std::vector<int>{ 0 }, std::vector<int>{ 4 }, 1e9);
   EXPECT_DOUBLE_EQ(cut.flow, 0.5);
   EXPECT_EQ(cut.sourceSide, (std::vector<char>{ 1, 1, 1, 0, 0 }));
 }

@@ -1,8 +1,9 @@
-// Multi-label random walks: linear probabilities across a grid, unseeded components, ties, the neck of a two-lobe shape, errors, repeatability, and walks from segment spines (never removing a segment).
+// Multi-label random walks: linear probabilities across a grid, unseeded components, ties, the neck of a two-lobe
+// shape, errors, repeatability, and walks from segment spines (never removing a segment).
 #include "Error.h"
 #include "Harmonic/HarmonicFieldSolver.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MeshGenerators.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Session/Surface.h"
@@ -349,9 +350,8 @@ TEST(RandomWalk, SpinesNeverRemoveASegment)
   EXPECT_EQ(unchanged.faceLabels, labels);
 
   // Segment 0's spine along the grid's left column: F's corners seed 1 and F keeps its label.
-  const std::vector<SegmentSpine> apart = {
-    { 0, facesWhere(mesh, [&](int f) { return centroidX(mesh, f) < 0.05; }) }, { 1, { F } }
-  };
+  const std::vector<SegmentSpine> apart = { { 0, facesWhere(mesh, [&](int f) { return centroidX(mesh, f) < 0.05; }) },
+    { 1, { F } } };
   const SpineWalk walked = walkFromSpines(mesh, weights, apart, labels);
   EXPECT_TRUE(walked.applied);
   EXPECT_EQ(walked.faceLabels[F], 1);

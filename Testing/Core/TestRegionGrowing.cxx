@@ -1,4 +1,5 @@
-// Region growing from labelled strokes: the neck of a two-lobe shape, three fingers, the nearest-stroke property, cut placement, boundaries and errors.
+// Region growing from labelled strokes: the neck of a two-lobe shape, three fingers, the nearest-stroke property, cut
+// placement, boundaries and errors.
 #include "Error.h"
 #include "Geodesic/GraphDistance.h"
 #include "Geometry/ClosestPoint.h"
@@ -483,7 +484,8 @@ TEST(RegionGrowing, WalksCutMovesOnlyHesitantVerticesAndShortensTheBoundary)
   // The walks' labels are one labelling the cut could choose, at no data cost: the cut's boundary
   // is shorter (measured 0.608 against 0.691: the walks' boundary runs slanted, the cut's straight
   // across the strip).
-  const double before = dualBoundaryLength(mesh, walks.vertexLabels), after = dualBoundaryLength(mesh, cut.vertexLabels);
+  const double before = dualBoundaryLength(mesh, walks.vertexLabels),
+               after = dualBoundaryLength(mesh, cut.vertexLabels);
   EXPECT_LT(after, 0.95 * before);
   EXPECT_EQ(labelBoundaries(mesh, cut.faceLabels).size(), 1u);
 }
@@ -493,7 +495,8 @@ TEST(RegionGrowing, StrokeSegmentsMarkTheVerticesTheyCross)
   // A two-point stroke across a grid marks a connected chain of vertices from end to end.
   const TriangleMesh grid = makeGrid(1.0, 1.0, 40, 40);
   const ClosestPointLocator locator(grid);
-  const StrokeSeeds seeds = snapStrokes(grid, locator, { { 3, { Vector3(0.1, 0.1, 0.0), Vector3(0.9, 0.6, 0.0) } } }, 0.0);
+  const StrokeSeeds seeds =
+    snapStrokes(grid, locator, { { 3, { Vector3(0.1, 0.1, 0.0), Vector3(0.9, 0.6, 0.0) } } }, 0.0);
   ASSERT_GE(seeds.vertices.size(), 32u);
   for (std::size_t i = 1; i < seeds.vertices.size(); ++i)
   {
@@ -512,8 +515,9 @@ TEST(RegionGrowing, StrokeSegmentsMarkTheVerticesTheyCross)
   EXPECT_EQ(grid.point(seeds.vertices.front()), Vector3(0.1, 0.1, 0.0));
   EXPECT_EQ(grid.point(seeds.vertices.back()), Vector3(0.9, 0.6, 0.0));
   // A crossing stroke of another label contests the shared vertex; the first stroke keeps it.
-  const StrokeSeeds crossing = snapStrokes(grid,
-    locator, { { 1, { Vector3(0.5, 0.0, 0.0), Vector3(0.5, 1.0, 0.0) } }, { 2, { Vector3(0.0, 0.5, 0.0), Vector3(1.0, 0.5, 0.0) } } },
+  const StrokeSeeds crossing = snapStrokes(grid, locator,
+    { { 1, { Vector3(0.5, 0.0, 0.0), Vector3(0.5, 1.0, 0.0) } },
+      { 2, { Vector3(0.0, 0.5, 0.0), Vector3(1.0, 0.5, 0.0) } } },
     0.0);
   EXPECT_EQ(crossing.contested, 1);
   EXPECT_EQ(crossing.vertices.size(), 41u + 40u);
@@ -551,8 +555,8 @@ TEST(RegionGrowing, ComponentWithoutStrokesIsReportedAndUnlabelled)
 
 TEST(RegionGrowing, FaceLabelsFollowTheMajorityThenTheNearestCorner)
 {
-  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 2, 1, 0 } },
-    { { 0, 1, 2 }, { 1, 3, 2 }, { 1, 4, 3 } });
+  const TriangleMesh mesh(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 2, 1, 0 } }, { { 0, 1, 2 }, { 1, 3, 2 }, { 1, 4, 3 } });
   // Face 0: labels 5, 7, 7 -> 7. Face 1: 7, 9, 7 -> 7. Face 2: 7, 8, 9: three labels, corner 4
   // (label 8) is nearest its stroke.
   const std::vector<int> labels = faceLabelsFromVertices(mesh, { 5, 7, 7, 9, 8 }, { 0.0, 3.0, 1.0, 2.0, 0.5 });
@@ -632,7 +636,8 @@ TEST(RegionGrowing, RefusesBadStrokes)
     return std::string("no error");
   };
   EXPECT_NE(message({}, 0.0).find("there is no stroke"), std::string::npos);
-  EXPECT_NE(message({ { 3, { Vector3(0, 0, 1) } }, { 3, { Vector3(0, 0, -1) } } }, 0.0).find("every stroke has the label 3"),
+  EXPECT_NE(
+    message({ { 3, { Vector3(0, 0, 1) } }, { 3, { Vector3(0, 0, -1) } } }, 0.0).find("every stroke has the label 3"),
     std::string::npos);
   EXPECT_NE(message({ { 0, { Vector3(0, 0, 1) } }, { 1, { Vector3(0, 0, -1.5) } } }, 0.1)
               .find("point 0 of stroke 1 is 0.5 away from the surface, farther than the allowed 0.1"),
@@ -640,11 +645,13 @@ TEST(RegionGrowing, RefusesBadStrokes)
   EXPECT_NE(message({ { 0, { Vector3(0, 0, 1) } }, { 1, { Vector3(0, 0, -1), Vector3(0, std::nan(""), 0) } } }, 0.0)
               .find("point 1 of stroke 1 has a NaN, infinite or huge coordinate"),
     std::string::npos);
-  EXPECT_NE(message({ { 0, { Vector3(0, 0, 1) } }, { -2, { Vector3(0, 0, -1) } } }, 0.0).find("label -2"), std::string::npos);
+  EXPECT_NE(
+    message({ { 0, { Vector3(0, 0, 1) } }, { -2, { Vector3(0, 0, -1) } } }, 0.0).find("label -2"), std::string::npos);
   EXPECT_NE(message({ { 0, { Vector3(0, 0, 1) } }, { 1, {} } }, 0.0).find("stroke 1 has no points"), std::string::npos);
   EXPECT_NE(message({ { 0, { Vector3(0, 0, 1) } }, { 1, { Vector3(0, 0, -1), Vector3(1e200, 0, 0) } } }, 0.0)
               .find("huge coordinate"),
     std::string::npos);
   // A point far off the surface is accepted without a limit; its segment is sampled finitely.
-  EXPECT_EQ(message({ { 0, { Vector3(0, 0, 1) } }, { 1, { Vector3(0, 0, -1), Vector3(1e40, 0, 0) } } }, 0.0), "no error");
+  EXPECT_EQ(
+    message({ { 0, { Vector3(0, 0, 1) } }, { 1, { Vector3(0, 0, -1), Vector3(1e40, 0, 0) } } }, 0.0), "no error");
 }

@@ -2,8 +2,8 @@
 #include "Error.h"
 #include "Geodesic/RoiScissor.h"
 #include "IO/MeshFormats.h"
-#include "Mesh/Triangulation.h"
 #include "Mesh/MeshGenerators.h"
+#include "Mesh/Triangulation.h"
 #include "Session/Surface.h"
 
 #include <gtest/gtest.h>

@@ -57,7 +57,7 @@ TEST(Seams, IsotropicSeamsAreMeridians)
     const Vector3 target(std::cos(angle) * 0.5, std::sin(angle) * 0.5, std::sqrt(0.75)); // latitude 60
     const SurfacePath seam = field.seam(pointNear(*surface, target));
     const Vector3& onLine = seam.curve.points.front();
-    EXPECT_NEAR(onLine.z(), 0.0, 1e-9);          // it ends on the source line
+    EXPECT_NEAR(onLine.z(), 0.0, 1e-9); // it ends on the source line
     // Down the meridian (measured: within 0.041 radians, 2.3 degrees over the 60-degree arc).
     EXPECT_NEAR(longitude(onLine), angle, 0.05);
     EXPECT_NEAR(seam.length, Pi / 3.0, 0.01 * Pi / 3.0);

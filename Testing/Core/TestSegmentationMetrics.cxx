@@ -2,11 +2,11 @@
 #include "Error.h"
 #include "Evaluation/SegmentationMetrics.h"
 #include "Evaluation/SimulatedStrokes.h"
-#include "Segmentation/SegmentSpines.h"
 #include "Geodesic/GraphDistance.h"
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshGenerators.h"
 #include "Mesh/Triangulation.h"
+#include "Segmentation/SegmentSpines.h"
 
 #include <gtest/gtest.h>
 
@@ -61,8 +61,8 @@ TEST(GraphDistance, GridDistancesAreEdgePathLengths)
   const TriangleMesh grid = makeGrid(4.0, 4.0, 4, 4);
   const std::vector<double> d = edgeGraphDistances(grid, { 0 });
   EXPECT_DOUBLE_EQ(d[0], 0.0);
-  EXPECT_DOUBLE_EQ(d[4], 4.0);                   // along the bottom row
-  EXPECT_DOUBLE_EQ(d[24], 4.0 * std::sqrt(2.0)); // along the diagonals
+  EXPECT_DOUBLE_EQ(d[4], 4.0);                                // along the bottom row
+  EXPECT_DOUBLE_EQ(d[24], 4.0 * std::sqrt(2.0));              // along the diagonals
   EXPECT_DOUBLE_EQ(d[5 * 4 + 2], std::sqrt(2.0) * 2.0 + 2.0); // (2, 4): two diagonals, two up
   EXPECT_THROW(edgeGraphDistances(grid, { 99 }), Error);
 }
@@ -218,7 +218,8 @@ TEST(SegmentationMetrics, HumanAgreementOnPrincetonModel)
   std::vector<PreparedSegmentation> humans;
   for (int j = 0; j < 16; ++j)
   {
-    humans.push_back(evaluator.prepare(readSegmentation((root / "seg" / "1" / ("1_" + std::to_string(j) + ".seg")).string())));
+    humans.push_back(
+      evaluator.prepare(readSegmentation((root / "seg" / "1" / ("1_" + std::to_string(j) + ".seg")).string())));
   }
   double sum = 0.0;
   int count = 0;
@@ -292,7 +293,8 @@ TEST(SimulatedStrokes, SpinesAreFacePathsInsideTheirSegments)
       const int f = spines[s].faces[i];
       EXPECT_EQ(labels[f], spines[s].label);
       const Triangle& t = cylinder.triangle(f);
-      EXPECT_EQ(strokes[s].points[i], Vector3((cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])) / 3.0));
+      EXPECT_EQ(
+        strokes[s].points[i], Vector3((cylinder.point(t[0]) + cylinder.point(t[1]) + cylinder.point(t[2])) / 3.0));
       if (i > 0)
       {
         const int previous = spines[s].faces[i - 1];

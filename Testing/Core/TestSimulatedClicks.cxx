@@ -1,4 +1,5 @@
-// ROI Scissor driven by simulated clicks: fingers selected at their creases, the runner's roi-scissor method, the corrections' rules, psb-dev figures.
+// ROI Scissor driven by simulated clicks: fingers selected at their creases, the runner's roi-scissor method, the
+// corrections' rules, psb-dev figures.
 #include "Error.h"
 #include "Evaluation/BenchmarkRunner.h"
 #include "Evaluation/SegmentationMetrics.h"

@@ -1,4 +1,5 @@
-// Snakes on the mesh: shorter, smoother boundaries near the jagged ones, embedded, meeting points kept, override strokes and errors.
+// Snakes on the mesh: shorter, smoother boundaries near the jagged ones, embedded, meeting points kept, override
+// strokes and errors.
 #include "Error.h"
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/RegionGrowing.h"
@@ -241,9 +242,10 @@ TEST(SnakeRefinement, NeckBoundaryBecomesShorterSmootherAndStaysNear)
     highest = std::max(highest, p.position.z());
     lowest = std::min(lowest, p.position.z());
   }
-  EXPECT_LT(after.length, 1.2 * 2.0 * Pi *
-      dumbbellRadius(highest, DumbbellWithStrokes::HalfLength, DumbbellWithStrokes::Radii, DumbbellWithStrokes::NeckHeight,
-        DumbbellWithStrokes::Depth));
+  EXPECT_LT(after.length,
+    1.2 * 2.0 * Pi *
+      dumbbellRadius(highest, DumbbellWithStrokes::HalfLength, DumbbellWithStrokes::Radii,
+        DumbbellWithStrokes::NeckHeight, DumbbellWithStrokes::Depth));
   EXPECT_LT(after.turning, 0.1 * before.turning);
   // Within two rings of the jagged boundary, and still in the neck.
   EXPECT_LE(farthestRing(shape.mesh, curves, ringsFrom(shape.mesh, jagged)), 2);
@@ -309,7 +311,8 @@ TEST(SnakeRefinement, StaircaseOnAPlaneBecomesItsLine)
   // Every point within half a grid step of the line.
   for (const SnakePoint& p : curves[0].points)
   {
-    EXPECT_LT(std::abs(p.position.x() - 0.4 - 0.3 * p.position.y()) / std::hypot(1.0, 0.3), 0.5 / 30) << p.position.transpose();
+    EXPECT_LT(std::abs(p.position.x() - 0.4 - 0.3 * p.position.y()) / std::hypot(1.0, 0.3), 0.5 / 30)
+      << p.position.transpose();
   }
   EXPECT_LE(farthestRing(grid, curves, ringsFrom(grid, jagged)), 2);
 
@@ -346,7 +349,8 @@ TEST(SnakeRefinement, StaircaseOnAPlaneBecomesItsLine)
       {
         continue;
       }
-      EXPECT_EQ(faces[f], part > 0.5 ? vertices[t[lone]] : vertices[t[(lone + 1) % 3]]) << "face " << f << ", part " << part;
+      EXPECT_EQ(faces[f], part > 0.5 ? vertices[t[lone]] : vertices[t[(lone + 1) % 3]])
+        << "face " << f << ", part " << part;
       ++checked;
     }
   }
@@ -503,10 +507,16 @@ TEST(SnakeRefinement, RefusesBadInput)
     }
     return std::string("no error");
   };
-  EXPECT_NE(message([&] { BoundarySnake(surface, { 1, 2, 3 }); }).find("there are 3 face labels for"), std::string::npos);
-  const auto nonManifold = std::make_shared<const Surface>(
-    TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }));
-  EXPECT_NE(message([&] { BoundarySnake(nonManifold, { 0, 1, 2 }); }).find("snakes need a manifold surface"), std::string::npos);
+  EXPECT_NE(message([&] {
+    BoundarySnake(surface, { 1, 2, 3 });
+  }).find("there are 3 face labels for"),
+    std::string::npos);
+  const auto nonManifold = std::make_shared<const Surface>(TriangleMesh(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }));
+  EXPECT_NE(message([&] {
+    BoundarySnake(nonManifold, { 0, 1, 2 });
+  }).find("snakes need a manifold surface"),
+    std::string::npos);
   BoundarySnake snake(surface, grown.faceLabels);
   SnakeOptions options;
   options.slideSamples = 0;
@@ -517,15 +527,19 @@ TEST(SnakeRefinement, RefusesBadInput)
   // Override strokes: too short, NaN, away from any boundary, off the surface, bad radius.
   EXPECT_NE(message([&] { snake.overrideWithStroke({ Vector3(0, 0, 2) }, 0.1, 0.0); }).find("at least two points"),
     std::string::npos);
-  EXPECT_NE(message([&] { snake.overrideWithStroke({ Vector3(0, 0, 2), Vector3(0, std::nan(""), 0) }, 0.1, 0.0); })
-              .find("NaN"),
+  EXPECT_NE(message([&] {
+    snake.overrideWithStroke({ Vector3(0, 0, 2), Vector3(0, std::nan(""), 0) }, 0.1, 0.0);
+  }).find("NaN"),
     std::string::npos);
-  const double z = -1.5, r = dumbbellRadius(z, DumbbellWithStrokes::HalfLength, DumbbellWithStrokes::Radii,
-                           DumbbellWithStrokes::NeckHeight, DumbbellWithStrokes::Depth);
+  const double z = -1.5,
+               r = dumbbellRadius(z, DumbbellWithStrokes::HalfLength, DumbbellWithStrokes::Radii,
+                 DumbbellWithStrokes::NeckHeight, DumbbellWithStrokes::Depth);
   const std::vector<Vector3> onLobe = { Vector3(r, 0, z), Vector3(0, r, z) };
-  EXPECT_NE(message([&] { snake.overrideWithStroke(onLobe, 0.1, 0.0); }).find("not near a boundary"), std::string::npos);
-  EXPECT_NE(message([&] { snake.overrideWithStroke({ Vector3(r + 1, 0, z), Vector3(0, r, z) }, 0.1, 0.5); })
-              .find("farther than the allowed 0.5"),
+  EXPECT_NE(
+    message([&] { snake.overrideWithStroke(onLobe, 0.1, 0.0); }).find("not near a boundary"), std::string::npos);
+  EXPECT_NE(message([&] {
+    snake.overrideWithStroke({ Vector3(r + 1, 0, z), Vector3(0, r, z) }, 0.1, 0.5);
+  }).find("farther than the allowed 0.5"),
     std::string::npos);
   EXPECT_NE(message([&] { snake.overrideWithStroke(onLobe, 0.0, 0.0); }).find("positive length"), std::string::npos);
   // Nothing changed by the refused edits.

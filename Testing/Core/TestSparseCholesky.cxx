@@ -1,9 +1,9 @@
 // Sparse Cholesky against dense references for both orderings and every low-rank route; results
 // that do not depend on earlier calls or on the order of the low-rank columns.
 #include "Error.h"
+#include "Mesh/MeshGenerators.h"
 #include "Numerics/NestedDissection.h"
 #include "Numerics/SparseCholesky.h"
-#include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // splitAlongFaceLabels: each label its own piece, areas, faces and positions unchanged, deterministic numbering.
-#include "Mesh/SplitAlongFaceLabels.h"
 #include "Error.h"
 #include "Mesh/MeshGenerators.h"
+#include "Mesh/SplitAlongFaceLabels.h"
 
 #include <gtest/gtest.h>
 
@@ -77,7 +77,8 @@ TEST(SplitAlongFaceLabels, OneLabelKeepsTheMeshAndDropsUnusedPoints)
   std::vector<Vector3> points = grid.points();
   points.emplace_back(5.0, 5.0, 5.0);
   const TriangleMesh withUnused(points, grid.triangles());
-  const SplitMesh dropped = splitAlongFaceLabels(withUnused, std::vector<int>(static_cast<std::size_t>(grid.faceCount()), 0));
+  const SplitMesh dropped =
+    splitAlongFaceLabels(withUnused, std::vector<int>(static_cast<std::size_t>(grid.faceCount()), 0));
   EXPECT_EQ(dropped.mesh.vertexCount(), grid.vertexCount());
 }
 

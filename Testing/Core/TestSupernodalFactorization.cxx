@@ -1,11 +1,11 @@
 // The numeric supernodal factorization's routes (Kerf's driver with Eigen's kernels per
 // instruction-set level, CHOLMOD's) against each other, on the matrices the solvers factor.
+#include "Mesh/MeshGenerators.h"
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/NestedDissection.h"
 #include "Numerics/SerialOpenMP.h"
 #include "Numerics/SparseCholesky.h"
 #include "Numerics/SupernodalFactorization.h"
-#include "Mesh/MeshGenerators.h"
 
 #include <gtest/gtest.h>
 
@@ -356,7 +356,8 @@ TEST(SupernodalFactorization, AnEntryOutsideTheAnalysedPatternIsRefusedByKerfsRo
     B.coeffRef(outsideRow, outsideColumn) = -1e-3;
     B.makeCompressed();
     cholmod_sparse b = cholmodView(B, -1);
-    EXPECT_FALSE(factorizeSupernodal(&b, analysis.factor, &analysis.common, route)) << "route " << static_cast<int>(route);
+    EXPECT_FALSE(factorizeSupernodal(&b, analysis.factor, &analysis.common, route))
+      << "route " << static_cast<int>(route);
     EXPECT_EQ(analysis.common.status, CHOLMOD_INVALID);
     // The same factor still takes the analysed matrix.
     cholmod_sparse a = cholmodView(A, -1);

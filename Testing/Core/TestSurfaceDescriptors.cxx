@@ -241,8 +241,7 @@ TEST(SurfaceDescriptors, NormalConeAngleOfAFold)
 TEST(SurfaceDescriptors, DegenerateAndUnusedVerticesGiveFiniteZeros)
 {
   // A flat square with a zero-area sliver and an unused point.
-  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 },
-                            { 7, 7, 7 } },
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 7, 7, 7 } },
     { { 0, 1, 2 }, { 0, 2, 3 }, { 0, 4, 1 } });
   const SurfaceDescriptors d = computeSurfaceDescriptors(mesh);
   for (int v = 0; v < mesh.vertexCount(); ++v)
@@ -263,10 +262,10 @@ TEST(SurfaceDescriptors, RightAngleBesideAHugeEdgeGivesFiniteCurvature)
   // A right angle at point 1 next to an edge 10^8 long: rounding the squared edge lengths makes
   // the corner at point 0 look obtuse, and the obtuse-corner area formula then divides by the
   // right angle's zero cosine (a triangle a fuzzed file produced).
-  const TriangleMesh mesh({ { 0.30901700258255005, -0.42797544598579407, 5.2411874220866593e-17 },
-                            { -0.30901700258255005, -0.42797544598579407, 5.2411874220866593e-17 },
-                            { -0.30901700258255005, -0.21398772299289703, 99492272 },
-                            { 0.30901700258255005, -0.21398772299289703, 0.5 } },
+  const TriangleMesh mesh(
+    { { 0.30901700258255005, -0.42797544598579407, 5.2411874220866593e-17 },
+      { -0.30901700258255005, -0.42797544598579407, 5.2411874220866593e-17 },
+      { -0.30901700258255005, -0.21398772299289703, 99492272 }, { 0.30901700258255005, -0.21398772299289703, 0.5 } },
     { { 0, 1, 2 }, { 0, 2, 3 } });
   const SurfaceDescriptors d = computeSurfaceDescriptors(mesh);
   for (int v = 0; v < mesh.vertexCount(); ++v)

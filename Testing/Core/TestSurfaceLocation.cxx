@@ -98,7 +98,8 @@ TEST(SurfaceLocation, ProjectionAndCoincidentVertices)
   const SurfacePoint atVertex = projectOntoSurface(*surface, mesh.point(17), 1e-9, "the point");
   EXPECT_EQ(coincidentVertex(mesh, atVertex), 17);
   EXPECT_GE(facesHolding(mesh, atVertex).size(), 5u);
-  const SurfacePoint inside = projectOntoSurface(*surface, surfacePosition(mesh, { 3, Vector3(0.2, 0.3, 0.5) }), 1e-9, "the point");
+  const SurfacePoint inside =
+    projectOntoSurface(*surface, surfacePosition(mesh, { 3, Vector3(0.2, 0.3, 0.5) }), 1e-9, "the point");
   EXPECT_EQ(coincidentVertex(mesh, inside), -1);
   EXPECT_EQ(facesHolding(mesh, inside), std::vector<int>{ 3 });
   try

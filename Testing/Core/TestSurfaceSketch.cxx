@@ -1,4 +1,5 @@
-// Sketching on a depth image: strokes on a sphere seen from above, split where they leave it or cross a contour; simplification; walks and rims against great circles.
+// Sketching on a depth image: strokes on a sphere seen from above, split where they leave it or cross a contour;
+// simplification; walks and rims against great circles.
 #include "Error.h"
 #include "Sketch/SurfaceSketch.h"
 
@@ -24,11 +25,15 @@ struct Ball
 constexpr int Size = 200;
 constexpr double HalfWidth = 1.5;
 
-double worldX(double pixel) { return (pixel - 0.5 * Size) / (0.5 * Size) * HalfWidth; }
+double worldX(double pixel)
+{
+  return (pixel - 0.5 * Size) / (0.5 * Size) * HalfWidth;
+}
 
 DepthImage::Unprojection orthographic()
 {
-  return [](double x, double y, double depth) { return Vector3(worldX(x), worldX(y), HalfWidth - 2.0 * HalfWidth * depth); };
+  return
+    [](double x, double y, double depth) { return Vector3(worldX(x), worldX(y), HalfWidth - 2.0 * HalfWidth * depth); };
 }
 
 // The depth image of balls (the nearest one shows), the background at 1.
@@ -58,7 +63,10 @@ DepthImage render(const std::vector<Ball>& balls)
 }
 
 // The distance of a point from the ball's surface.
-double offSurface(const Vector3& p, const Ball& ball) { return std::abs((p - ball.centre).norm() - ball.radius); }
+double offSurface(const Vector3& p, const Ball& ball)
+{
+  return std::abs((p - ball.centre).norm() - ball.radius);
+}
 
 // A float depth quantises z by about 3 / 2^24 near the far plane; the sphere's slope near its
 // contour multiplies that.
@@ -71,7 +79,7 @@ TEST(SurfaceSketch, DepthImageReadsPixelsAndRefusesBadSizes)
   const DepthImage image = render({ ball });
   ASSERT_TRUE(image.surfacePoint(100, 100));
   EXPECT_NEAR(image.surfacePoint(100, 100)->z(), 1.0, DepthTolerance);
-  EXPECT_FALSE(image.surfacePoint(2, 2)); // background
+  EXPECT_FALSE(image.surfacePoint(2, 2));    // background
   EXPECT_FALSE(image.surfacePoint(-1, 100)); // off the image
   EXPECT_FALSE(image.surfacePoint(Size, 100));
   // Half a pixel beyond the first row or column rounds to -1: off the image, not before it.
@@ -181,7 +189,8 @@ TEST(SurfaceSketch, SimplificationKeepsEveryPointWithinTheTolerance)
     EXPECT_LE(nearest, tolerance);
   }
   // A straight line keeps its ends; repeated points go; a corner stays.
-  EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(1, 0, 0), Vector3(2, 0, 0) }, 1e-9).size(), 2u);
+  EXPECT_EQ(
+    simplifyPolyline({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(1, 0, 0), Vector3(2, 0, 0) }, 1e-9).size(), 2u);
   EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(1, 0, 0), Vector3(1, 1, 0) }, 1e-3).size(), 3u);
   EXPECT_EQ(simplifyPolyline({ Vector3(0, 0, 0), Vector3(0, 0, 0) }, 1e-3).size(), 1u);
   EXPECT_TRUE(simplifyPolyline({}, 1e-3).empty());

@@ -24,8 +24,8 @@ namespace
 {
 TriangleMesh tetrahedron()
 {
-  return TriangleMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } },
-    { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 } });
+  return TriangleMesh(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } }, { { 0, 2, 1 }, { 0, 1, 3 }, { 1, 2, 3 }, { 0, 3, 2 } });
 }
 
 void expectConsistentAdjacency(const TriangleMesh& mesh)
@@ -237,8 +237,8 @@ TEST(TriangleMesh, GeneratedSurfacesHaveTheirEulerCharacteristic)
     EXPECT_EQ(report.eulerCharacteristic, c.euler);
     EXPECT_EQ(report.boundaryLoops, c.loops);
     EXPECT_EQ(report.components, 1);
-    EXPECT_EQ(report.nonManifoldEdges + report.nonManifoldVertices + report.inconsistentEdges +
-        report.duplicateFaces + report.zeroAreaFaces + report.unreferencedVertices,
+    EXPECT_EQ(report.nonManifoldEdges + report.nonManifoldVertices + report.inconsistentEdges + report.duplicateFaces +
+        report.zeroAreaFaces + report.unreferencedVertices,
       0);
     expectConsistentAdjacency(c.mesh);
   }
@@ -269,8 +269,7 @@ TEST(TriangleMesh, GridBoundaryLoopFollowsTheTriangles)
 
 TEST(TriangleMesh, ComponentsAndUnreferencedPoints)
 {
-  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 },
-                            { 5, 1, 0 }, { 9, 9, 9 } },
+  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 0, 0 }, { 6, 0, 0 }, { 5, 1, 0 }, { 9, 9, 9 } },
     { { 0, 1, 2 }, { 3, 4, 5 } });
   EXPECT_EQ(mesh.componentCount(), 2);
   EXPECT_EQ(mesh.faceComponent(0), 0);
@@ -489,8 +488,8 @@ TEST(TriangleMesh, RefinedRefusesWhatDoesNotFit)
 TEST(MeshValidation, NonManifoldEdge)
 {
   // Three triangles around the edge (0, 1).
-  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
-    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  const TriangleMesh mesh(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
   const MeshReport report = inspectMesh(mesh);
   EXPECT_EQ(report.nonManifoldEdges, 1);
   const std::string problems = describeProblems(report, MeshRequirements{});
@@ -503,8 +502,8 @@ TEST(MeshValidation, NonManifoldEdge)
 
 TEST(MeshValidation, BowtieVertex)
 {
-  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 0, 0 }, { -1, -1, 0 } },
-    { { 0, 1, 2 }, { 0, 3, 4 } });
+  const TriangleMesh mesh(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 0, 0 }, { -1, -1, 0 } }, { { 0, 1, 2 }, { 0, 3, 4 } });
   const MeshReport report = inspectMesh(mesh);
   EXPECT_EQ(report.nonManifoldVertices, 1);
   EXPECT_EQ(report.nonManifoldEdges, 0);
@@ -638,8 +637,7 @@ TEST(MeshValidation, FlippedTriangle)
   const TriangleMesh flipped(grid.points(), triangles);
   const MeshReport report = inspectMesh(flipped);
   EXPECT_EQ(report.inconsistentEdges, 3);
-  EXPECT_NE(describeProblems(report, MeshRequirements{}).find("inconsistently oriented"),
-    std::string::npos);
+  EXPECT_NE(describeProblems(report, MeshRequirements{}).find("inconsistently oriented"), std::string::npos);
 }
 
 TEST(MeshValidation, DegenerateDuplicateAndNonFinite)
@@ -673,8 +671,8 @@ TEST(MeshValidation, ClosedSurfaceRequirement)
 {
   MeshRequirements closed;
   closed.allowBoundary = false;
-  EXPECT_NE(describeProblems(inspectMesh(makeCylinder(1.0, 1.0, 8, 3)), closed).find("2 boundary loops"),
-    std::string::npos);
+  EXPECT_NE(
+    describeProblems(inspectMesh(makeCylinder(1.0, 1.0, 8, 3)), closed).find("2 boundary loops"), std::string::npos);
   EXPECT_EQ(describeProblems(inspectMesh(makeIcosphere(1.0, 1)), closed), "");
 }
 
@@ -692,8 +690,8 @@ TEST(OpenMeshAdapter, RoundTripKeepsNumbering)
     // OpenMesh may start a face at another corner; the cyclic order is kept.
     const Triangle& a = torus.triangle(f);
     const Triangle& b = back.triangle(f);
-    const bool same = (a == b) || (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) ||
-      (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
+    const bool same =
+      (a == b) || (a[0] == b[1] && a[1] == b[2] && a[2] == b[0]) || (a[0] == b[2] && a[1] == b[0] && a[2] == b[1]);
     EXPECT_TRUE(same) << "face " << f;
   }
   for (int v = 0; v < torus.vertexCount(); ++v)
@@ -704,16 +702,16 @@ TEST(OpenMeshAdapter, RoundTripKeepsNumbering)
 
 TEST(OpenMeshAdapter, RefusesNonManifoldInput)
 {
-  const TriangleMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
-    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  const TriangleMesh mesh(
+    { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
   EXPECT_THROW(toEditableMesh(mesh), Error);
 }
 
 TEST(PointWelding, IdenticalCoordinatesShareTheFirstIndex)
 {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  const std::vector<Vector3> points = { { 0, 0, 0 }, { 1, 2, 3 }, { -0.0, 0, 0 }, { 1, 2, 3 },
-    { 1, 2, 3.0000000001 }, { nan, 0, 0 }, { nan, 0, 0 } };
+  const std::vector<Vector3> points = { { 0, 0, 0 }, { 1, 2, 3 }, { -0.0, 0, 0 }, { 1, 2, 3 }, { 1, 2, 3.0000000001 },
+    { nan, 0, 0 }, { nan, 0, 0 } };
   EXPECT_EQ(findCoincidentPoints(points), (std::vector<int>{ 0, 1, 0, 1, 4, 5, 6 }));
   std::vector<Triangle> triangles = { { 3, 2, 4 } };
   weldTriangles(findCoincidentPoints(points), triangles);
@@ -733,8 +731,8 @@ TEST(PointWelding, IdenticalCoordinatesShareTheFirstIndex)
 TEST(TriangleMesh, ProblemsNameTheirFirstPlaces)
 {
   // Three triangles on edge 0-1, a zero-area triangle, a duplicate (which makes edge 8-9 non-manifold).
-  const TriangleMesh fan({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 2, 0, 0 },
-                           { 3, 0, 0 }, { 5, 5, 0 }, { 6, 5, 0 }, { 5, 6, 0 }, { 6, 6, 0 } },
+  const TriangleMesh fan({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 }, { 2, 0, 0 }, { 3, 0, 0 },
+                           { 5, 5, 0 }, { 6, 5, 0 }, { 5, 6, 0 }, { 6, 6, 0 } },
     { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 }, { 1, 5, 6 }, { 7, 8, 9 }, { 8, 10, 9 }, { 9, 10, 8 } });
   const MeshReport report = inspectMesh(fan);
   EXPECT_EQ(report.nonManifoldEdgeIds, (std::vector<std::array<int, 2>>{ { 0, 1 }, { 8, 9 } }));
@@ -743,7 +741,8 @@ TEST(TriangleMesh, ProblemsNameTheirFirstPlaces)
   MeshRequirements strict;
   strict.allowZeroAreaFaces = false;
   const std::string named = describeProblems(report, strict);
-  EXPECT_NE(named.find("2 edges are non-manifold (shared by three or more triangles: points 0-1, 8-9)"), std::string::npos)
+  EXPECT_NE(
+    named.find("2 edges are non-manifold (shared by three or more triangles: points 0-1, 8-9)"), std::string::npos)
     << named;
   EXPECT_NE(named.find("1 triangle has zero area (collinear or coincident corners: triangles 3)"), std::string::npos)
     << named;
@@ -783,7 +782,8 @@ TEST(UnionFind, TheSmallerRootWinsWhateverTheOrderOfTheJoins)
     const std::vector<int> expected{ 0, 1, 2, 0, 1, 0, 2, 0 };
     for (int v = 0; v < 8; ++v)
     {
-      EXPECT_EQ(forest.find(v), expected[static_cast<std::size_t>(v)]) << "vertex " << v << (reversed ? " reversed" : "");
+      EXPECT_EQ(forest.find(v), expected[static_cast<std::size_t>(v)])
+        << "vertex " << v << (reversed ? " reversed" : "");
     }
   }
   // findRoot on a raw array halves the path: after one call every node of the chain 4 -> 3 -> 2

@@ -37,8 +37,7 @@ TEST(Triangulation, TrianglesAreKept)
 TEST(Triangulation, ConcavePolygonKeepsAreaAndOrientation)
 {
   // An L-shaped hexagon of area 3, tilted out of the xy plane.
-  std::vector<Vector3> points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 1, 0 }, { 1, 2, 0 },
-    { 0, 2, 0 } };
+  std::vector<Vector3> points = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 1, 0 }, { 1, 1, 0 }, { 1, 2, 0 }, { 0, 2, 0 } };
   for (Vector3& p : points)
   {
     p = Vector3(p.x(), p.y() * 0.6, p.y() * 0.8);

@@ -92,7 +92,8 @@ std::string SourcePath(int argc, char* argv[], const std::string& relative)
 
 CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[])
 {
-  CamelWithNeckStroke files{ vtkSmartPointer<vtkKerfMeshFileReader>::New(), vtkSmartPointer<vtkKerfMeshFileReader>::New() };
+  CamelWithNeckStroke files{ vtkSmartPointer<vtkKerfMeshFileReader>::New(),
+    vtkSmartPointer<vtkKerfMeshFileReader>::New() };
   files.camel->SetFileName(SourcePath(argc, argv, "Data/camel.off").c_str());
   files.stroke->SetFileName(SourcePath(argc, argv, "Data/camel-neck-stroke.vtk").c_str());
   return files;

@@ -6,8 +6,8 @@
 #include "Mesh/MeshGenerators.h"
 #include "vtkBoundaryBandCut.h"
 #include "vtkConsensusCutSegmentation.h"
-#include "vtkEnsembleSegmentation.h"
 #include "vtkConvexFlooding.h"
+#include "vtkEnsembleSegmentation.h"
 #include "vtkHierarchicalFaceClustering.h"
 #include "vtkKMeansSegmentation.h"
 #include "vtkSpectralSegmentation.h"
@@ -171,7 +171,8 @@ Fixture StackedBoxes()
 {
   const double corners[4][2] = { { -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } };
   std::vector<std::array<double, 3>> points;
-  for (const auto& level : { std::array<double, 2>{ { 1.0, -1.0 } }, { { 1.0, 0.0 } }, { { 0.5, 0.0 } }, { { 0.5, 1.0 } } })
+  for (const auto& level :
+    { std::array<double, 2>{ { 1.0, -1.0 } }, { { 1.0, 0.0 } }, { { 0.5, 0.0 } }, { { 0.5, 1.0 } } })
   {
     for (const auto& corner : corners)
     {
@@ -231,8 +232,8 @@ bool CheckSegmentation(const char* method, const Fixture& fixture,
   }
   const double error = RandIndexError(fixture, labels);
   const int count = static_cast<int>(FieldValue(filter->GetOutput(), "SegmentCount"));
-  std::cout << method << " on the " << fixture.name << ": " << count << " segments, 1 - Rand index "
-            << error << std::endl;
+  std::cout << method << " on the " << fixture.name << ": " << count << " segments, 1 - Rand index " << error
+            << std::endl;
   ok &= KERF_CHECK(count == segments);
   ok &= KERF_CHECK(*std::max_element(labels.begin(), labels.end()) == segments - 1);
   ok &= KERF_CHECK(*std::min_element(labels.begin(), labels.end()) == 0);
@@ -307,8 +308,7 @@ int TestAutomaticSegmentationFilters(int, char*[])
   {
     ok &= CheckSegmentation(band > 0.0 ? "Ensemble of convex flooding and the watershed"
                                        : "Ensemble of convex flooding and the watershed without the band",
-      dumbbell,
-      Maker<vtkEnsembleSegmentation>([band](vtkEnsembleSegmentation* f) {
+      dumbbell, Maker<vtkEnsembleSegmentation>([band](vtkEnsembleSegmentation* f) {
         f->SetSegmentCount(2);
         f->SetConsensusCutsWeight(0.0);
         f->SetSpectralWeight(0.0);
@@ -333,8 +333,8 @@ int TestAutomaticSegmentationFilters(int, char*[])
       f->SetBlockSize(32);
     }),
     6, 0.0);
-  ok &= CheckSegmentation("K-Means", cube,
-    Maker<vtkKMeansSegmentation>([](vtkKMeansSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
+  ok &= CheckSegmentation(
+    "K-Means", cube, Maker<vtkKMeansSegmentation>([](vtkKMeansSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
   ok &= CheckSegmentation("Spectral", cube,
     Maker<vtkSpectralSegmentation>([](vtkSpectralSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
   ok &= CheckSegmentation("Ensemble", cube,

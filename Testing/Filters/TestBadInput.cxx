@@ -63,32 +63,28 @@ std::vector<BadMesh> handMadeDefects()
     lines->SetLines(cells);
     cases.push_back({ "lines only", lines, "no triangles" });
   }
-  cases.push_back({ "NaN coordinate",
-    makeMesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } }), "NaN or infinite" });
-  cases.push_back({ "infinite coordinate",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, inf } }, { { 0, 1, 2 } }), "NaN or infinite" });
+  cases.push_back(
+    { "NaN coordinate", makeMesh({ { 0, 0, 0 }, { 1, nan, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } }), "NaN or infinite" });
+  cases.push_back({ "infinite coordinate", makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, inf } }, { { 0, 1, 2 } }),
+    "NaN or infinite" });
   cases.push_back({ "non-manifold edge",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } },
-      { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }),
+    makeMesh(
+      { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 } }, { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } }),
     "non-manifold" });
   cases.push_back({ "bowtie vertex",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 0, 0 }, { -1, -1, 0 } },
-      { { 0, 1, 2 }, { 0, 3, 4 } }),
+    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 0, 0 }, { -1, -1, 0 } }, { { 0, 1, 2 }, { 0, 3, 4 } }),
     "vertex is non-manifold" });
   cases.push_back({ "flipped neighbour",
     makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 0, 3, 2 } }),
     "inconsistently oriented" });
   cases.push_back({ "duplicate triangle",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 1, 2, 0 } }),
-    "duplicates another" });
-  cases.push_back({ "repeated point",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 0, 0, 1 } }),
+    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 1, 2, 0 } }), "duplicates another" });
+  cases.push_back({ "repeated point", makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 0, 0, 1 } }),
     "same point twice" });
-  cases.push_back({ "point id out of range",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 7 } }), "uses point 7" });
+  cases.push_back(
+    { "point id out of range", makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 7 } }), "uses point 7" });
   cases.push_back({ "polygon with a negative id",
-    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }, { { 0, 1, 3, -2 } }),
-    "uses point -2" });
+    makeMesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 } }, { { 0, 1, 3, -2 } }), "uses point -2" });
   return cases;
 }
 
@@ -162,13 +158,11 @@ int TestBadInput(int argc, char* argv[])
     const char* expected; // "" when the filter must succeed
   };
   const FileCase xatlas[] = {
-    { "xatlas/cube.obj", "" },              // split at texture seams, welded back to a closed cube
-    { "xatlas/gazebo.obj", "" },            // 56 parts
-    { "xatlas/degenerate_edge.obj", "same point twice" },
-    { "xatlas/zero_length_edge.obj", "same point twice" },
-    { "xatlas/double_sided.obj", "duplicate" },
-    { "xatlas/duplicate_edge.obj", "" },
-    { "xatlas/zero_area_face.obj", "" },    // zero-area triangles contribute nothing
+    { "xatlas/cube.obj", "" },   // split at texture seams, welded back to a closed cube
+    { "xatlas/gazebo.obj", "" }, // 56 parts
+    { "xatlas/degenerate_edge.obj", "same point twice" }, { "xatlas/zero_length_edge.obj", "same point twice" },
+    { "xatlas/double_sided.obj", "duplicate" }, { "xatlas/duplicate_edge.obj", "" },
+    { "xatlas/zero_area_face.obj", "" }, // zero-area triangles contribute nothing
   };
   if (kerf::test::SharedDataPath("xatlas").empty())
   {
@@ -191,8 +185,7 @@ int TestBadInput(int argc, char* argv[])
         algorithm->SetInputConnection(reader->GetOutputPort());
         int succeeded = 0;
         const std::string error = kerf::test::UpdateAndCaptureError(algorithm, &succeeded);
-        std::cout << filter.name << " on " << c.file << ": " << (error.empty() ? "ok" : error)
-                  << std::endl;
+        std::cout << filter.name << " on " << c.file << ": " << (error.empty() ? "ok" : error) << std::endl;
         if (c.expected[0] == '\0')
         {
           ok &= KERF_CHECK(succeeded == 1 && error.empty());
@@ -237,7 +230,8 @@ int TestBadInput(int argc, char* argv[])
     int succeeded = 1;
     const std::string error = kerf::test::UpdateAndCaptureError(reader, &succeeded);
     std::cout << "vtkKerfMeshFileReader on bad-index.obj: " << error << std::endl;
-    ok &= KERF_CHECK(succeeded == 0 && error.find("OBJ line 3: vertex index 9 is out of range: the file has 2 vertices") != std::string::npos);
+    ok &= KERF_CHECK(succeeded == 0 &&
+      error.find("OBJ line 3: vertex index 9 is out of range: the file has 2 vertices") != std::string::npos);
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

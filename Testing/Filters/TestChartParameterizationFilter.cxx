@@ -1,4 +1,5 @@
-// vtkChartParameterization as a VTK filter: the Core's texture coordinates with either method (LSCM, LinABF), the arrays, the layout, the errors, the input untouched.
+// vtkChartParameterization as a VTK filter: the Core's texture coordinates with either method (LSCM, LinABF), the
+// arrays, the layout, the errors, the input untouched.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "Parameterization/ChartParameterization.h"
@@ -48,7 +49,8 @@ bool developableCylinder(int method)
 {
   bool ok = true;
   const kerf::TriangleMesh cylinder = kerf::makeSlitCylinder(1.0, 2.0, 32, 8);
-  vtkSmartPointer<vtkPolyData> input = labelled(cylinder, std::vector<int>(static_cast<std::size_t>(cylinder.faceCount()), 4), "Chart");
+  vtkSmartPointer<vtkPolyData> input =
+    labelled(cylinder, std::vector<int>(static_cast<std::size_t>(cylinder.faceCount()), 4), "Chart");
   const vtkMTimeType inputTime = input->GetMTime();
   vtkNew<vtkChartParameterization> filter;
   filter->SetInputData(input);
@@ -58,7 +60,8 @@ bool developableCylinder(int method)
   vtkDataArray* uv = output->GetPointData()->GetTCoords();
   ok &= KERF_CHECK(uv && std::string(uv->GetName()) == "UV" && uv->GetNumberOfComponents() == 2);
   ok &= KERF_CHECK(uv && uv->GetDataType() == VTK_FLOAT);
-  ok &= KERF_CHECK(output->GetNumberOfPoints() == cylinder.vertexCount() && output->GetNumberOfCells() == cylinder.faceCount());
+  ok &= KERF_CHECK(
+    output->GetNumberOfPoints() == cylinder.vertexCount() && output->GetNumberOfCells() == cylinder.faceCount());
   vtkDataArray* stretch = output->GetCellData()->GetArray("Stretch");
   vtkDataArray* shear = output->GetCellData()->GetArray("Shear");
   vtkDataArray* flipped = output->GetCellData()->GetArray("Flipped");
@@ -96,7 +99,8 @@ bool segmentsMatchTheCore(int method)
   vtkPolyData* layout = filter->GetOutput(1);
   vtkDataArray* uv = output->GetPointData()->GetArray("UV");
   ok &= KERF_CHECK(uv && uv->GetNumberOfTuples() == static_cast<vtkIdType>(core.uv.size()));
-  ok &= KERF_CHECK(layout->GetNumberOfPoints() == output->GetNumberOfPoints() && layout->GetNumberOfCells() == output->GetNumberOfCells());
+  ok &= KERF_CHECK(layout->GetNumberOfPoints() == output->GetNumberOfPoints() &&
+    layout->GetNumberOfCells() == output->GetNumberOfCells());
   for (vtkIdType v = 0; uv && v < uv->GetNumberOfTuples(); ++v)
   {
     const kerf::Vector2& expected = core.uv[static_cast<std::size_t>(v)];
@@ -111,7 +115,8 @@ bool segmentsMatchTheCore(int method)
   ok &= KERF_CHECK(fieldValue(output, "ChartCount") == 8 && fieldValue(layout, "ChartCount") == 8);
   ok &= KERF_CHECK(output->GetCellData()->GetArray("Segment") != nullptr);
   vtkDataArray* perChart = vtkDataArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("ChartMeanStretch"));
-  ok &= KERF_CHECK(perChart && perChart->GetNumberOfTuples() == 8 && perChart->GetTuple1(3) == core.charts[3].distortion.meanStretch);
+  ok &= KERF_CHECK(
+    perChart && perChart->GetNumberOfTuples() == 8 && perChart->GetTuple1(3) == core.charts[3].distortion.meanStretch);
   ok &= KERF_CHECK(fieldValue(output, "FlippedFaces") == 0 && fieldValue(output, "OverlappingChartPairs") == 0);
   return ok;
 }
@@ -177,7 +182,8 @@ bool errors()
       {
         std::cerr << "expected '" << c.expected << "' in: " << error << "\n";
       }
-      ok &= KERF_CHECK(filter->GetOutput(0)->GetNumberOfPoints() == 0 && filter->GetOutput(1)->GetNumberOfPoints() == 0);
+      ok &=
+        KERF_CHECK(filter->GetOutput(0)->GetNumberOfPoints() == 0 && filter->GetOutput(1)->GetNumberOfPoints() == 0);
       ok &= KERF_CHECK(c.input->GetMTime() == inputTime && c.input->GetPointData()->GetNumberOfArrays() == 0);
     }
   }
@@ -189,7 +195,8 @@ bool torusCutIntoADisk()
 {
   bool ok = true;
   const kerf::TriangleMesh torus = kerf::makeTorus(1.0, 0.3, 24, 12);
-  vtkSmartPointer<vtkPolyData> input = labelled(torus, std::vector<int>(static_cast<std::size_t>(torus.faceCount()), 6), "Chart");
+  vtkSmartPointer<vtkPolyData> input =
+    labelled(torus, std::vector<int>(static_cast<std::size_t>(torus.faceCount()), 6), "Chart");
   vtkNew<vtkChartParameterization> filter;
   filter->SetInputData(input);
   ok &= KERF_CHECK(filter->GetCutToDisks());

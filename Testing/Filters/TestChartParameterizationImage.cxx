@@ -1,4 +1,5 @@
-// Regression image: a sphere cut into its eight octants, checkerboard-textured through Chart Parameterization's UV, beside the UV layout.
+// Regression image: a sphere cut into its eight octants, checkerboard-textured through Chart Parameterization's UV,
+// beside the UV layout.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
@@ -45,7 +46,8 @@ int TestChartParameterizationImage(int argc, char* argv[])
   right.zoom = 1.1;
   right.caption = "the UV layout in the unit square";
   std::string error;
-  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderPair(atlas->GetOutput(0), left, atlas->GetOutput(1), right, error);
+  vtkSmartPointer<vtkRenderWindow> window =
+    kerf::RenderPair(atlas->GetOutput(0), left, atlas->GetOutput(1), right, error);
   if (!window)
   {
     std::cerr << "cannot render: " << error << std::endl;

@@ -1,4 +1,5 @@
-// vtkCurveExport: the camel cut along its neck stroke exported by scissor, snap and inverse snap; errors, input untouched.
+// vtkCurveExport: the camel cut along its neck stroke exported by scissor, snap and inverse snap; errors, input
+// untouched.
 #include "KerfTestUtilities.h"
 #include "vtkCurveExport.h"
 #include "vtkKerfMeshFileReader.h"
@@ -154,7 +155,8 @@ int TestCurveExportFilter(int argc, char* argv[])
   ok &= KERF_CHECK(snap->GetOutput()->GetNumberOfCells() == surface->GetNumberOfCells());
   ok &= KERF_CHECK(fieldValue(snap->GetOutput(), "MovedVertices") > 0.0);
   ok &= KERF_CHECK(fieldValue(snap->GetOutput(), "MovedVertices") + fieldValue(snap->GetOutput(), "RefusedFlips") +
-      fieldValue(snap->GetOutput(), "DroppedPoints") <= curves->GetNumberOfPoints());
+      fieldValue(snap->GetOutput(), "DroppedPoints") <=
+    curves->GetNumberOfPoints());
   ok &= KERF_CHECK(fieldValue(snap->GetOutput(), "ChartCount") == 2.0);
 
   // Errors: no curve, an empty curve input, a curve off the surface (the point named).

@@ -1,4 +1,5 @@
-// Easy Mesh Cut (vtkEasyMeshCut, and vtkRegionGrowing -> vtkSnakeRefinement): a dumbbell's smaller lobe against its known part (Rand index), the boundary in the crease, determinism, errors.
+// Easy Mesh Cut (vtkEasyMeshCut, and vtkRegionGrowing -> vtkSnakeRefinement): a dumbbell's smaller lobe against its
+// known part (Rand index), the boundary in the crease, determinism, errors.
 #include "Evaluation/SegmentationMetrics.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
@@ -168,8 +169,8 @@ int TestEasyMeshCutFilter(int, char*[])
     {
       worst = std::max(worst, std::abs(boundary->GetPoint(i)[2] - crease));
     }
-    std::cout << "boundary: " << boundary->GetNumberOfPoints() << " points, farthest " << worst
-              << " from the crease" << std::endl;
+    std::cout << "boundary: " << boundary->GetNumberOfPoints() << " points, farthest " << worst << " from the crease"
+              << std::endl;
     ok &= KERF_CHECK(worst < 0.06);
     vtkDataArray* distance = cut->GetOutput()->GetPointData()->GetArray("IsophoticDistance");
     ok &= KERF_CHECK(distance && distance->GetNumberOfTuples() == dumbbell->GetNumberOfPoints());
@@ -245,8 +246,8 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(panelError < 0.012); // measured 0.0095, refined as above
     panel->SetNumberOfBackgroundPoints(0);
     int succeeded = 1;
-    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("at least two labels") !=
-      std::string::npos);
+    ok &=
+      KERF_CHECK(kerf::test::UpdateAndCaptureError(panel, &succeeded).find("at least two labels") != std::string::npos);
     ok &= KERF_CHECK(succeeded == 0);
   }
 
@@ -260,7 +261,8 @@ int TestEasyMeshCutFilter(int, char*[])
     for (int i = 0; i <= 16; ++i)
     {
       const double angle = 3.141592653589793 * i / 16;
-      ids.push_back(points->InsertNextPoint(radius(strokeZ) * std::cos(angle), radius(strokeZ) * std::sin(angle), strokeZ));
+      ids.push_back(
+        points->InsertNextPoint(radius(strokeZ) * std::cos(angle), radius(strokeZ) * std::sin(angle), strokeZ));
     }
     line->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
     vtkNew<vtkPolyData> override;
@@ -335,7 +337,8 @@ int TestEasyMeshCutFilter(int, char*[])
     ok &= KERF_CHECK(hugeSizes && hugeSizes->GetNumberOfTuples() == 2);
     // A drawn label below -1 is refused, naming the stroke.
     drawn->SetDrawnStrokeLabel(2, -2);
-    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).find("drawn stroke 2 has the label -2") != std::string::npos);
+    ok &=
+      KERF_CHECK(kerf::test::UpdateAndCaptureError(drawn).find("drawn stroke 2 has the label -2") != std::string::npos);
     // An override away from every boundary is refused.
     points->SetPoint(0, radius(-1.5), 0.0, -1.5);
     for (int i = 1; i <= 16; ++i)
@@ -345,7 +348,8 @@ int TestEasyMeshCutFilter(int, char*[])
     }
     points->Modified();
     int succeeded = 1;
-    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(edited, &succeeded).find("not near a boundary") != std::string::npos);
+    ok &= KERF_CHECK(
+      kerf::test::UpdateAndCaptureError(edited, &succeeded).find("not near a boundary") != std::string::npos);
     ok &= KERF_CHECK(succeeded == 0);
   }
 
@@ -418,7 +422,8 @@ int TestEasyMeshCutFilter(int, char*[])
         valuesOf(cut->GetBoundary()->GetCellData()->GetArray("RightLabel")));
     }
     ok &= KERF_CHECK(valuesOf(growing->GetOutput()->GetPointData()->GetArray("IsophoticDistance")) ==
-      valuesOf(vtkPolyData::SafeDownCast(growing->GetOutputDataObject(0))->GetPointData()->GetArray("IsophoticDistance")));
+      valuesOf(
+        vtkPolyData::SafeDownCast(growing->GetOutputDataObject(0))->GetPointData()->GetArray("IsophoticDistance")));
     // Per vertex: a face whose three corners share a label has that label.
     vtkDataArray* vertexLabels = growing->GetOutput()->GetPointData()->GetArray("Segment");
     const std::vector<int> faces = segmentsOf(growing->GetOutput());
@@ -496,7 +501,8 @@ int TestEasyMeshCutFilter(int, char*[])
     vtkNew<vtkRegionGrowing> alone;
     alone->SetInputData(0, dumbbell);
     int succeeded = 1;
-    ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(alone, &succeeded).find("there are no strokes") != std::string::npos);
+    ok &= KERF_CHECK(
+      kerf::test::UpdateAndCaptureError(alone, &succeeded).find("there are no strokes") != std::string::npos);
     ok &= KERF_CHECK(succeeded == 0 && alone->GetOutput()->GetNumberOfPoints() == 0);
     vtkNew<vtkSnakeRefinement> unlabelled;
     unlabelled->SetInputData(dumbbell);

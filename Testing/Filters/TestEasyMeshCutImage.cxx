@@ -1,4 +1,5 @@
-// Regression image: Easy Mesh Cut on the camel from a foreground click on a front hoof and a background click on the top, grown parts beside the snake-refined ones.
+// Regression image: Easy Mesh Cut on the camel from a foreground click on a front hoof and a background click on the
+// top, grown parts beside the snake-refined ones.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkEasyMeshCut.h"
@@ -92,7 +93,8 @@ int TestEasyMeshCutImage(int argc, char* argv[])
   kerf::SceneOptions right = left;
   right.colorArray = "Segment";
   right.caption = "the boundary refined as a snake";
-  right.overlays = { { refined->GetBoundary(), { { 0.9, 0.1, 0.1 } }, 4.0 }, { clicks, { { 0.95, 0.85, 0.1 } }, 12.0 } };
+  right.overlays = { { refined->GetBoundary(), { { 0.9, 0.1, 0.1 } }, 4.0 },
+    { clicks, { { 0.95, 0.85, 0.1 } }, 12.0 } };
   std::string error;
   vtkSmartPointer<vtkRenderWindow> window = kerf::RenderSideBySide(both, left, right, error);
   if (!window)

@@ -1,4 +1,5 @@
-// Geodesic discs (vtkGeodesicDisc): spherical caps and a planar disc against their areas, union and difference of clicks, kept click distances, polygons, errors.
+// Geodesic discs (vtkGeodesicDisc): spherical caps and a planar disc against their areas, union and difference of
+// clicks, kept click distances, polygons, errors.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkGeodesicDisc.h"
@@ -73,7 +74,8 @@ int TestGeodesicDiscFilter(int, char*[])
   for (vtkIdType v = 0; region && distance && v < output->GetNumberOfPoints(); ++v)
   {
     const double* p = output->GetPoint(v);
-    const double d = std::acos(std::max(-1.0, std::min(1.0, p[2] / std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]))));
+    const double d =
+      std::acos(std::max(-1.0, std::min(1.0, p[2] / std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]))));
     if (d > 0.1) // beyond the source's first rings (edges of about 0.035)
     {
       const double error = std::abs(distance->GetComponent(v, 0) - d) / d;
@@ -89,8 +91,8 @@ int TestGeodesicDiscFilter(int, char*[])
   mean /= std::max(far, 1);
   const double fraction = fieldValue(output, "RegionAreaFraction");
   std::cout << "cap of radius 0.9: area fraction " << fraction << " against " << capFraction(0.9)
-            << ", distance's relative error beyond 0.1: mean " << mean << ", maximum " << worst << "; "
-            << misplaced << " vertices misplaced" << std::endl;
+            << ", distance's relative error beyond 0.1: mean " << mean << ", maximum " << worst << "; " << misplaced
+            << " vertices misplaced" << std::endl;
   ok &= KERF_CHECK(misplaced == 0 && mean <= 0.01 && worst <= 0.03);
   ok &= KERF_CHECK(std::abs(fraction / capFraction(0.9) - 1.0) <= 0.01);
   ok &= KERF_CHECK(std::abs(fieldValue(output, "RegionArea") / (2.0 * Pi * (1.0 - std::cos(0.9))) - 1.0) <= 0.01);
@@ -134,8 +136,8 @@ int TestGeodesicDiscFilter(int, char*[])
   disc->SetInputData(1, clicks);
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(disc).empty());
   const double expected = capFraction(0.9) - capFraction(0.5) + capFraction(0.7);
-  std::cout << "two added caps and one subtracted: area fraction " << fieldValue(disc->GetOutput(), "RegionAreaFraction")
-            << " against " << expected << std::endl;
+  std::cout << "two added caps and one subtracted: area fraction "
+            << fieldValue(disc->GetOutput(), "RegionAreaFraction") << " against " << expected << std::endl;
   ok &= KERF_CHECK(std::abs(fieldValue(disc->GetOutput(), "RegionAreaFraction") / expected - 1.0) <= 0.02);
   ok &= KERF_CHECK(fieldValue(disc->GetOutput(), "ClickDistanceFields") == 2.0);
   region = disc->GetOutput()->GetPointData()->GetArray("GeodesicDisc");

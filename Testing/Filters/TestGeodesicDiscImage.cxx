@@ -1,4 +1,5 @@
-// Regression image: geodesic discs on the camel, two clicks adding their discs and one subtracting, the distance to the nearest click beside the region.
+// Regression image: geodesic discs on the camel, two clicks adding their discs and one subtracting, the distance to the
+// nearest click beside the region.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkGeodesicDisc.h"
@@ -20,8 +21,8 @@ int TestGeodesicDiscImage(int argc, char* argv[])
   vtkNew<vtkKerfMeshFileReader> camel;
   camel->SetFileName(kerf::test::SourcePath(argc, argv, "Data/camel.off").c_str());
   camel->Update();
-  // The clicks: the camel's points of least y (a front hoof) and of greatest z (the head), adding discs of 0.2 and 0.15 of the diagonal, and the hoof's point again subtracting a
-  // disc of 0.07: a ring around the hoof.
+  // The clicks: the camel's points of least y (a front hoof) and of greatest z (the head), adding discs of 0.2 and 0.15
+  // of the diagonal, and the hoof's point again subtracting a disc of 0.07: a ring around the hoof.
   vtkPolyData* surface = camel->GetOutput();
   vtkIdType hoof = 0, far = 0;
   for (vtkIdType i = 1; i < surface->GetNumberOfPoints(); ++i)

@@ -1,4 +1,5 @@
-// Geodesic Polyline (vtkGeodesicPolyline): lengths against the distance field and great circles, paths across faces, simple closed loops, both metrics, errors.
+// Geodesic Polyline (vtkGeodesicPolyline): lengths against the distance field and great circles, paths across faces,
+// simple closed loops, both metrics, errors.
 #include "Geodesic/SurfacePoint.h"
 #include "Geometry/ClosestPoint.h"
 #include "KerfTestUtilities.h"
@@ -107,7 +108,8 @@ double checkPathOnSurface(vtkPolyData* path, const kerf::TriangleMesh& mesh, boo
 }
 
 // The distance field `name` of `surface` at a point of the path, interpolated in its triangle.
-double distanceAt(vtkPolyData* surface, const char* name, const kerf::TriangleMesh& mesh, int face, const kerf::Vector3& p)
+double distanceAt(
+  vtkPolyData* surface, const char* name, const kerf::TriangleMesh& mesh, int face, const kerf::Vector3& p)
 {
   vtkDataArray* distance = surface->GetPointData()->GetArray(name);
   const kerf::Vector3 b = kerf::barycentricInFace(mesh, face, p);
@@ -156,8 +158,8 @@ int TestGeodesicPolylineFilter(int, char*[])
   const double isotropicLength = fieldValue(line, "TotalLength");
   const double isotropicField = lengthAgainstField(line, sphere, sphereMesh, 0.0);
   std::cout << "isotropic path: " << line->GetNumberOfPoints() << " points, " << acrossFaces
-            << " of the segments inside a triangle, length " << isotropicLength << " (great circle "
-            << greatCircle << "), relative difference from the heat distance at its end " << isotropicField << std::endl;
+            << " of the segments inside a triangle, length " << isotropicLength << " (great circle " << greatCircle
+            << "), relative difference from the heat distance at its end " << isotropicField << std::endl;
   ok &= KERF_CHECK((start - a).norm() <= 0.01 && (end - b).norm() <= 0.01);
   ok &= KERF_CHECK(acrossFaces >= 0.5);
   ok &= KERF_CHECK(isotropicField <= 0.01);
@@ -224,8 +226,8 @@ int TestGeodesicPolylineFilter(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(onCylinder).empty());
   const double cylinderAcross = checkPathOnSurface(onCylinder->GetOutput(), cylinderMesh, ok);
   const double anisotropicField = lengthAgainstField(onCylinder->GetOutput(), cylinder, cylinderMesh, 1.0);
-  std::cout << "anisotropic path on the cylinder: length " << fieldValue(onCylinder->GetOutput(), "TotalLength")
-            << ", " << cylinderAcross << " of the segments inside a triangle, relative difference from the "
+  std::cout << "anisotropic path on the cylinder: length " << fieldValue(onCylinder->GetOutput(), "TotalLength") << ", "
+            << cylinderAcross << " of the segments inside a triangle, relative difference from the "
             << "Vector Dijkstra distance at its end " << anisotropicField << std::endl;
   ok &= KERF_CHECK(anisotropicField <= 0.01);
   ok &= KERF_CHECK(cylinderAcross >= 0.5);

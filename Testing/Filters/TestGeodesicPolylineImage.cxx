@@ -1,18 +1,19 @@
-// Regression image: Geodesic Polyline on the camel, a path from the head over the flank to the tail and a loop round the neck, isotropic beside anisotropic.
+// Regression image: Geodesic Polyline on the camel, a path from the head over the flank to the tail and a loop round
+// the neck, isotropic beside anisotropic.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "vtkGeodesicDistance.h"
 #include "vtkGeodesicPolyline.h"
 #include "vtkKerfMeshFileReader.h"
 
-#include <vtkCellArray.h>
 #include <vtkCell.h>
+#include <vtkCellArray.h>
 #include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
-#include <vtkPolygon.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolygon.h>
 #include <vtkRegressionTestImage.h>
 #include <vtkRenderWindow.h>
 
@@ -83,8 +84,9 @@ int TestGeodesicPolylineImage(int argc, char* argv[])
     paths[k]->SetMetric(k < 2 ? vtkGeodesicPolyline::ISOTROPIC : vtkGeodesicPolyline::ANISOTROPIC);
     paths[k]->SetGamma(2.0);
   }
-  for (vtkAlgorithm* algorithm : { static_cast<vtkAlgorithm*>(anisotropicDistance), static_cast<vtkAlgorithm*>(paths[0]),
-         static_cast<vtkAlgorithm*>(paths[1]), static_cast<vtkAlgorithm*>(paths[2]), static_cast<vtkAlgorithm*>(paths[3]) })
+  for (vtkAlgorithm* algorithm : { static_cast<vtkAlgorithm*>(anisotropicDistance),
+         static_cast<vtkAlgorithm*>(paths[0]), static_cast<vtkAlgorithm*>(paths[1]),
+         static_cast<vtkAlgorithm*>(paths[2]), static_cast<vtkAlgorithm*>(paths[3]) })
   {
     const std::string error = kerf::test::UpdateAndCaptureError(algorithm);
     if (!error.empty())
@@ -104,7 +106,8 @@ int TestGeodesicPolylineImage(int argc, char* argv[])
     for (vtkIdType i = 0; i < copy->GetNumberOfPoints(); ++i)
     {
       double normal[3], p[3];
-      vtkPolygon::ComputeNormal(surface->GetCell(static_cast<vtkIdType>(faces->GetComponent(i, 0)))->GetPoints(), normal);
+      vtkPolygon::ComputeNormal(
+        surface->GetCell(static_cast<vtkIdType>(faces->GetComponent(i, 0)))->GetPoints(), normal);
       copy->GetPoint(i, p);
       copy->GetPoints()->SetPoint(i, p[0] + lift * normal[0], p[1] + lift * normal[1], p[2] + lift * normal[2]);
     }
@@ -133,7 +136,8 @@ int TestGeodesicPolylineImage(int argc, char* argv[])
   right.overlays = { { lifted(paths[2]->GetOutput()), red, 4.0 }, { lifted(paths[3]->GetOutput()), white, 4.0 },
     { pathPoints, yellow, 12.0 }, { loopPoints, yellow, 12.0 } };
   std::string error;
-  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderSideBySide(anisotropicDistance->GetOutput(), left, right, error);
+  vtkSmartPointer<vtkRenderWindow> window =
+    kerf::RenderSideBySide(anisotropicDistance->GetOutput(), left, right, error);
   if (!window)
   {
     std::cerr << "cannot render: " << error << std::endl;

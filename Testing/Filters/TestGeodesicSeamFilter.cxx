@@ -1,4 +1,5 @@
-// Geodesic Seam (vtkGeodesicSeam): axial seams on a cylinder, their metric length, regrowth on the kept field, anchoring, errors.
+// Geodesic Seam (vtkGeodesicSeam): axial seams on a cylinder, their metric length, regrowth on the kept field,
+// anchoring, errors.
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkGeodesicSeam.h"

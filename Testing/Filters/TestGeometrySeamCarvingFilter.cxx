@@ -1,4 +1,5 @@
-// vtkGeometrySeamCarving as a VTK filter: Core's result value for value, the session kept between runs (identity gives the input back), the input untouched, errors.
+// vtkGeometrySeamCarving as a VTK filter: Core's result value for value, the session kept between runs (identity gives
+// the input back), the input untouched, errors.
 #include "Geometry/SurfaceDescriptors.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
@@ -49,7 +50,8 @@ bool sameAsCore(vtkPolyData* output, const kerf::SeamCarvingResult& core)
     double p[3];
     output->GetPoint(i, p);
     const kerf::Vector3& q = core.points[static_cast<std::size_t>(i)];
-    if (p[0] != q.x() || p[1] != q.y() || p[2] != q.z() || origin->GetComponent(i, 0) != core.pointOrigin[static_cast<std::size_t>(i)])
+    if (p[0] != q.x() || p[1] != q.y() || p[2] != q.z() ||
+      origin->GetComponent(i, 0) != core.pointOrigin[static_cast<std::size_t>(i)])
     {
       return false;
     }
@@ -84,7 +86,8 @@ int TestGeometrySeamCarvingFilter(int, char*[])
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(seams).empty());
   vtkPolyData* preprocessed = seams->GetOutput();
   const vtkMTimeType inputTime = preprocessed->GetMTime();
-  const int inputArrays = preprocessed->GetPointData()->GetNumberOfArrays() + preprocessed->GetCellData()->GetNumberOfArrays();
+  const int inputArrays =
+    preprocessed->GetPointData()->GetNumberOfArrays() + preprocessed->GetCellData()->GetNumberOfArrays();
 
   // Core on the same input, the same moves.
   kerf::GeometrySeamsOptions seamOptions;
@@ -116,14 +119,15 @@ int TestGeometrySeamCarvingFilter(int, char*[])
     ok &= KERF_CHECK(sameAsCore(carving->GetOutput(), core.deform(matrix)));
     split = static_cast<int>(fieldValue(carving->GetOutput(), "SplitSegments"));
   }
-  std::cout << "stretched by 1.5: " << split << " ring segments split, "
-            << carving->GetOutput()->GetNumberOfPoints() << " points" << std::endl;
+  std::cout << "stretched by 1.5: " << split << " ring segments split, " << carving->GetOutput()->GetNumberOfPoints()
+            << " points" << std::endl;
   ok &= KERF_CHECK(split > 0);
   ok &= KERF_CHECK(carving->GetOutput()->GetNumberOfPoints() > mesh.vertexCount());
   ok &= KERF_CHECK(fieldValue(carving->GetOutput(), "CollapsedSegments") == 0.0);
   vtkDataArray* state = carving->GetOutput()->GetFieldData()->GetArray("SectorState");
   ok &= KERF_CHECK(state && state->GetNumberOfTuples() == 6);
-  ok &= KERF_CHECK(carving->GetOutput()->GetCellData()->GetScalars() == carving->GetOutput()->GetCellData()->GetArray("RingSeam"));
+  ok &= KERF_CHECK(
+    carving->GetOutput()->GetCellData()->GetScalars() == carving->GetOutput()->GetCellData()->GetArray("RingSeam"));
 
   // Back to the identity in steps: the input's points and triangles.
   for (double dz : { -0.75, 0.0 })
@@ -168,7 +172,9 @@ int TestGeometrySeamCarvingFilter(int, char*[])
 
   // The input is untouched.
   ok &= KERF_CHECK(preprocessed->GetMTime() == inputTime);
-  ok &= KERF_CHECK(preprocessed->GetPointData()->GetNumberOfArrays() + preprocessed->GetCellData()->GetNumberOfArrays() == inputArrays);
+  ok &=
+    KERF_CHECK(preprocessed->GetPointData()->GetNumberOfArrays() + preprocessed->GetCellData()->GetNumberOfArrays() ==
+      inputArrays);
 
   // Errors: a clear sentence, an empty output.
   handle->Identity();

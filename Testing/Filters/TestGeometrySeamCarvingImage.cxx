@@ -1,4 +1,5 @@
-// Regression image: a bumpy cylinder stretched by half its modeling region, plain Laplace editing (left) beside geometry seam carving (right), coloured by ring seam.
+// Regression image: a bumpy cylinder stretched by half its modeling region, plain Laplace editing (left) beside
+// geometry seam carving (right), coloured by ring seam.
 #include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"

@@ -1,4 +1,5 @@
-// vtkGeometrySeams as a VTK filter: its arrays against Core on a bumpy cylinder, the contours, the input untouched, errors.
+// vtkGeometrySeams as a VTK filter: its arrays against Core on a bumpy cylinder, the contours, the input untouched,
+// errors.
 #include "Geometry/SurfaceDescriptors.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
@@ -14,7 +15,6 @@
 #include <vtkPolyData.h>
 
 #include <string>
-
 
 int TestGeometrySeamsFilter(int, char*[])
 {

@@ -83,7 +83,8 @@ int TestHarmonicCut(int, char*[])
     ok &= KERF_CHECK((values->GetComponent(i, 0) > 0) == (i % 2 == 0));
   }
   ok &= KERF_CHECK(values->GetComponent(0, 0) * (points->GetPoint(0)[2] - 2.0) * values->GetComponent(1, 0) *
-      (points->GetPoint(1)[2] - 2.0) > 0.0);
+      (points->GetPoint(1)[2] - 2.0) >
+    0.0);
 
   vtkNew<vtkHarmonicField> field;
   field->SetInputData(0, cylinder);
@@ -96,8 +97,8 @@ int TestHarmonicCut(int, char*[])
   vtkPolyData* curve = cut->GetOutput();
   double worst, mean;
   cutHeights(curve, 2.0, worst, mean);
-  std::cout << "cut: " << curve->GetNumberOfCells() << " curve(s), farthest point " << worst
-            << " from z = 2" << std::endl;
+  std::cout << "cut: " << curve->GetNumberOfCells() << " curve(s), farthest point " << worst << " from z = 2"
+            << std::endl;
   ok &= KERF_CHECK(curve->GetNumberOfCells() == 1);
   ok &= KERF_CHECK(curve->GetCellData()->GetArray("Closed")->GetComponent(0, 0) == 1);
   ok &= KERF_CHECK(worst < 0.1);
@@ -135,8 +136,8 @@ int TestHarmonicCut(int, char*[])
   for (vtkIdType i = 0; i < dumbbell->GetNumberOfPoints(); ++i)
   {
     const double z = dumbbell->GetPoint(i)[2];
-    tips->InsertNextValue(std::abs(z) > 0.9 * halfLength ? (z > 0 ? 1.0 : 0.0)
-                                                         : std::numeric_limits<double>::quiet_NaN());
+    tips->InsertNextValue(
+      std::abs(z) > 0.9 * halfLength ? (z > 0 ? 1.0 : 0.0) : std::numeric_limits<double>::quiet_NaN());
   }
   dumbbell->GetPointData()->AddArray(tips);
   vtkNew<vtkHarmonicField> neckField;

@@ -31,8 +31,8 @@ int TestHarmonicCutImage(int argc, char* argv[])
   cut->Update();
 
   std::string error;
-  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderCutScene(cut->GetLabelledSurface(),
-    stroke->GetOutput(), constraints->GetOutput(), cut->GetOutput(), "camel: a cut from one stroke", error);
+  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderCutScene(cut->GetLabelledSurface(), stroke->GetOutput(),
+    constraints->GetOutput(), cut->GetOutput(), "camel: a cut from one stroke", error);
   if (!window)
   {
     std::cerr << "cannot render: " << error << std::endl;

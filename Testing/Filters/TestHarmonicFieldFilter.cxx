@@ -107,8 +107,8 @@ int TestHarmonicFieldFilter(int, char*[])
   ok &= KERF_CHECK(gradient && magnitude && gradient->GetNumberOfTuples() == plane->GetNumberOfCells());
   for (vtkIdType c = 0; gradient && c < gradient->GetNumberOfTuples(); ++c)
   {
-    if (std::abs(gradient->GetComponent(c, 0) - 1.0 / width) > 1e-9 ||
-      std::abs(gradient->GetComponent(c, 1)) > 1e-9 || std::abs(magnitude->GetComponent(c, 0) - 1.0 / width) > 1e-9)
+    if (std::abs(gradient->GetComponent(c, 0) - 1.0 / width) > 1e-9 || std::abs(gradient->GetComponent(c, 1)) > 1e-9 ||
+      std::abs(magnitude->GetComponent(c, 0) - 1.0 / width) > 1e-9)
     {
       ok &= KERF_CHECK(false && "gradient of a linear field");
       break;
@@ -140,8 +140,8 @@ int TestHarmonicFieldFilter(int, char*[])
 
   // Soft constraints from a second input, on a closed surface.
   vtkSmartPointer<vtkPolyData> sphere = kerf::test::ToPolyData(kerf::makeIcosphere(1.0, 3));
-  vtkSmartPointer<vtkPolyData> soft = pointsWithValues(
-    { { { 0, 0, 1 } }, { { 0, 0, -1 } }, { { 1, 0, 0 } } }, { 1.0, -1.0, 0.0 });
+  vtkSmartPointer<vtkPolyData> soft =
+    pointsWithValues({ { { 0, 0, 1 } }, { { 0, 0, -1 } }, { { 1, 0, 0 } } }, { 1.0, -1.0, 0.0 });
   vtkNew<vtkHarmonicField> cached;
   cached->SetInputData(0, sphere);
   cached->SetInputData(1, soft);
@@ -321,8 +321,7 @@ int TestHarmonicFieldFilter(int, char*[])
   };
   const Case cases[] = {
     { "no constraint", sphere, nullptr, "has no constraint" },
-    { "constraint off the surface", sphere, pointsWithValues({ { { 0, 0, 3 } } }, { 1.0 }),
-      "away from the surface" },
+    { "constraint off the surface", sphere, pointsWithValues({ { { 0, 0, 3 } } }, { 1.0 }), "away from the surface" },
     { "a component without constraint", twoSpheres, pointsWithValues({ { { 0, 0, 1 } } }, { 1.0 }),
       "connected component 1" },
     { "NaN value", sphere, pointsWithValues({ { { 0, 0, 1 } } }, { nan }), "NaN" },

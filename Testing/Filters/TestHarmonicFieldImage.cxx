@@ -26,8 +26,8 @@ int TestHarmonicFieldImage(int argc, char* argv[])
   for (vtkIdType i = 0; i < shape->GetNumberOfPoints(); ++i)
   {
     const double z = shape->GetPoint(i)[2];
-    tips->InsertNextValue(std::abs(z) > 0.9 * halfLength ? (z > 0 ? 1.0 : 0.0)
-                                                         : std::numeric_limits<double>::quiet_NaN());
+    tips->InsertNextValue(
+      std::abs(z) > 0.9 * halfLength ? (z > 0 ? 1.0 : 0.0) : std::numeric_limits<double>::quiet_NaN());
   }
   shape->GetPointData()->AddArray(tips);
   vtkNew<vtkHarmonicField> field;

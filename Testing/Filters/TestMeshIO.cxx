@@ -8,8 +8,8 @@
 #include "vtkKerfSegmentationReader.h"
 #include "vtkKerfSegmentationWriter.h"
 
-#include <vtkCellData.h>
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
@@ -205,7 +205,8 @@ int TestMeshIO(int argc, char* argv[])
       error = kerf::test::UpdateAndCaptureError(reader);
       ok &= KERF_CHECK(error.empty());
       vtkDataArray* back = reader->GetOutput()->GetPointData()->GetTCoords();
-      ok &= KERF_CHECK(back && back->GetNumberOfTuples() == uv->GetNumberOfTuples() && back->GetNumberOfComponents() == 2);
+      ok &=
+        KERF_CHECK(back && back->GetNumberOfTuples() == uv->GetNumberOfTuples() && back->GetNumberOfComponents() == 2);
       double worst = back ? 0.0 : 1.0;
       for (vtkIdType v = 0; back && v < back->GetNumberOfTuples(); ++v)
       {
@@ -228,8 +229,7 @@ int TestMeshIO(int argc, char* argv[])
     vtkSmartPointer<vtkPolyData> (*readWithVTK)(const std::string&);
   };
   std::vector<Flavour> flavours;
-  auto add = [&](auto writer, const std::string& name,
-               vtkSmartPointer<vtkPolyData> (*reader)(const std::string&)) {
+  auto add = [&](auto writer, const std::string& name, vtkSmartPointer<vtkPolyData> (*reader)(const std::string&)) {
     const std::string file = temp + "/kerf-io-flavour-" + name;
     writer->SetInputData(torus);
     writer->SetFileName(file.c_str());

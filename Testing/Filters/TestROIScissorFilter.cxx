@@ -1,4 +1,5 @@
-// ROI Scissor (vtkROIScissor): the protrusion of a dumbbell against its known part (Rand index), the boundary in the crease, clicks as an input, kept click distances, errors.
+// ROI Scissor (vtkROIScissor): the protrusion of a dumbbell against its known part (Rand index), the boundary in the
+// crease, clicks as an input, kept click distances, errors.
 #include "Evaluation/SegmentationMetrics.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
@@ -7,9 +8,9 @@
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIntArray.h>
 #include <vtkMath.h>
-#include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -18,8 +19,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <iostream>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -89,8 +90,8 @@ int TestROIScissorFilter(int, char*[])
   const std::vector<int> labels = labelsOf(output);
   ok &= KERF_CHECK(static_cast<int>(labels.size()) == mesh.faceCount());
   const kerf::SegmentationScores scores = kerf::compareSegmentations(mesh, labels, protrusion);
-  std::cout << "Rand index " << 1.0 - scores.randIndexError << ", Hamming distance " << scores.hammingDistance
-            << " (" << mesh.faceCount() << " triangles)" << std::endl;
+  std::cout << "Rand index " << 1.0 - scores.randIndexError << ", Hamming distance " << scores.hammingDistance << " ("
+            << mesh.faceCount() << " triangles)" << std::endl;
   ok &= KERF_CHECK(1.0 - scores.randIndexError >= 0.97);
   ok &= KERF_CHECK(output->GetCellData()->GetScalars() == output->GetCellData()->GetArray("RoiRegion"));
   ok &= KERF_CHECK(output->GetPointData()->GetArray("RoiField") && output->GetPointData()->GetArray("RoiCandidate"));
@@ -114,7 +115,8 @@ int TestROIScissorFilter(int, char*[])
   roi->SetRadius(0.55);
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(roi).empty());
   ok &= KERF_CHECK(fieldValue(roi->GetOutput(), "ClickDistanceFields") == 1.0);
-  ok &= KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
+  ok &=
+    KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
 
   // The radius in the input's units (ParaView's sphere widget) gives the same output as the
   // same radius as a fraction of the diagonal, field for field; a NaN is refused.
@@ -192,7 +194,8 @@ int TestROIScissorFilter(int, char*[])
   std::cout << "subtracted disc: " << removedNear << " vertices near it out of the candidate region, " << keptFar
             << " of the protrusion in it" << std::endl;
   ok &= KERF_CHECK(removedNear > 10 && keptFar > 100);
-  ok &= KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
+  ok &=
+    KERF_CHECK(1.0 - kerf::compareSegmentations(mesh, labelsOf(roi->GetOutput()), protrusion).randIndexError >= 0.97);
   // Errors of the click arrays: only subtracting clicks, a radius that is not positive.
   subtract->SetValue(0, 1);
   subtract->Modified();

@@ -1,4 +1,5 @@
-// Kerf's sketch widget driven by mouse events in a VTK render window: strokes on a sphere stay on it and split off it, clicks erase, undo restores, discs measure the surface, points; a drawn stroke cuts the sphere in two; the picture.
+// Kerf's sketch widget driven by mouse events in a VTK render window: strokes on a sphere stay on it and split off it,
+// clicks erase, undo restores, discs measure the surface, points; a drawn stroke cuts the sphere in two; the picture.
 #include "KerfTestUtilities.h"
 #include "vtkKerfSketchRepresentation.h"
 #include "vtkKerfSketchWidget.h"
@@ -112,8 +113,8 @@ int TestSketchWidgetImage(int argc, char* argv[])
   ok &= KERF_CHECK(widget->GetLastChanged());
   ok &= KERF_CHECK(sketch->GetNumberOfStrokes() == 1);
   vtkDoubleArray* points = sketch->GetStrokePoints();
-  std::cout << "stroke: " << points->GetNumberOfTuples() << " points, farthest "
-            << farthestFromSphere(points) << " from the sphere" << std::endl;
+  std::cout << "stroke: " << points->GetNumberOfTuples() << " points, farthest " << farthestFromSphere(points)
+            << " from the sphere" << std::endl;
   ok &= KERF_CHECK(points->GetNumberOfTuples() >= 5 && points->GetNumberOfTuples() <= 80);
   ok &= KERF_CHECK(farthestFromSphere(points) < 0.01 * Radius);
   ok &= KERF_CHECK(points->GetTuple3(0)[0] < -0.45 && points->GetTuple3(points->GetNumberOfTuples() - 1)[0] > 0.45);

@@ -135,8 +135,8 @@ int TestStrokeCutFilter(int, char*[])
     typed->SetStrokePoint(i, 1.5 * std::cos(a), 1.5 * std::sin(a), 2.6);
   }
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(typed).empty());
-  ok &= KERF_CHECK(sameArrays(drawn->GetOutput()->GetCellData()->GetArray("Segment"),
-    typed->GetOutput()->GetCellData()->GetArray("Segment")));
+  ok &= KERF_CHECK(sameArrays(
+    drawn->GetOutput()->GetCellData()->GetArray("Segment"), typed->GetOutput()->GetCellData()->GetArray("Segment")));
   vtkDataArray* sizes = drawn->GetOutput()->GetFieldData()->GetArray("SegmentSizes");
   ok &= KERF_CHECK(sizes && sizes->GetNumberOfTuples() == 2 &&
     sizes->GetComponent(0, 0) + sizes->GetComponent(1, 0) == cylinder->GetNumberOfCells());

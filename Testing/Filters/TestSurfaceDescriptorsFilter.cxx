@@ -61,9 +61,8 @@ int TestSurfaceDescriptorsFilter(int, char*[])
   filter->SetMeanCurvatureArrayName("H");
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(filter).empty());
   vtkPolyData* output = filter->GetOutput();
-  const char* expected[] = { "Normals", "MaximumCurvature", "MinimumCurvature",
-    "MaximumCurvatureDirection", "MinimumCurvatureDirection", "H", "GaussianCurvature", "Concave",
-    "NormalConeAngle" };
+  const char* expected[] = { "Normals", "MaximumCurvature", "MinimumCurvature", "MaximumCurvatureDirection",
+    "MinimumCurvatureDirection", "H", "GaussianCurvature", "Concave", "NormalConeAngle" };
   for (const char* name : expected)
   {
     ok &= KERF_CHECK(output->GetPointData()->GetArray(name) != nullptr);
@@ -92,8 +91,8 @@ int TestSurfaceDescriptorsFilter(int, char*[])
   again->Update();
   for (const char* name : expected)
   {
-    ok &= KERF_CHECK(sameValues(output->GetPointData()->GetArray(name),
-      again->GetOutput()->GetPointData()->GetArray(name)));
+    ok &= KERF_CHECK(
+      sameValues(output->GetPointData()->GetArray(name), again->GetOutput()->GetPointData()->GetArray(name)));
   }
 
   // Triangle strips give the same values as the triangles they encode.
@@ -119,8 +118,7 @@ int TestSurfaceDescriptorsFilter(int, char*[])
     }
   }
   ok &= KERF_CHECK(fromStrips->GetOutput()->GetNumberOfStrips() == 0);
-  ok &= KERF_CHECK(fromStrips->GetOutput()->GetNumberOfPolys() ==
-    fromTriangles->GetOutput()->GetNumberOfPolys());
+  ok &= KERF_CHECK(fromStrips->GetOutput()->GetNumberOfPolys() == fromTriangles->GetOutput()->GetNumberOfPolys());
 
   // Quads are triangulated, each triangle keeping its quad's cell data.
   vtkNew<vtkPlaneSource> plane;

@@ -1,10 +1,10 @@
 // The stroke cut pipeline shared by `kerf cut` and `kerf showcase`.
 #include "CutPipeline.h"
 
-#include "Harmonic/HarmonicFieldSolver.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Error.h"
+#include "Harmonic/HarmonicFieldSolver.h"
 #include "KerfCommands.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <vtkAlgorithmOutput.h>
 #include <vtkCellData.h>

@@ -40,8 +40,8 @@ int RunDescriptors(const Arguments& args)
   if (!args.has("quiet"))
   {
     std::cout << "surface descriptors of " << input << ": " << output->GetNumberOfPoints() << " points, "
-              << output->GetNumberOfPolys() << " triangles in " << std::fixed << std::setprecision(1)
-              << milliseconds << " ms\n  arrays: " << PointArrayNames(output) << "\n";
+              << output->GetNumberOfPolys() << " triangles in " << std::fixed << std::setprecision(1) << milliseconds
+              << " ms\n  arrays: " << PointArrayNames(output) << "\n";
   }
   return 0;
 }

@@ -17,11 +17,11 @@ int RunInfo(const Arguments& args)
   vtkSmartPointer<vtkPolyData> mesh = ReadMesh(input);
   double bounds[6];
   mesh->GetBounds(bounds);
-  std::cout << input << "\n  points: " << mesh->GetNumberOfPoints() << "\n  cells: " << mesh->GetNumberOfCells()
-            << " (" << mesh->GetNumberOfPolys() << " polygons, " << mesh->GetNumberOfStrips() << " strips, "
+  std::cout << input << "\n  points: " << mesh->GetNumberOfPoints() << "\n  cells: " << mesh->GetNumberOfCells() << " ("
+            << mesh->GetNumberOfPolys() << " polygons, " << mesh->GetNumberOfStrips() << " strips, "
             << mesh->GetNumberOfLines() << " lines, " << mesh->GetNumberOfVerts() << " vertices)"
-            << "\n  bounds: [" << bounds[0] << ", " << bounds[1] << "] x [" << bounds[2] << ", " << bounds[3]
-            << "] x [" << bounds[4] << ", " << bounds[5] << "]\n";
+            << "\n  bounds: [" << bounds[0] << ", " << bounds[1] << "] x [" << bounds[2] << ", " << bounds[3] << "] x ["
+            << bounds[4] << ", " << bounds[5] << "]\n";
   vtkNew<vtkSurfaceDescriptors> check;
   check->SetInputData(mesh);
   try

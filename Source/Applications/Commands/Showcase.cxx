@@ -24,8 +24,7 @@ namespace
 std::string defaultShowcaseMesh(const char* program)
 {
   // Installed: <prefix>/bin/kerf and <prefix>/share/kerf/Data; in the build tree: the sources.
-  const std::string directory =
-    vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(program));
+  const std::string directory = vtksys::SystemTools::GetFilenamePath(vtksys::SystemTools::CollapseFullPath(program));
   const std::string installed = directory + "/../share/kerf/Data/camel.off";
   if (vtksys::SystemTools::FileExists(installed, true))
   {

@@ -165,8 +165,8 @@ int RunUnwrap(const Arguments& args)
               << fieldValue(surface, "MeanShear") << ", "
               << counted(static_cast<int>(fieldValue(surface, "FlippedFaces")), "flipped triangle") << ", "
               << counted(static_cast<int>(fieldValue(surface, "OverlappingChartPairs")), "overlapping chart pair")
-              << std::setprecision(1) << "; time: read " << readTime << " ms, export " << exportTime
-              << " ms, charts " << atlasTime << " ms\n";
+              << std::setprecision(1) << "; time: read " << readTime << " ms, export " << exportTime << " ms, charts "
+              << atlasTime << " ms\n";
   }
   return 0;
 }

@@ -37,8 +37,8 @@ BenchmarkCase loadBenchmarkCase(const BenchmarkModel& model)
   }
   if (loaded.humans.size() < 2)
   {
-    throw Error("it has " + std::to_string(loaded.humans.size()) +
-      " human segmentations; the protocol needs at least 2");
+    throw Error(
+      "it has " + std::to_string(loaded.humans.size()) + " human segmentations; the protocol needs at least 2");
   }
   return loaded;
 }

@@ -64,9 +64,9 @@ std::vector<std::string> splitCsv(const std::string& line)
 
 const std::vector<std::string>& benchmarkMetricColumns()
 {
-  static const std::vector<std::string> columns = { "Comparisons", "CutDiscrepancy", "HammingDistance",
-    "MissingRate", "FalseAlarmRate", "RandIndexError", "GlobalConsistencyError", "LocalConsistencyError",
-    "Segments", "Seconds", "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" };
+  static const std::vector<std::string> columns = { "Comparisons", "CutDiscrepancy", "HammingDistance", "MissingRate",
+    "FalseAlarmRate", "RandIndexError", "GlobalConsistencyError", "LocalConsistencyError", "Segments", "Seconds",
+    "Fidelity", "FidelityHamming", "Inputs", "InputSegmentsMatched" };
   return columns;
 }
 
@@ -209,11 +209,10 @@ std::string writeSummary(const std::vector<BenchmarkRow>& rows, const std::strin
 std::string progressLine(std::size_t done, std::size_t total, const BenchmarkRow& row)
 {
   std::ostringstream line;
-  line << "[" << std::setw(3) << done << "/" << total << "] model " << std::setw(4) << row.model << " "
-       << std::left << std::setw(10) << row.category << std::right << " 1-RI " << std::fixed
-       << std::setprecision(3) << row.values.at("RandIndexError") << "  CD " << row.values.at("CutDiscrepancy")
-       << "  HD " << row.values.at("HammingDistance") << "  (" << std::setprecision(2)
-       << row.values.at("Seconds") << " s)";
+  line << "[" << std::setw(3) << done << "/" << total << "] model " << std::setw(4) << row.model << " " << std::left
+       << std::setw(10) << row.category << std::right << " 1-RI " << std::fixed << std::setprecision(3)
+       << row.values.at("RandIndexError") << "  CD " << row.values.at("CutDiscrepancy") << "  HD "
+       << row.values.at("HammingDistance") << "  (" << std::setprecision(2) << row.values.at("Seconds") << " s)";
   return line.str();
 }
 

@@ -44,7 +44,8 @@ struct MetricSums
     for (const char* name : MetricNames)
     {
       const auto found = this->sums.find(name);
-      result.values[name] = this->comparisons > 0 && found != this->sums.end() ? found->second / this->comparisons : 0.0;
+      result.values[name] =
+        this->comparisons > 0 && found != this->sums.end() ? found->second / this->comparisons : 0.0;
     }
     result.values["Comparisons"] = this->comparisons;
     result.values["Segments"] = segments;
@@ -108,7 +109,8 @@ ModelScores scoreAutomatic(const BenchmarkCase& c, const SegmentationMethod& met
 }
 
 // Interactive methods: every human in turn gives the input, the others are the references.
-ModelScores scoreInteractive(const BenchmarkCase& c, const SegmentationMethod& method, const MethodParameters& parameters)
+ModelScores scoreInteractive(
+  const BenchmarkCase& c, const SegmentationMethod& method, const MethodParameters& parameters)
 {
   const SegmentationEvaluator evaluator(c.surface->mesh());
   std::vector<PreparedSegmentation> humans;

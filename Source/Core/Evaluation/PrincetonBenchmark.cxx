@@ -12,9 +12,8 @@ namespace kerf
 
 std::string princetonCategory(int modelId)
 {
-  static const char* const categories[] = { "Human", "Cup", "Glasses", "Airplane", "Ant", "Chair",
-    "Octopus", "Table", "Teddy", "Hand", "Plier", "Fish", "Bird", "Spring", "Armadillo", "Bust",
-    "Mech", "Bearing", "Vase", "Fourleg" };
+  static const char* const categories[] = { "Human", "Cup", "Glasses", "Airplane", "Ant", "Chair", "Octopus", "Table",
+    "Teddy", "Hand", "Plier", "Fish", "Bird", "Spring", "Armadillo", "Bust", "Mech", "Bearing", "Vase", "Fourleg" };
   if (modelId < 1 || modelId > 400)
   {
     return "Unknown";
@@ -50,8 +49,7 @@ std::vector<BenchmarkModel> scanBenchmark(const std::string& directory)
     const fs::path& path = entry.path();
     const std::string stem = path.stem().string();
     if (path.extension() != ".off" || stem.empty() ||
-      !std::all_of(stem.begin(), stem.end(), [](char c) { return c >= '0' && c <= '9'; }) ||
-      stem.size() > 6)
+      !std::all_of(stem.begin(), stem.end(), [](char c) { return c >= '0' && c <= '9'; }) || stem.size() > 6)
     {
       continue;
     }
@@ -74,8 +72,7 @@ std::vector<BenchmarkModel> scanBenchmark(const std::string& directory)
     }
     models.push_back(std::move(model));
   }
-  std::sort(models.begin(), models.end(),
-    [](const BenchmarkModel& a, const BenchmarkModel& b) { return a.id < b.id; });
+  std::sort(models.begin(), models.end(), [](const BenchmarkModel& a, const BenchmarkModel& b) { return a.id < b.id; });
   return models;
 }
 

@@ -12,9 +12,9 @@ struct BenchmarkModel
 {
   int id = 0;
   std::string category;
-  std::string meshFile;                          ///< off/<id>.off
-  std::vector<std::string> humanSegmentations;   ///< seg/<id>/<id>_<j>.seg, in order of j
-  int requestedSegments = 0;                     ///< line <id> of nSeg-ByModel.txt (0 if absent)
+  std::string meshFile;                        ///< off/<id>.off
+  std::vector<std::string> humanSegmentations; ///< seg/<id>/<id>_<j>.seg, in order of j
+  int requestedSegments = 0;                   ///< line <id> of nSeg-ByModel.txt (0 if absent)
 };
 
 /// The benchmark's category of a model id (1-20 Human, 21-40 Cup, ..., 381-400 Fourleg), or

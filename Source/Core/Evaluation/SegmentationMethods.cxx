@@ -93,12 +93,14 @@ MethodOutput segmentWithWatershed(const BenchmarkCase& c, const std::vector<int>
   return { segmentByWatershed(FaceGraph(c.surface->mesh()), options).labels, 0 };
 }
 
-MethodOutput segmentByFaceClustering(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+MethodOutput segmentByFaceClustering(
+  const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
 {
   HierarchicalClusteringOptions options;
   options.directionWeight = parameters.positive("a1", options.directionWeight);
   options.shapeWeight = parameters.positive("a2", options.shapeWeight);
-  options.exactClusterCount = static_cast<int>(std::min(parameters.positive("exact", options.exactClusterCount), 2147483647.0));
+  options.exactClusterCount =
+    static_cast<int>(std::min(parameters.positive("exact", options.exactClusterCount), 2147483647.0));
   options.blockSize = static_cast<int>(std::min(parameters.positive("block", options.blockSize), 2147483647.0));
   return { cutHierarchyAtCount(faceClusterHierarchy(*c.surface, options), requestedSegments(c)), 0 };
 }
@@ -120,7 +122,8 @@ MethodOutput segmentWithSpectralClustering(
   return { segmentSpectrally(FaceGraph(c.surface->mesh()), requestedSegments(c), options).labels, 0 };
 }
 
-MethodOutput segmentWithConsensusCuts(const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+MethodOutput segmentWithConsensusCuts(
+  const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
 {
   ConsensusCutOptions options;
   options.weighting = parseLaplacianWeighting(parameters.text("weighting", laplacianWeightingName(options.weighting)));
@@ -279,7 +282,8 @@ MethodOutput segmentWithRegionGrowing(
 // human's segments but the largest selected in turn, extremities first, by a click at the middle
 // of its spine with a radius that holds it, then corrected by added or subtracted discs while the
 // region is wrong; each region cut from what earlier regions left, the largest piece the rest.
-MethodOutput segmentWithRoiScissor(const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters)
+MethodOutput segmentWithRoiScissor(
+  const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters)
 {
   SimulatedClickOptions options;
   options.radiusMargin = parameters.positive("margin", options.radiusMargin);
@@ -292,9 +296,11 @@ MethodOutput segmentWithRoiScissor(const BenchmarkCase& c, const std::vector<int
   if ((placement != "spine-middle" && placement != "innermost") || (order != "extremities" && order != "smallest"))
   {
     throw Error("the method parameters 'placement' (spine-middle, innermost) and 'order' (extremities, smallest) "
-                "got '" + placement + "' and '" + order + "'");
+                "got '" +
+      placement + "' and '" + order + "'");
   }
-  options.placement = placement == "innermost" ? SimulatedClickPlacement::Innermost : SimulatedClickPlacement::SpineMiddle;
+  options.placement =
+    placement == "innermost" ? SimulatedClickPlacement::Innermost : SimulatedClickPlacement::SpineMiddle;
   options.order = order == "smallest" ? SimulatedClickOrder::SmallestFirst : SimulatedClickOrder::Extremities;
   options.includeClaimed = parameters.wholeNumber("hanging", 1) != 0;
   const ClickedSegmentation selected = selectByClicks(c.surface, *input, options);
@@ -307,50 +313,49 @@ const std::vector<SegmentationMethod>& segmentationMethods()
   static const std::vector<SegmentationMethod> methods = {
     { "human", "every pair of the model's human segmentations (the benchmark's human baseline)", {},
       SegmentationMethod::Protocol::HumanBaseline, nullptr },
-    { "harmonic-cuts",
-      "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
-      { "weighting", "samples", "offset", "offset-length", "spacing", "weight", "support", "formulation" }, SegmentationMethod::Protocol::Interactive,
-      segmentWithHarmonicCuts },
+    { "harmonic-cuts", "SeamCut's cuts from simulated strokes along the input human's boundaries, one field per stroke",
+      { "weighting", "samples", "offset", "offset-length", "spacing", "weight", "support", "formulation" },
+      SegmentationMethod::Protocol::Interactive, segmentWithHarmonicCuts },
     { "convex-flooding",
       "convex patches flooded on the dual graph, small ones merged (Kouhestani 2013, section 3.1), down to k",
       { "epsilon", "q" }, SegmentationMethod::Protocol::Automatic, segmentByFlooding },
-    { "watershed", "edge watershed of 1 - cos(dihedral angle), basins merged by depth down to k",
-      { "depth" }, SegmentationMethod::Protocol::Automatic, segmentWithWatershed },
+    { "watershed", "edge watershed of 1 - cos(dihedral angle), basins merged by depth down to k", { "depth" },
+      SegmentationMethod::Protocol::Automatic, segmentWithWatershed },
     { "face-clustering", "Garland et al. 2001's hierarchical face clustering cut at k clusters",
       { "a1", "a2", "exact", "block" }, SegmentationMethod::Protocol::Automatic, segmentByFaceClustering },
-    { "k-means", "Shlafman et al. 2002's k-means face clustering on the dual graph",
-      { "delta" }, SegmentationMethod::Protocol::Automatic, segmentWithKMeans },
-    { "spectral", "Liu and Zhang 2004's spectral clustering on a coarsened patch graph",
-      { "delta", "eta", "patches" }, SegmentationMethod::Protocol::Automatic, segmentWithSpectralClustering },
-    { "consensus-cuts",
-      "cuts that many concavity-aware harmonic fields between feature points agree on, k - 1 of them",
+    { "k-means", "Shlafman et al. 2002's k-means face clustering on the dual graph", { "delta" },
+      SegmentationMethod::Protocol::Automatic, segmentWithKMeans },
+    { "spectral", "Liu and Zhang 2004's spectral clustering on a coarsened patch graph", { "delta", "eta", "patches" },
+      SegmentationMethod::Protocol::Automatic, segmentWithSpectralClustering },
+    { "consensus-cuts", "cuts that many concavity-aware harmonic fields between feature points agree on, k - 1 of them",
       { "weighting", "extra", "points", "isovalues", "clip", "same", "area", "votes", "length", "sizes", "peaks",
         "walk-depth" },
       SegmentationMethod::Protocol::Automatic, segmentWithConsensusCuts },
     { "ensemble",
-      "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on most (evidence accumulation, Fred and Jain 2005)",
+      "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on "
+      "most (evidence accumulation, Fred and Jain 2005)",
       { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "area-weighted", "band", "convex-weight",
         "walk-depth", "points" },
       SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
-      "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",
+      "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then "
+      "strokes inside the wrongly labelled faces and, when asked, override strokes along its boundaries",
       { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "placement", "cut-band", "depth",
-        "corrections",
-        "overrides", "override-radius", "spacing" },
+        "corrections", "overrides", "override-radius", "spacing" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, false);
       } },
     { "region-growing+snakes", "region growing as region-growing, then its boundaries refined as snakes",
       { "normal-weight", "curvature-weight", "augmentation", "curvature-term", "placement", "cut-band", "depth",
-        "corrections",
-        "overrides", "override-radius", "spacing" },
+        "corrections", "overrides", "override-radius", "spacing" },
       SegmentationMethod::Protocol::Interactive,
       [](const BenchmarkCase& c, const std::vector<int>* input, const MethodParameters& parameters) {
         return segmentWithRegionGrowing(c, input, parameters, true);
       } },
     { "roi-scissor",
-      "ROI Scissor from simulated clicks: each piece of the input human but the largest, extremities first, by a click at the middle of its spine, corrected by added or subtracted discs; each region cut from what the earlier left",
+      "ROI Scissor from simulated clicks: each piece of the input human but the largest, extremities first, by a click "
+      "at the middle of its spine, corrected by added or subtracted discs; each region cut from what the earlier left",
       { "margin", "clicks", "threshold", "surface-threshold", "placement", "order", "hanging", "depth" },
       SegmentationMethod::Protocol::Interactive, segmentWithRoiScissor },
   };

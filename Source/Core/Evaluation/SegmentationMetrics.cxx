@@ -58,8 +58,8 @@ public:
       {
         if (this->Count[key] > 0)
         {
-          f(static_cast<int>(key / this->Columns), static_cast<int>(key % this->Columns),
-            this->Area[key], this->Count[key]);
+          f(static_cast<int>(key / this->Columns), static_cast<int>(key % this->Columns), this->Area[key],
+            this->Count[key]);
         }
       }
       return;
@@ -74,8 +74,7 @@ public:
     for (long long key : keys)
     {
       const Cell& cell = this->Sparse.at(key);
-      f(static_cast<int>(key / this->Columns), static_cast<int>(key % this->Columns), cell.area,
-        cell.count);
+      f(static_cast<int>(key / this->Columns), static_cast<int>(key % this->Columns), cell.area, cell.count);
     }
   }
 
@@ -122,8 +121,7 @@ SegmentationEvaluator::SegmentationEvaluator(const TriangleMesh& mesh)
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
     const Triangle& t = mesh.triangle(f);
-    this->FaceAreas[f] =
-      0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
+    this->FaceAreas[f] = 0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
   }
   Vector3 centroid = Vector3::Zero();
   int used = 0;
@@ -154,8 +152,8 @@ PreparedSegmentation SegmentationEvaluator::prepare(const std::vector<int>& labe
 {
   if (static_cast<int>(labels.size()) != this->Mesh.faceCount())
   {
-    throw Error("the segmentation has " + std::to_string(labels.size()) +
-      " labels but the mesh has " + std::to_string(this->Mesh.faceCount()) + " faces");
+    throw Error("the segmentation has " + std::to_string(labels.size()) + " labels but the mesh has " +
+      std::to_string(this->Mesh.faceCount()) + " faces");
   }
   PreparedSegmentation out;
   for (int label : labels)
@@ -170,8 +168,7 @@ PreparedSegmentation SegmentationEvaluator::prepare(const std::vector<int>& labe
     }
   }
   std::sort(out.originalLabels.begin(), out.originalLabels.end());
-  out.originalLabels.erase(
-    std::unique(out.originalLabels.begin(), out.originalLabels.end()), out.originalLabels.end());
+  out.originalLabels.erase(std::unique(out.originalLabels.begin(), out.originalLabels.end()), out.originalLabels.end());
   out.segmentCount = static_cast<int>(out.originalLabels.size());
   out.labels.resize(labels.size());
   for (std::size_t f = 0; f < labels.size(); ++f)
@@ -211,8 +208,7 @@ PreparedSegmentation SegmentationEvaluator::prepare(const std::vector<int>& labe
   return out;
 }
 
-SegmentationScores SegmentationEvaluator::compare(
-  const PreparedSegmentation& s1, const PreparedSegmentation& s2) const
+SegmentationScores SegmentationEvaluator::compare(const PreparedSegmentation& s1, const PreparedSegmentation& s2) const
 {
   if (s1.labels.size() != this->FaceAreas.size() || s2.labels.size() != this->FaceAreas.size())
   {

@@ -12,10 +12,10 @@ namespace kerf
 /// A segmentation made ready for comparisons: compact labels, its cut and the distance to it.
 struct PreparedSegmentation
 {
-  std::vector<int> labels;        ///< per face, 0..segmentCount-1, or -1 for unlabelled
+  std::vector<int> labels;         ///< per face, 0..segmentCount-1, or -1 for unlabelled
   std::vector<int> originalLabels; ///< the input label of each compact label
   int segmentCount = 0;
-  std::vector<int> cutVertices;   ///< vertices on an edge between two differently labelled faces
+  std::vector<int> cutVertices;      ///< vertices on an edge between two differently labelled faces
   std::vector<double> distanceToCut; ///< per vertex, edge-graph distance to the cut (empty if none)
 };
 
@@ -60,8 +60,7 @@ public:
   /// other than -1.
   PreparedSegmentation prepare(const std::vector<int>& labels) const;
 
-  SegmentationScores compare(const PreparedSegmentation& evaluated,
-    const PreparedSegmentation& reference) const;
+  SegmentationScores compare(const PreparedSegmentation& evaluated, const PreparedSegmentation& reference) const;
 
   /// Mean distance from the vertices used by triangles to their centroid.
   double averageRadius() const { return this->AverageRadius; }

@@ -1,4 +1,5 @@
-// Simulated ROI Scissor clicks: each piece of a segmentation selected by a click and corrected by added and subtracted discs, the regions claimed in turn.
+// Simulated ROI Scissor clicks: each piece of a segmentation selected by a click and corrected by added and subtracted
+// discs, the regions claimed in turn.
 #include "Evaluation/SimulatedClicks.h"
 
 #include "Error.h"
@@ -154,8 +155,8 @@ struct Selection
 class ClickSession
 {
 public:
-  ClickSession(const std::shared_ptr<const Surface>& surface, const SimulatedClickOptions& options,
-    ClickedSegmentation& result)
+  ClickSession(
+    const std::shared_ptr<const Surface>& surface, const SimulatedClickOptions& options, ClickedSegmentation& result)
     : SurfacePointer(surface)
     , Mesh(surface->mesh())
     , Graph(faceGraph(*surface))
@@ -302,7 +303,8 @@ private:
         labels[f] = part[f] ? 0 : -1;
       }
       const std::vector<SegmentSpine> spines = segmentSpines(this->Mesh, labels, this->Options.spineDepth);
-      face = spines.empty() || spines.front().faces.empty() ? face : spines.front().faces[spines.front().faces.size() / 2];
+      face =
+        spines.empty() || spines.front().faces.empty() ? face : spines.front().faces[spines.front().faces.size() / 2];
     }
     RoiClick click;
     const std::vector<double>& d = this->clickAt(face, click);
@@ -321,7 +323,8 @@ private:
   RoiClick subtracting(const std::vector<char>& part)
   {
     RoiClick click;
-    click.radius = extremeDistance(this->Mesh, this->clickAt(innermostFace(this->Graph, part), click), this->Holding, true);
+    click.radius =
+      extremeDistance(this->Mesh, this->clickAt(innermostFace(this->Graph, part), click), this->Holding, true);
     return click;
   }
 
@@ -332,8 +335,9 @@ private:
     selection.region.assign(faces, 0);
     try
     {
-      const std::vector<int> labels = roiScissor(*this->SurfacePointer, selection.added, selection.subtracted,
-        this->Options.scissor, &this->Distances).faceLabels;
+      const std::vector<int> labels = roiScissor(
+        *this->SurfacePointer, selection.added, selection.subtracted, this->Options.scissor, &this->Distances)
+                                        .faceLabels;
       for (int f = 0; f < faces; ++f)
       {
         selection.region[f] = labels[f] == 1 && this->Claimed[f] < 0 ? 1 : 0;
@@ -365,9 +369,9 @@ private:
   const SimulatedClickOptions& Options;
   ClickDistances Distances;
   ClickedSegmentation& Result;
-  std::vector<int> Claimed;   // per face: the piece whose region took it
-  std::vector<char> Target;   // the piece's faces no region claimed
-  std::vector<char> Holding;  // what the first click holds: the target and the regions hanging from it
+  std::vector<int> Claimed;  // per face: the piece whose region took it
+  std::vector<char> Target;  // the piece's faces no region claimed
+  std::vector<char> Holding; // what the first click holds: the target and the regions hanging from it
   double TargetArea = 0.0;
 };
 } // namespace

@@ -1,4 +1,5 @@
-// Simulated strokes: boundary chains between segments walked and resampled, and strokes through each segment's innermost faces.
+// Simulated strokes: boundary chains between segments walked and resampled, and strokes through each segment's
+// innermost faces.
 #include "Evaluation/SimulatedStrokes.h"
 
 #include "Error.h"

@@ -20,12 +20,11 @@ struct BoundaryStroke
 /// pair of labels whose faces share edges, each chain of those edges (a handle attached at two
 /// places has two) at least a quarter of `spacing` long (a user strokes a thin leg too), walked
 /// from an end (or around, if it is a loop) and resampled by arc length to points about
-/// `spacing` apart (at least 4, at most 64). Where a jagged boundary branches (a vertex with more than two of the pair's edges) the walk goes on
-/// one way and the edges it leaves become strokes of their own, so every boundary edge is
-/// stroked. Unlabelled faces (-1) have no boundary. Strokes are ordered by label pair and then by
-/// their first edge, so the result is deterministic.
-std::vector<BoundaryStroke> boundaryStrokes(
-  const TriangleMesh& mesh, const std::vector<int>& labels, double spacing);
+/// `spacing` apart (at least 4, at most 64). Where a jagged boundary branches (a vertex with more than two of the
+/// pair's edges) the walk goes on one way and the edges it leaves become strokes of their own, so every boundary edge
+/// is stroked. Unlabelled faces (-1) have no boundary. Strokes are ordered by label pair and then by their first edge,
+/// so the result is deterministic.
+std::vector<BoundaryStroke> boundaryStrokes(const TriangleMesh& mesh, const std::vector<int>& labels, double spacing);
 
 /// A stroke drawn inside one segment.
 struct SegmentStroke

@@ -1,4 +1,5 @@
-// SeamCut's export operators: curve points located on the mesh, triangles split along curves, vertices snapped to curves.
+// SeamCut's export operators: curve points located on the mesh, triangles split along curves, vertices snapped to
+// curves.
 #include "Export/CurveExport.h"
 
 #include "Error.h"
@@ -171,11 +172,11 @@ bool isZeroArea(const TriangleMesh& mesh, int face)
 
 struct LocalPoint
 {
-  int id = -1;          // output vertex
+  int id = -1;             // output vertex
   double x = 0.0, y = 0.0; // (b1, b2)
-  int side = -1;        // the side it lies on (-1: inside), corners: -2
-  int corner = -1;      // corner index for corners
-  double along = 0.0;   // parameter along `side` from its first corner
+  int side = -1;           // the side it lies on (-1: inside), corners: -2
+  int corner = -1;         // corner index for corners
+  double along = 0.0;      // parameter along `side` from its first corner
 };
 
 struct FaceWork
@@ -322,8 +323,8 @@ public:
             return p.id;
           }
         }
-        const int id = this->addVertex(
-          locationPosition(this->Mesh, location), SurfacePoint{ location.index, location.barycentric });
+        const int id =
+          this->addVertex(locationPosition(this->Mesh, location), SurfacePoint{ location.index, location.barycentric });
         work.points.push_back(LocalPoint{ id, location.barycentric[1], location.barycentric[2], -1, -1, 0.0 });
         return id;
       }
@@ -365,7 +366,8 @@ public:
         }
         if (isZeroArea(mesh, face))
         {
-          throw Error("a curve crosses an edge of triangle " + std::to_string(face) + ", which has zero area; "
+          throw Error("a curve crosses an edge of triangle " + std::to_string(face) +
+            ", which has zero area; "
             "remove degenerate triangles before cutting");
         }
         this->work(face);
@@ -506,8 +508,8 @@ private:
   // segment (the triangle beside a crossed edge), or one segment between two sides (a curve
   // crossing the triangle): the corner cut off, and the quadrilateral left split along its
   // shorter diagonal.
-  bool splitSimply(int face, const FaceWork& work, std::vector<Triangle>& triangles,
-    std::vector<int>& originalFaces, std::vector<std::pair<int, int>>& cuts) const
+  bool splitSimply(int face, const FaceWork& work, std::vector<Triangle>& triangles, std::vector<int>& originalFaces,
+    std::vector<std::pair<int, int>>& cuts) const
   {
     const std::vector<LocalPoint>& pts = work.points;
     const Triangle& corner = this->Mesh.triangle(face);
@@ -693,7 +695,8 @@ private:
       for (std::size_t i = 0; i < list.size(); ++i)
       {
         const int b = list[i], c = list[(i + 1) % list.size()];
-        if (b == c || a > b || a > c || !adjacent[static_cast<std::size_t>(b * n + c)] || orient(pts[a], pts[b], pts[c]) <= 0.0)
+        if (b == c || a > b || a > c || !adjacent[static_cast<std::size_t>(b * n + c)] ||
+          orient(pts[a], pts[b], pts[c]) <= 0.0)
         {
           continue;
         }
@@ -714,9 +717,9 @@ private:
     int id = -1;    // output vertex
     int next = -1;  // the edge's next point in OnEdges, in order of creation
   };
-  std::vector<int> FirstOnEdge;   // per input edge: its first point in OnEdges, -1 for none
+  std::vector<int> FirstOnEdge; // per input edge: its first point in OnEdges, -1 for none
   std::vector<EdgePoint> OnEdges;
-  std::vector<int> SplitEdges;    // the input edges with points
+  std::vector<int> SplitEdges; // the input edges with points
   std::vector<int> WorkOfFace;
   std::vector<FaceWork> Works;
 };
@@ -868,7 +871,8 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
     {
       if (face < 0 || face >= mesh.faceCount())
       {
-        throw Error("curve " + std::to_string(c) + " names triangle " + std::to_string(face) + ", which does not exist");
+        throw Error(
+          "curve " + std::to_string(c) + " names triangle " + std::to_string(face) + ", which does not exist");
       }
     }
     if (curve.faces.empty())
@@ -887,8 +891,7 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
       const int after = hasAfter ? curve.faces[i % curve.faces.size()] : -1;
       const int first = before >= 0 ? before : after;
       const int second = after >= 0 ? after : before;
-      CurvePointLocation location =
-        classify(mesh, first, barycentricInFace(mesh, first, curve.points[i]), tolerance);
+      CurvePointLocation location = classify(mesh, first, barycentricInFace(mesh, first, curve.points[i]), tolerance);
       if (second != first && !inClosure(mesh, location, second))
       {
         location = sharedLocation(mesh, first, second, curve.points[i], tolerance, c, i);
@@ -996,8 +999,8 @@ CurveExportResult exportCurves(
         candidates.push_back(Candidate{ v, (mesh.point(v) - p).norm(), p });
       }
     }
-    std::stable_sort(candidates.begin(), candidates.end(),
-      [](const Candidate& a, const Candidate& b) { return a.vertex < b.vertex; });
+    std::stable_sort(
+      candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) { return a.vertex < b.vertex; });
     std::vector<Candidate> winners; // by increasing vertex
     for (const Candidate& candidate : candidates)
     {

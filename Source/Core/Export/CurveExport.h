@@ -12,9 +12,9 @@ namespace kerf
 /// The three export operators (SeamCut, section 4).
 enum class CurveExportMode
 {
-  Scissor = 0,     ///< triangles split along the exact curves (new vertices, more triangles)
-  Snap = 1,        ///< geometry and connectivity kept; curves become edge chains of nearest vertices
-  InverseSnap = 2  ///< connectivity kept; the nearest vertices moved onto the curves
+  Scissor = 0,    ///< triangles split along the exact curves (new vertices, more triangles)
+  Snap = 1,       ///< geometry and connectivity kept; curves become edge chains of nearest vertices
+  InverseSnap = 2 ///< connectivity kept; the nearest vertices moved onto the curves
 };
 
 struct CurveExportOptions
@@ -35,8 +35,8 @@ struct CurvePointLocation
     Face
   };
   Kind kind = Face;
-  int index = -1;    ///< the vertex, the edge or the face
-  double t = 0.0;    ///< on an edge: from edgeVertices(index)[0] (0) to [1] (1)
+  int index = -1;                        ///< the vertex, the edge or the face
+  double t = 0.0;                        ///< on an edge: from edgeVertices(index)[0] (0) to [1] (1)
   Vector3 barycentric = Vector3::Zero(); ///< in a face: w.r.t. its corners
 };
 
@@ -57,17 +57,17 @@ std::vector<std::vector<CurvePointLocation>> locateCurvePoints(
 /// identity and stay empty.
 struct CurveExportResult
 {
-  TriangleMesh mesh;                   ///< Scissor: the split mesh; InverseSnap: the moved mesh; Snap: empty
-  std::vector<char> cutEdges;          ///< per edge of the output mesh: 1 where a curve runs along it
-  std::vector<int> charts;             ///< per face: connected components across uncut edges
+  TriangleMesh mesh;          ///< Scissor: the split mesh; InverseSnap: the moved mesh; Snap: empty
+  std::vector<char> cutEdges; ///< per edge of the output mesh: 1 where a curve runs along it
+  std::vector<int> charts;    ///< per face: connected components across uncut edges
   int chartCount = 0;
-  std::vector<int> originalPointIds;   ///< Scissor, per vertex: the input vertex, -1 for a new one
-  std::vector<SurfacePoint> pointOrigins; ///< Scissor, per vertex: where it lies on the input mesh
-  std::vector<int> originalFaces;      ///< Scissor, per face: the input triangle it lies in
+  std::vector<int> originalPointIds;           ///< Scissor, per vertex: the input vertex, -1 for a new one
+  std::vector<SurfacePoint> pointOrigins;      ///< Scissor, per vertex: where it lies on the input mesh
+  std::vector<int> originalFaces;              ///< Scissor, per face: the input triangle it lies in
   std::vector<std::vector<int>> curveVertices; ///< per curve: its vertices in order (closed: first not repeated)
-  int movedVertices = 0;  ///< inverse snap: vertices moved onto a curve point
-  int droppedPoints = 0;  ///< snap modes: points whose nearest vertex went to a nearer point
-  int refusedFlips = 0;   ///< inverse snap: moves refused because a triangle would flip
+  int movedVertices = 0;                       ///< inverse snap: vertices moved onto a curve point
+  int droppedPoints = 0;                       ///< snap modes: points whose nearest vertex went to a nearer point
+  int refusedFlips = 0;                        ///< inverse snap: moves refused because a triangle would flip
 };
 
 /// The output mesh of an export of `input`: result.mesh, or `input` itself after a snap.

@@ -556,7 +556,8 @@ int countSelfCrossings(const TriangleMesh& mesh, const SurfaceCurve& curve)
     const Vector3 origin = mesh.point(mesh.triangle(first->first)[0]);
     const Vector3 axisX = (mesh.point(mesh.triangle(first->first)[1]) - origin).normalized();
     const Vector3 axisY = frame.normal.cross(axisX);
-    const auto flat = [&](const Vector3& p) { return Eigen::Vector2d((p - origin).dot(axisX), (p - origin).dot(axisY)); };
+    const auto flat = [&](
+                        const Vector3& p) { return Eigen::Vector2d((p - origin).dot(axisX), (p - origin).dot(axisY)); };
     const auto orientation = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c) {
       const Eigen::Vector2d u = b - a, v = c - a;
       return u.x() * v.y() - u.y() * v.x();
@@ -587,8 +588,8 @@ int countSelfCrossings(const TriangleMesh& mesh, const SurfaceCurve& curve)
 
 const AnisotropicMetric& anisotropicMetric(const Surface& surface, const AnisotropicMetricOptions& options)
 {
-  const std::string key = "anisotropic-metric: gamma=" + cacheKey(options.gamma) + " measure=" +
-    (options.measure == AnisotropyMeasure::Normalized ? "normalized" : "difference") +
+  const std::string key = "anisotropic-metric: gamma=" + cacheKey(options.gamma) +
+    " measure=" + (options.measure == AnisotropyMeasure::Normalized ? "normalized" : "difference") +
     " umbilic=" + cacheKey(options.umbilicRegularization);
   return surface.derived<AnisotropicMetric>(key, [&surface, &options] {
     if (options.gamma == 0.0)
@@ -619,7 +620,8 @@ GeodesicDistance geodesicDistance(const Surface& surface, const GeodesicSource& 
   dijkstra.depth = options.depth;
   dijkstra.targets = targets;
   GeodesicDistance result;
-  result.distance = shortTermVectorDijkstra(mesh, anisotropicMetric(surface, options.metric), source, dijkstra).distance;
+  result.distance =
+    shortTermVectorDijkstra(mesh, anisotropicMetric(surface, options.metric), source, dijkstra).distance;
   result.faceGradients = computeFaceGradients(mesh, result.distance);
   return result;
 }
@@ -721,8 +723,8 @@ GeodesicPolyline geodesicPolyline(const Surface& surface, const std::vector<Surf
     if (cache)
     {
       const std::string key = pointKey(from) + " " + pointKey(to) + " " + optionsKey;
-      const auto found = std::find_if(
-        cache->Legs.begin(), cache->Legs.end(), [&key](const auto& entry) { return entry.first == key; });
+      const auto found =
+        std::find_if(cache->Legs.begin(), cache->Legs.end(), [&key](const auto& entry) { return entry.first == key; });
       if (found != cache->Legs.end())
       {
         leg = found->second;

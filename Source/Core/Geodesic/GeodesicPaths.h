@@ -42,7 +42,8 @@ SurfacePath traceToSource(const TriangleMesh& mesh, const std::vector<Vector3>& 
 
 /// Length of each segment of a curve under the metric (the tensor interpolated at the segment's
 /// midpoint), in the curve's order.
-std::vector<double> segmentLengths(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric);
+std::vector<double> segmentLengths(
+  const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric);
 
 /// Length of a curve under the metric: the sum of its segmentLengths.
 double curveLength(const TriangleMesh& mesh, const SurfaceCurve& curve, const AnisotropicMetric& metric);
@@ -105,8 +106,8 @@ public:
   int reused() const { return this->Reused; }
 
 private:
-  friend GeodesicPolyline geodesicPolyline(const Surface&, const std::vector<SurfacePoint>&, bool,
-    const GeodesicPathOptions&, GeodesicLegCache*);
+  friend GeodesicPolyline geodesicPolyline(
+    const Surface&, const std::vector<SurfacePoint>&, bool, const GeodesicPathOptions&, GeodesicLegCache*);
   const Surface* Owner = nullptr;
   std::vector<std::pair<std::string, SurfacePath>> Legs;
   int Computed = 0;

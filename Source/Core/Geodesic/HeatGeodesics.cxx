@@ -3,8 +3,8 @@
 
 #include "CacheKey.h"
 #include "Error.h"
-#include "Numerics/IntrinsicTriangulation.h"
 #include "Numerics/FieldGradient.h"
+#include "Numerics/IntrinsicTriangulation.h"
 #include "Numerics/NestedDissection.h"
 #include "Numerics/SerialOpenMP.h"
 #include "Session/Surface.h"
@@ -51,8 +51,8 @@ public:
     }
     this->Common.nmethods = 1;
     this->Common.method[0].ordering = ordering == CholeskyOrdering::METIS ? CHOLMOD_METIS
-      : ordering == CholeskyOrdering::Geometric                          ? CHOLMOD_GIVEN
-                                                                         : CHOLMOD_AMD;
+      : ordering == CholeskyOrdering::Geometric                           ? CHOLMOD_GIVEN
+                                                                          : CHOLMOD_AMD;
     this->Common.postorder = 1;
     cholmod_sparse view = cholmodView(lowerPattern, -1);
     std::vector<int> given;
@@ -231,7 +231,8 @@ HeatGeodesics::HeatGeodesics(const TriangleMesh& mesh, const HeatGeodesicOptions
       m.cotangents[f][k] = triangulation.cotangent(f, k);
       // grad phi_k = rot90(p_{k+2} - p_{k+1}) / 2A, counter-clockwise layout.
       const Eigen::Vector2d e = m.layouts[f][(k + 2) % 3] - m.layouts[f][(k + 1) % 3];
-      m.hatGradients[f][k] = twiceArea > 0.0 ? Eigen::Vector2d(Eigen::Vector2d(-e.y(), e.x()) / twiceArea) : Eigen::Vector2d::Zero();
+      m.hatGradients[f][k] =
+        twiceArea > 0.0 ? Eigen::Vector2d(Eigen::Vector2d(-e.y(), e.x()) / twiceArea) : Eigen::Vector2d::Zero();
     }
   }
   m.mass = triangulation.vertexAreas();
@@ -551,7 +552,8 @@ NearSourceDistances nearSourceDistances(const TriangleMesh& mesh, const Geodesic
         {
           if (w != a && w != b && w != v)
           {
-            const double d = unfoldedDistance(length(a, b), distances[k], distances[(k + 1) % 3], length(w, a), length(w, b));
+            const double d =
+              unfoldedDistance(length(a, b), distances[k], distances[(k + 1) % 3], length(w, a), length(w, b));
             if (std::isfinite(d))
             {
               offer(w, d, true);

@@ -5,9 +5,9 @@
 #include "Error.h"
 #include "Geodesic/SurfaceLocation.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Mesh/Submesh.h"
+#include "Numerics/FieldGradient.h"
 #include "Session/Surface.h"
 
 #include <algorithm>
@@ -66,7 +66,8 @@ std::vector<int> labelCurveSides(const TriangleMesh& mesh, const std::vector<Sur
     const Vector3 axisX = (mesh.point(t[1]) - origin).normalized();
     const Vector3 normal = axisX.cross(mesh.point(t[2]) - origin).normalized();
     const Vector3 axisY = normal.cross(axisX);
-    const auto flat = [&](const Vector3& p) { return Eigen::Vector2d((p - origin).dot(axisX), (p - origin).dot(axisY)); };
+    const auto flat = [&](
+                        const Vector3& p) { return Eigen::Vector2d((p - origin).dot(axisX), (p - origin).dot(axisY)); };
     int count = 0;
     for (auto it = range.first; it != range.second; ++it)
     {
@@ -165,7 +166,8 @@ std::shared_ptr<const std::vector<double>> ClickDistances::from(
 }
 
 GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat, ClickDistances* cache)
+  const std::vector<RoiClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat,
+  ClickDistances* cache)
 {
   const TriangleMesh& mesh = surface.mesh();
   if (added.empty())
@@ -251,9 +253,10 @@ GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>&
     discs.faces[f] = inside([&](std::size_t i) {
       const std::vector<double>& d = *discs.distances[i];
       return (d[t[0]] + d[t[1]] + d[t[2]]) / 3.0;
-    }) ? 1 : 0;
-    const double area =
-      0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
+    })
+      ? 1
+      : 0;
+    const double area = 0.5 * (mesh.point(t[1]) - mesh.point(t[0])).cross(mesh.point(t[2]) - mesh.point(t[0])).norm();
     discs.surfaceArea += area;
     discs.area += discs.faces[f] ? area : 0.0;
   }
@@ -268,7 +271,8 @@ GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<
   {
     throw Error("ROI Scissor's inner fraction must be in (0, 1)");
   }
-  const GeodesicDiscs discs = geodesicDiscs(surface, added, subtracted, options.clickTolerance, options.paths.heat, cache);
+  const GeodesicDiscs discs =
+    geodesicDiscs(surface, added, subtracted, options.clickTolerance, options.paths.heat, cache);
   GeodesicDiscRegion region;
   region.clicks = discs.clicks;
   region.candidate = discs.vertices;
@@ -381,8 +385,8 @@ RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>&
   {
     throw Error("ROI Scissor's field is constant on its region");
   }
-  const auto best = std::max_element(scores.begin(), scores.end(),
-    [](const IsovalueScore& a, const IsovalueScore& b) { return a.score < b.score; });
+  const auto best = std::max_element(
+    scores.begin(), scores.end(), [](const IsovalueScore& a, const IsovalueScore& b) { return a.score < b.score; });
   result.isovalue = best->value;
   result.score = best->score;
 
@@ -414,8 +418,8 @@ RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>&
       const int part = std::min(parts - 1, static_cast<int>(middle / isoline.length * parts));
       const Triangle& t = mesh.triangle(curve.faces[i]);
       // Mean curvature at the centroid, positive where concave (section 3.1's H).
-      const double concavity = -(descriptors.meanCurvature[t[0]] + descriptors.meanCurvature[t[1]] +
-        descriptors.meanCurvature[t[2]]) / 3.0;
+      const double concavity =
+        -(descriptors.meanCurvature[t[0]] + descriptors.meanCurvature[t[1]] + descriptors.meanCurvature[t[2]]) / 3.0;
       if (concavity > bestConcavity[part])
       {
         bestConcavity[part] = concavity;

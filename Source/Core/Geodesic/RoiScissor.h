@@ -94,17 +94,17 @@ struct GeodesicDiscs
 /// (radius below the distance to the nearest vertex, or every added click inside a subtracted
 /// disc) and a region that covers its whole component (radius larger than the mesh).
 GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat = HeatGeodesicOptions(),
-  ClickDistances* distances = nullptr);
+  const std::vector<RoiClick>& subtracted, double clickTolerance,
+  const HeatGeodesicOptions& heat = HeatGeodesicOptions(), ClickDistances* distances = nullptr);
 
 /// ROI Scissor's candidate region (section 4.1) and its boundary constraints.
 struct GeodesicDiscRegion
 {
-  std::vector<SurfacePoint> clicks;  ///< the clicks on the surface (added, then subtracted)
-  std::vector<char> candidate;       ///< per vertex: inside the union minus the difference of discs
-  std::vector<char> candidateFaces;  ///< per face: the same rule at its centroid (distances interpolated)
-  std::vector<int> oneVertices;      ///< constraints 1 (near an added click)
-  std::vector<int> zeroVertices;     ///< constraints 0 (ends of edges crossing the region's border)
+  std::vector<SurfacePoint> clicks; ///< the clicks on the surface (added, then subtracted)
+  std::vector<char> candidate;      ///< per vertex: inside the union minus the difference of discs
+  std::vector<char> candidateFaces; ///< per face: the same rule at its centroid (distances interpolated)
+  std::vector<int> oneVertices;     ///< constraints 1 (near an added click)
+  std::vector<int> zeroVertices;    ///< constraints 0 (ends of edges crossing the region's border)
 };
 
 /// The candidate region of geodesicDiscs (options.clickTolerance, options.paths.heat) and the
@@ -120,26 +120,26 @@ GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<
 /// What one ROI Scissor selection produced.
 struct RoiScissorResult
 {
-  std::vector<SurfacePoint> clicks;      ///< the clicks on the surface (added, then subtracted)
-  std::vector<char> candidate;           ///< per vertex: inside the union minus the difference of discs
-  std::vector<int> oneVertices;          ///< constraints 1 (near an added click)
-  std::vector<int> zeroVertices;         ///< constraints 0 (ends of edges crossing the region's border)
-  std::vector<int> regionFaces;          ///< the faces the field was solved on (the submesh)
-  std::vector<double> field;             ///< per vertex; NaN outside the submesh
-  double isovalue = 0.0;                 ///< the best-scored isovalue
-  double score = 0.0;                    ///< its score
-  std::vector<SurfaceCurve> isolines;    ///< the best isoline's closed components (faces of the mesh)
+  std::vector<SurfacePoint> clicks;                     ///< the clicks on the surface (added, then subtracted)
+  std::vector<char> candidate;                          ///< per vertex: inside the union minus the difference of discs
+  std::vector<int> oneVertices;                         ///< constraints 1 (near an added click)
+  std::vector<int> zeroVertices;                        ///< constraints 0 (ends of edges crossing the region's border)
+  std::vector<int> regionFaces;                         ///< the faces the field was solved on (the submesh)
+  std::vector<double> field;                            ///< per vertex; NaN outside the submesh
+  double isovalue = 0.0;                                ///< the best-scored isovalue
+  double score = 0.0;                                   ///< its score
+  std::vector<SurfaceCurve> isolines;                   ///< the best isoline's closed components (faces of the mesh)
   std::vector<std::vector<SurfacePoint>> featurePoints; ///< per component, section 4.3
-  std::vector<GeodesicLoop> boundaries;  ///< per component, the closed anisotropic geodesic
-  std::vector<int> faceLabels;           ///< per face: 1 inside the region, 0 outside
+  std::vector<GeodesicLoop> boundaries;                 ///< per component, the closed anisotropic geodesic
+  std::vector<int> faceLabels;                          ///< per face: 1 inside the region, 0 outside
   /// False when the boundary loops did not separate the click from the rest of the surface (the
   /// labels then follow the best isoline: its side holding the click, within the region).
   bool boundaryEncloses = true;
 };
 
 /// ROI Scissor (sections 4.1-4.3). The candidate region and its constraints are those of
-/// geodesicDiscRegion (click distances through `distances` when given). The concavity-aware harmonic field is solved on the submesh of the faces
-/// touching the region, with weights computed on the whole surface (their curvature is not cut
+/// geodesicDiscRegion (click distances through `distances` when given). The concavity-aware harmonic field is solved on
+/// the submesh of the faces touching the region, with weights computed on the whole surface (their curvature is not cut
 /// short at the submesh's border). The isoline with the highest score among isolineCount uniform
 /// samples is split into k parts of equal length, k = segmentFraction of the triangles it
 /// crosses; in each part the crossed triangle whose centroid is most concave (highest mean

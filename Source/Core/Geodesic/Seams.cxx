@@ -61,7 +61,8 @@ SurfacePath SeamField::seam(const SurfacePoint& target) const
   }
   GeodesicSource source;
   source.curves = this->SourceLines;
-  return traceToSource(mesh, this->Directions, target, source, anisotropicMetric(this->TheSurface, this->Options.metric));
+  return traceToSource(
+    mesh, this->Directions, target, source, anisotropicMetric(this->TheSurface, this->Options.metric));
 }
 
 SurfacePath SeamField::anchoredSeam(const SurfacePoint& target, const SurfacePoint& anchor) const

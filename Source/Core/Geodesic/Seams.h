@@ -21,8 +21,8 @@ struct SeamOptions
 };
 
 /// The field of one source line (SeamCut, section 2.2), or of several (the components of one
-/// cut) on one connected component: the distance from the lines on their connected component by Short-Term Vector Dijkstra under the metric (by the heat method when
-/// gamma = 0, whose gradient is more accurate), its gradient v per
+/// cut) on one connected component: the distance from the lines on their connected component by Short-Term Vector
+/// Dijkstra under the metric (by the heat method when gamma = 0, whose gradient is more accurate), its gradient v per
 /// triangle and the descent directions v* = -D^-1 v per vertex (Eq. 2). Built once per source
 /// line; each seam is then only a streamline, so a new target (seam regrowth, SeamCut section 3)
 /// reuses the field. Keeps a reference to the surface, which must outlive it.
@@ -32,7 +32,8 @@ public:
   /// Throws kerf::Error for a source line that is not on the surface (checkGeodesicSource), no
   /// line, and lines on several connected components.
   SeamField(const Surface& surface, const SurfaceCurve& sourceLine, const SeamOptions& options = SeamOptions());
-  SeamField(const Surface& surface, const std::vector<SurfaceCurve>& sourceLines, const SeamOptions& options = SeamOptions());
+  SeamField(
+    const Surface& surface, const std::vector<SurfaceCurve>& sourceLines, const SeamOptions& options = SeamOptions());
 
   /// The seam from the source line to `target` (its emitter): the streamline of v* traced from
   /// the target until it meets the line, returned from the line to the target. Throws
@@ -71,7 +72,8 @@ public:
 
   /// The field of these lines and options: the kept one when both equal the last call's
   /// (`reused` set to true), else a new one (SeamField's errors).
-  const SeamField& field(const std::vector<SurfaceCurve>& sourceLines, const SeamOptions& options, bool* reused = nullptr);
+  const SeamField& field(
+    const std::vector<SurfaceCurve>& sourceLines, const SeamOptions& options, bool* reused = nullptr);
 
 private:
   std::shared_ptr<const Surface> SurfacePointer;

@@ -200,7 +200,8 @@ SurfaceCurve placeCurveOnSurface(const Surface& surface, const std::vector<Vecto
   const double repeat = 1e-12 * mesh.boundingBoxDiagonal();
   for (std::size_t i = 0; i < points.size(); ++i)
   {
-    const SurfacePoint p = projectOntoSurface(surface, points[i], maximumDistance, "point " + std::to_string(i) + " of " + what);
+    const SurfacePoint p =
+      projectOntoSurface(surface, points[i], maximumDistance, "point " + std::to_string(i) + " of " + what);
     const Vector3 x = surfacePosition(mesh, p);
     if (positions.empty() || (x - positions.back()).norm() > repeat)
     {

@@ -64,7 +64,8 @@ void checkSurfacePoint(const TriangleMesh& mesh, const SurfacePoint& point, cons
 {
   if (point.face < 0 || point.face >= mesh.faceCount())
   {
-    throw Error(std::string(what) + " lies in face " + std::to_string(point.face) + ", which is not a face of the mesh");
+    throw Error(
+      std::string(what) + " lies in face " + std::to_string(point.face) + ", which is not a face of the mesh");
   }
   const Vector3& b = point.barycentric;
   if (!b.allFinite())
@@ -118,7 +119,8 @@ void checkGeodesicSource(const TriangleMesh& mesh, const GeodesicSource& source)
         }
         const Triangle& t = mesh.triangle(f);
         Vector3 barycentric;
-        const Vector3 nearest = closestPointOnTriangle(p, mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), barycentric);
+        const Vector3 nearest =
+          closestPointOnTriangle(p, mesh.point(t[0]), mesh.point(t[1]), mesh.point(t[2]), barycentric);
         if ((nearest - p).norm() > tolerance)
         {
           throw Error("a source curve's point lies off face " + std::to_string(f) + " that holds its segment");

@@ -100,7 +100,8 @@ VectorDijkstraResult shortTermVectorDijkstra(const TriangleMesh& mesh, const Ani
     meanEdge += (mesh.point(ev[1]) - mesh.point(ev[0])).norm();
   }
   meanEdge /= std::max(mesh.edgeCount(), 1);
-  const double stretch = metric.isotropic ? 1.0 : std::sqrt(*std::max_element(metric.lambda1.begin(), metric.lambda1.end()));
+  const double stretch =
+    metric.isotropic ? 1.0 : std::sqrt(*std::max_element(metric.lambda1.begin(), metric.lambda1.end()));
   int targetsLeft = 0;
   std::vector<char> isTarget(n, 0);
   for (int v : options.targets)

@@ -9,8 +9,8 @@
 namespace kerf
 {
 
-Vector3 closestPointOnTriangle(const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c,
-  Vector3& barycentric)
+Vector3 closestPointOnTriangle(
+  const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c, Vector3& barycentric)
 {
   const Vector3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
@@ -185,8 +185,8 @@ void ClosestPointLocator::search(int node, const Vector3& query, Hit& best) cons
       const int f = this->FaceOrder[i];
       const Triangle& t = this->Mesh.triangle(f);
       Vector3 barycentric;
-      const Vector3 p = closestPointOnTriangle(query, this->Mesh.point(t[0]), this->Mesh.point(t[1]),
-        this->Mesh.point(t[2]), barycentric);
+      const Vector3 p = closestPointOnTriangle(
+        query, this->Mesh.point(t[0]), this->Mesh.point(t[1]), this->Mesh.point(t[2]), barycentric);
       const double d = (p - query).squaredNorm();
       if (d < best.distance || (d == best.distance && f < best.face))
       {

@@ -32,8 +32,8 @@ private:
   struct Node
   {
     Eigen::AlignedBox3d box;
-    int first = 0; // leaves: start in FaceOrder; inner nodes: the left child
-    int count = 0; // leaves: number of faces; 0 for inner nodes
+    int first = 0;  // leaves: start in FaceOrder; inner nodes: the left child
+    int count = 0;  // leaves: number of faces; 0 for inner nodes
     int right = -1; // inner nodes: the right child
   };
   int build(int first, int count);
@@ -49,7 +49,7 @@ private:
 int snapToVertex(const TriangleMesh& mesh, const ClosestPointLocator::Hit& hit);
 
 /// The point of triangle (a, b, c) nearest to p, with its barycentric coordinates.
-Vector3 closestPointOnTriangle(const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c,
-  Vector3& barycentric);
+Vector3 closestPointOnTriangle(
+  const Vector3& p, const Vector3& a, const Vector3& b, const Vector3& c, Vector3& barycentric);
 
 } // namespace kerf

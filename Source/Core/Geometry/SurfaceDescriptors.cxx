@@ -35,8 +35,8 @@ void rotateFrame(const Vector3& u, const Vector3& v, const Vector3& n, Vector3& 
 }
 
 // Re-expresses the symmetric tensor [ku kuv; kuv kv] given in frame (oldU, oldV) in (newU, newV).
-void projectTensor(const Vector3& oldU, const Vector3& oldV, double ku, double kuv, double kv,
-  const Vector3& newU, const Vector3& newV, double& outKu, double& outKuv, double& outKv)
+void projectTensor(const Vector3& oldU, const Vector3& oldV, double ku, double kuv, double kv, const Vector3& newU,
+  const Vector3& newV, double& outKu, double& outKuv, double& outKv)
 {
   Vector3 rotatedU, rotatedV;
   rotateFrame(newU, newV, oldU.cross(oldV), rotatedU, rotatedV);

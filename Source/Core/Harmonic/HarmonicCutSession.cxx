@@ -2,10 +2,10 @@
 #include "Harmonic/HarmonicCutSession.h"
 
 #include "Error.h"
-#include "Numerics/IntrinsicTriangulation.h"
 #include "Geometry/ClosestPoint.h"
-#include "Numerics/FieldGradient.h"
 #include "Mesh/MeshValidation.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/IntrinsicTriangulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -38,8 +38,8 @@ void HarmonicCutSession::addHardValues(
 {
   if (vertices.size() != values.size())
   {
-    throw Error("there are " + std::to_string(vertices.size()) + " hard vertices but " +
-      std::to_string(values.size()) + " values");
+    throw Error("there are " + std::to_string(vertices.size()) + " hard vertices but " + std::to_string(values.size()) +
+      " values");
   }
   const TriangleMesh& mesh = this->mesh();
   for (std::size_t i = 0; i < vertices.size(); ++i)
@@ -178,8 +178,8 @@ void checkField(const TriangleMesh& mesh, const std::vector<double>& field)
 {
   if (static_cast<int>(field.size()) != mesh.vertexCount())
   {
-    throw Error("the field has " + std::to_string(field.size()) + " values for " +
-      std::to_string(mesh.vertexCount()) + " points");
+    throw Error("the field has " + std::to_string(field.size()) + " values for " + std::to_string(mesh.vertexCount()) +
+      " points");
   }
   double lowest = std::numeric_limits<double>::infinity();
   double highest = -lowest;

@@ -3,8 +3,8 @@
 
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Harmonic/StrokeConstraints.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Session/Surface.h"
 
 #include <memory>
@@ -56,11 +56,11 @@ struct CutOptions
 /// A chosen cut.
 struct CutResult
 {
-  double value = 0.0;                   ///< the iso-value of the cut
-  std::vector<Isoline> isolines;        ///< the chosen components
-  std::vector<double> scores;           ///< each chosen component's score
+  double value = 0.0;                    ///< the iso-value of the cut
+  std::vector<Isoline> isolines;         ///< the chosen components
+  std::vector<double> scores;            ///< each chosen component's score
   std::vector<IsovalueScore> candidates; ///< BestScore: every candidate, in order of value
-  std::vector<int> labels;              ///< per face: the segments the cut bounds
+  std::vector<int> labels;               ///< per face: the segments the cut bounds
 };
 
 /// The reusable state of harmonic cuts on one surface: the surface (with its locator, normals and
@@ -78,8 +78,8 @@ public:
   SoftConstraintFormulation automaticFormulation() const;
 
   /// Adds hard values for vertices; NaN values and vertices used by no triangle are skipped.
-  void addHardValues(const std::vector<int>& vertices, const std::vector<double>& values,
-    FieldConstraints& constraints) const;
+  void addHardValues(
+    const std::vector<int>& vertices, const std::vector<double>& values, FieldConstraints& constraints) const;
 
   /// Gives each connected component without any constraint a hard `value` at its first vertex,
   /// so that its field is that constant instead of undefined: a stroke then cuts the components

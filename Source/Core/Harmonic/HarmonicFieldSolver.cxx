@@ -69,8 +69,8 @@ std::vector<std::pair<int, double>> sortedDirichlet(const FieldConstraints& c, i
 {
   if (c.dirichletVertices.size() != c.dirichletValues.size())
   {
-    throw Error("the hard constraints have " + std::to_string(c.dirichletVertices.size()) +
-      " vertices but " + std::to_string(c.dirichletValues.size()) + " values");
+    throw Error("the hard constraints have " + std::to_string(c.dirichletVertices.size()) + " vertices but " +
+      std::to_string(c.dirichletValues.size()) + " values");
   }
   std::vector<std::pair<int, double>> pairs;
   for (std::size_t i = 0; i < c.dirichletVertices.size(); ++i)
@@ -112,8 +112,8 @@ const std::pair<int, double>* findHard(const std::vector<std::pair<int, double>>
 
 // The rows and columns of a compressed column-major matrix mapped to new indices (-1: dropped),
 // both maps increasing where defined, so the entries come out in order: one pass, no sorting.
-Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& row,
-  int rows, const std::vector<int>& column, int columns)
+Eigen::SparseMatrix<double> submatrix(const Eigen::SparseMatrix<double>& matrix, const std::vector<int>& row, int rows,
+  const std::vector<int>& column, int columns)
 {
   Eigen::SparseMatrix<double> out(rows, columns);
   std::vector<int> starts(1, 0);
@@ -196,7 +196,7 @@ struct HarmonicFieldSolver::Cache
 
   // Soft part, for the current constraint locations and weight.
   std::vector<SoftConstraint> softLocations; // values ignored
-  std::vector<Triangle> softCornerList;       // the corners each one interpolates
+  std::vector<Triangle> softCornerList;      // the corners each one interpolates
   double softWeight = 0.0;
   SoftConstraintFormulation formulation = SoftConstraintFormulation::LeastSquares;
   bool prepared = false;
@@ -257,7 +257,8 @@ HarmonicFieldSolver::Problem HarmonicFieldSolver::checkProblem(
   for (std::size_t i = 0; i < constraints.soft.size(); ++i)
   {
     const SoftConstraint& s = constraints.soft[i];
-    const int faces = constraints.softTriangles ? static_cast<int>(constraints.softTriangles->size()) : mesh.faceCount();
+    const int faces =
+      constraints.softTriangles ? static_cast<int>(constraints.softTriangles->size()) : mesh.faceCount();
     if (s.face < 0 || s.face >= faces)
     {
       throw Error("soft constraint " + std::to_string(i) + " lies on face " + std::to_string(s.face) +
@@ -319,8 +320,8 @@ bool HarmonicFieldSolver::factorIfChanged(
   Cache& cache = *this->State;
   const int n = mesh.vertexCount();
   // The factored term depends on the operator, the hard vertices and the mode.
-  const bool operatorChanged = cache.vertexCount != n || cache.triangles != mesh.triangles() ||
-    cache.weights != edgeWeights;
+  const bool operatorChanged =
+    cache.vertexCount != n || cache.triangles != mesh.triangles() || cache.weights != edgeWeights;
   if (!operatorChanged && cache.factored && cache.dirichlet == problem.dirichletVertices &&
     cache.softMode == problem.softMode && cache.squared == problem.squared)
   {
@@ -419,8 +420,8 @@ Eigen::VectorXd HarmonicFieldSolver::solveHardValues(const Problem& problem)
   Cache& cache = *this->State;
   const int columns = cache.columns();
   // The hard values' part of the right-hand side and its solution x_D = B^-1 b_D.
-  const Eigen::VectorXd hard = Eigen::Map<const Eigen::VectorXd>(
-    problem.hardValues.data(), static_cast<Eigen::Index>(problem.hardValues.size()));
+  const Eigen::VectorXd hard =
+    Eigen::Map<const Eigen::VectorXd>(problem.hardValues.data(), static_cast<Eigen::Index>(problem.hardValues.size()));
   Eigen::VectorXd hardRhs = Eigen::VectorXd::Zero(columns);
   if (!problem.dirichlet.empty() && columns > 0)
   {
@@ -429,8 +430,8 @@ Eigen::VectorXd HarmonicFieldSolver::solveHardValues(const Problem& problem)
   }
   if (!cache.hardSolved || cache.hardValues != problem.hardValues)
   {
-    cache.hardSolution = columns > 0 && !problem.dirichlet.empty() ? cache.cholesky.solve(hardRhs)
-                                                                   : Eigen::VectorXd::Zero(columns);
+    cache.hardSolution =
+      columns > 0 && !problem.dirichlet.empty() ? cache.cholesky.solve(hardRhs) : Eigen::VectorXd::Zero(columns);
     cache.hardValues = problem.hardValues;
     cache.hardSolved = true;
   }
@@ -664,8 +665,8 @@ double HarmonicFieldSolver::relativeResidual(const TriangleMesh& mesh, const Fie
   return scale > 0.0 ? residual.norm() / scale : residual.norm();
 }
 
-std::vector<double> HarmonicFieldSolver::assembleField(const TriangleMesh& mesh, const Problem& problem,
-  const Eigen::VectorXd& x, const std::vector<double>& offset) const
+std::vector<double> HarmonicFieldSolver::assembleField(
+  const TriangleMesh& mesh, const Problem& problem, const Eigen::VectorXd& x, const std::vector<double>& offset) const
 {
   const Cache& cache = *this->State;
   std::vector<double> field(mesh.vertexCount(), 0.0);

@@ -1,8 +1,8 @@
 // The harmonic-field solver: hard vertex values and soft constraints at points inside faces.
 #pragma once
 
-#include "Numerics/SparseCholesky.h"
 #include "Mesh/TriangleMesh.h"
+#include "Numerics/SparseCholesky.h"
 
 #include <memory>
 #include <string>
@@ -73,7 +73,7 @@ struct FieldConstraints
 /// A solved field and how it was obtained.
 struct HarmonicFieldSolution
 {
-  std::vector<double> field;    ///< per vertex; 0 on points used by no triangle
+  std::vector<double> field;     ///< per vertex; 0 on points used by no triangle
   double relativeResidual = 0.0; ///< ||M x - b|| / ||b|| of the system solved
   /// What the solve cost: a new factorization, a low-rank correction of the cached one (new soft
   /// constraint locations), or only a back-substitution (new values).
@@ -109,9 +109,9 @@ std::vector<double> clampToConstraintRange(const std::vector<double>& field, con
 /// constraint term is the low-rank correction U U^T, applied through the Woodbury identity
 /// (SparseCholesky::prepare/apply), so new strokes cost a sparse forward solve over the strokes'
 /// elimination-tree reach and a k x k solve, and new values only the k x k solve and one
-/// back-substitution. In a component without hard values the Laplacian term annihilates constants: one vertex of it is fixed at 0 in the factored term and the
-/// component's constant offset becomes a separate unknown fitted to the constraints, so the
-/// solution is that of the system itself, without regularization.
+/// back-substitution. In a component without hard values the Laplacian term annihilates constants: one vertex of it is
+/// fixed at 0 in the factored term and the component's constant offset becomes a separate unknown fitted to the
+/// constraints, so the solution is that of the system itself, without regularization.
 ///
 /// Throws kerf::Error for: no constraint, a component without any constraint (its field would
 /// be undefined), indices out of range, NaN values or weights, a vertex given two different
@@ -175,8 +175,8 @@ private:
   void factorWithConstraints(
     const TriangleMesh& mesh, const FieldConstraints& constraints, const Eigen::SparseMatrix<double>& u);
   /// Adds the soft constraints' correction to the free values x and fills the offsets.
-  void solveSoftConstraints(const TriangleMesh& mesh, const FieldConstraints& constraints,
-    const Problem& problem, const Eigen::VectorXd& hardRhs, Eigen::VectorXd& x, std::vector<double>& offset) const;
+  void solveSoftConstraints(const TriangleMesh& mesh, const FieldConstraints& constraints, const Problem& problem,
+    const Eigen::VectorXd& hardRhs, Eigen::VectorXd& x, std::vector<double>& offset) const;
   double relativeResidual(const TriangleMesh& mesh, const FieldConstraints& constraints, const Problem& problem,
     const Eigen::VectorXd& hardRhs, const Eigen::VectorXd& x, const std::vector<double>& offset) const;
   std::vector<double> assembleField(const TriangleMesh& mesh, const Problem& problem, const Eigen::VectorXd& x,

@@ -42,8 +42,8 @@ Vector3 crossing(const TriangleMesh& mesh, const std::vector<double>& field, dou
 
 // The edges where face f's corners go from below to above `value` (entry) and back (exit), in
 // the face's corner order; false if the face is not crossed.
-bool crossedEdges(const TriangleMesh& mesh, const std::vector<double>& field, double value, int f,
-  int& entry, int& exit)
+bool crossedEdges(
+  const TriangleMesh& mesh, const std::vector<double>& field, double value, int f, int& entry, int& exit)
 {
   const Triangle& t = mesh.triangle(f);
   const bool above[3] = { field[t[0]] >= value, field[t[1]] >= value, field[t[2]] >= value };
@@ -199,8 +199,8 @@ double isolineScore(const std::vector<Isoline>& isolines, const std::vector<doub
   return length > 0.0 ? weighted / length : 0.0;
 }
 
-std::vector<IsovalueScore> scoreIsovalues(const TriangleMesh& mesh, const std::vector<double>& field,
-  const std::vector<double>& gradientMagnitudes, int count)
+std::vector<IsovalueScore> scoreIsovalues(
+  const TriangleMesh& mesh, const std::vector<double>& field, const std::vector<double>& gradientMagnitudes, int count)
 {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (int v = 0; v < mesh.vertexCount(); ++v)
@@ -333,8 +333,8 @@ std::vector<int> mergeSlivers(const TriangleMesh& mesh, std::vector<int> labels,
       int best = -1, bestCount = 0;
       for (const auto& [neighbour, count] : shared[r])
       {
-        const bool better = best < 0 || (sliver[best] && !sliver[neighbour]) ||
-          (sliver[best] == sliver[neighbour] && count > bestCount);
+        const bool better =
+          best < 0 || (sliver[best] && !sliver[neighbour]) || (sliver[best] == sliver[neighbour] && count > bestCount);
         if (better)
         {
           best = neighbour;
@@ -401,7 +401,8 @@ std::vector<int> labelCuts(const TriangleMesh& mesh, const std::vector<FieldCut>
     return false;
   };
   std::vector<int> labels;
-  labelFaceRegions(mesh, [&](int f, int k) { return !separated(f, mesh.faceNeighbor(f, k)); }, labels);
+  labelFaceRegions(
+    mesh, [&](int f, int k) { return !separated(f, mesh.faceNeighbor(f, k)); }, labels);
   return labels;
 }
 
@@ -471,8 +472,7 @@ std::vector<int> labelStrokeCuts(
     {
       continue;
     }
-    const double length =
-      (mesh.point(mesh.edgeVertices(e)[0]) - mesh.point(mesh.edgeVertices(e)[1])).norm();
+    const double length = (mesh.point(mesh.edgeVertices(e)[0]) - mesh.point(mesh.edgeVertices(e)[1])).norm();
     bool supported = false;
     for (std::size_t c = 0; c < cuts.size() && !supported; ++c)
     {
@@ -535,12 +535,13 @@ std::vector<int> labelStrokeCuts(
   std::vector<Candidate> order;
   for (const auto& entry : boundaries)
   {
-    order.push_back({ entry.second.second / entry.second.first, entry.second.first, entry.first.first,
-      entry.first.second });
+    order.push_back(
+      { entry.second.second / entry.second.first, entry.second.first, entry.first.first, entry.first.second });
   }
   std::sort(order.begin(), order.end(), [](const Candidate& x, const Candidate& y) {
     return x.support != y.support ? x.support < y.support
-                                  : x.length != y.length ? x.length < y.length : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
+      : x.length != y.length      ? x.length < y.length
+                                  : std::make_pair(x.a, x.b) < std::make_pair(y.a, y.b);
   });
   std::vector<int> parent(static_cast<std::size_t>(regionCount));
   for (int r = 0; r < regionCount; ++r)
@@ -656,8 +657,8 @@ std::vector<int> labelStrokeCuts(
   return labels;
 }
 
-std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
-  const std::vector<const Isoline*>& cut)
+std::vector<int> labelCutSides(
+  const TriangleMesh& mesh, const std::vector<double>& field, double value, const std::vector<const Isoline*>& cut)
 {
   std::vector<int> labels = labelCuts(mesh, { FieldCut{ &field, value, cut } });
   std::vector<char> onCut(static_cast<std::size_t>(mesh.faceCount()), 0);

@@ -44,8 +44,8 @@ struct IsovalueScore
 /// Scores `count` isovalues sampled uniformly strictly inside the field's range
 /// (value_i = min + i (max - min) / (count + 1), i = 1..count) in one pass over the faces,
 /// without building polylines. Empty if the field is constant.
-std::vector<IsovalueScore> scoreIsovalues(const TriangleMesh& mesh, const std::vector<double>& field,
-  const std::vector<double>& gradientMagnitudes, int count);
+std::vector<IsovalueScore> scoreIsovalues(
+  const TriangleMesh& mesh, const std::vector<double>& field, const std::vector<double>& gradientMagnitudes, int count);
 
 /// Index of the isoline nearest to a set of points (smallest mean distance from the points to
 /// the polyline), or -1 if there is none.
@@ -99,7 +99,7 @@ std::vector<int> labelStrokeCuts(
 /// labelCuts for a single cut, without slivers: a region made only of faces the cut runs through
 /// (cut off from both sides where the cut ends on a hole) joins the neighbour it shares the most
 /// edges with.
-std::vector<int> labelCutSides(const TriangleMesh& mesh, const std::vector<double>& field, double value,
-  const std::vector<const Isoline*>& cut);
+std::vector<int> labelCutSides(
+  const TriangleMesh& mesh, const std::vector<double>& field, double value, const std::vector<const Isoline*>& cut);
 
 } // namespace kerf

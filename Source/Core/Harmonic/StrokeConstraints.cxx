@@ -17,8 +17,8 @@ namespace
 constexpr int FollowDepth = 12;
 
 // The vertex normals interpolated at a surface point (unnormalised; zero where they cancel).
-Vector3 interpolatedNormal(const TriangleMesh& mesh, const std::vector<Vector3>& vertexNormals,
-  const ClosestPointLocator::Hit& hit)
+Vector3 interpolatedNormal(
+  const TriangleMesh& mesh, const std::vector<Vector3>& vertexNormals, const ClosestPointLocator::Hit& hit)
 {
   const Triangle& tri = mesh.triangle(hit.face);
   return hit.barycentric[0] * vertexNormals[tri[0]] + hit.barycentric[1] * vertexNormals[tri[1]] +
@@ -36,8 +36,8 @@ struct PathFollower
   // chord if its midpoint is within the tolerance of the surface; otherwise the surface point
   // under the midpoint, seen along the ends' mean normal (the nearest surface point to the
   // midpoint moved along that normal, projected again), and each half in turn.
-  void follow(const ClosestPointLocator::Hit& a, const ClosestPointLocator::Hit& b, int depth,
-    std::vector<Vector3>& path) const
+  void follow(
+    const ClosestPointLocator::Hit& a, const ClosestPointLocator::Hit& b, int depth, std::vector<Vector3>& path) const
   {
     const Vector3 middle = 0.5 * (a.position + b.position);
     ClosestPointLocator::Hit hit = this->locator.closest(middle);
@@ -112,8 +112,8 @@ StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPoi
     }
     if (options.maximumDistance > 0.0 && hit.distance > options.maximumDistance)
     {
-      throw Error(what + " is " + std::to_string(hit.distance) +
-        " away from the surface, farther than the allowed " + std::to_string(options.maximumDistance));
+      throw Error(what + " is " + std::to_string(hit.distance) + " away from the surface, farther than the allowed " +
+        std::to_string(options.maximumDistance));
     }
     return hit;
   };
@@ -124,7 +124,8 @@ StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPoi
     {
       if (!p.allFinite() || p.cwiseAbs().maxCoeff() > CoordinateLimit)
       {
-        throw Error("stroke " + std::to_string(s) + " has a point with NaN, infinite or huge coordinates (beyond +-1e50)");
+        throw Error(
+          "stroke " + std::to_string(s) + " has a point with NaN, infinite or huge coordinates (beyond +-1e50)");
       }
     }
     bool distinct = false;
@@ -141,8 +142,9 @@ StrokeConstraintSet strokeConstraints(const TriangleMesh& mesh, const ClosestPoi
     {
       length += (stroke[j + 1] - stroke[j]).norm();
     }
-    const double offset =
-      options.offsetLengthFraction > 0.0 ? std::min(options.offset, options.offsetLengthFraction * length) : options.offset;
+    const double offset = options.offsetLengthFraction > 0.0
+      ? std::min(options.offset, options.offsetLengthFraction * length)
+      : options.offset;
     for (std::size_t j = 0; j < stroke.size(); ++j)
     {
       project(stroke[j], "stroke " + std::to_string(s) + " point " + std::to_string(j));

@@ -168,8 +168,8 @@ public:
         this->Points = this->count("the number of points");
         this->array(this->word("the points' type"), this->Points, 3, "POINTS");
       }
-      else if (startsWith(keyword, "vertices") || startsWith(keyword, "lines") ||
-        startsWith(keyword, "polygons") || startsWith(keyword, "triangle_strips"))
+      else if (startsWith(keyword, "vertices") || startsWith(keyword, "lines") || startsWith(keyword, "polygons") ||
+        startsWith(keyword, "triangle_strips"))
       {
         this->cells(keyword);
       }
@@ -281,8 +281,8 @@ private:
   {
     if (!fitsIn(count, size, this->remaining()))
     {
-      this->fail(std::string(what) + " declares " + std::to_string(count) + " values of " +
-        std::to_string(size) + " bytes, but " + std::to_string(this->remaining()) + " bytes remain");
+      this->fail(std::string(what) + " declares " + std::to_string(count) + " values of " + std::to_string(size) +
+        " bytes, but " + std::to_string(this->remaining()) + " bytes remain");
     }
   }
 
@@ -295,13 +295,12 @@ private:
     if (type.kind == Kind::Float || type.kind == Kind::Double)
     {
       double value = 0.0;
-      const double largest = type.kind == Kind::Float ? std::numeric_limits<float>::max()
-                                                      : std::numeric_limits<double>::max();
+      const double largest =
+        type.kind == Kind::Float ? std::numeric_limits<float>::max() : std::numeric_limits<double>::max();
       const bool letters = text.find_first_of("nNiIxX") != std::string_view::npos;
       if (letters || !LineCursor::parseReal(text, value) || !(std::fabs(value) <= largest))
       {
-        this->fail(std::string(what) + " holds " + quoted(text) +
-          ", not a finite number VTK's legacy reader can read");
+        this->fail(std::string(what) + " holds " + quoted(text) + ", not a finite number VTK's legacy reader can read");
       }
       return 0;
     }
@@ -337,8 +336,7 @@ private:
   // Checks an array as ReadArray reads it; calls `each` with the integer value of every entry of
   // an integer array when given (the cell sections need them).
   template <typename Each>
-  void array(std::string_view typeName, std::uint64_t tuples, std::uint64_t components,
-    const char* what, Each each)
+  void array(std::string_view typeName, std::uint64_t tuples, std::uint64_t components, const char* what, Each each)
   {
     const ArrayType type = arrayType(typeName);
     if (type.kind == Kind::Unsupported)
@@ -350,8 +348,8 @@ private:
       this->fail(std::string(what) + " declares more values than 2^64");
     }
     const std::uint64_t values = tuples * components;
-    const bool integers = type.kind == Kind::SignedInteger || type.kind == Kind::UnsignedInteger ||
-      type.kind == Kind::Bit;
+    const bool integers =
+      type.kind == Kind::SignedInteger || type.kind == Kind::UnsignedInteger || type.kind == Kind::Bit;
     if (type.kind == Kind::String)
     {
       this->strings(values, what);
@@ -452,8 +450,7 @@ private:
     while (true)
     {
       std::size_t i = this->Position;
-      while (i < this->Bytes.size() && i - this->Position < 256 &&
-        (this->Bytes[i] == ' ' || this->Bytes[i] == '\r'))
+      while (i < this->Bytes.size() && i - this->Position < 256 && (this->Bytes[i] == ' ' || this->Bytes[i] == '\r'))
       {
         ++i;
       }
@@ -524,14 +521,12 @@ private:
       }
     } while (text.empty());
     const std::vector<std::string_view> key = splitWords(text);
-    const bool known = key.size() == 4 && key[0] == "NAME" && key[2] == "LOCATION" &&
-      key[3] == "vtkDataArray" &&
+    const bool known = key.size() == 4 && key[0] == "NAME" && key[2] == "LOCATION" && key[3] == "vtkDataArray" &&
       (key[1] == "L2_NORM_RANGE" || key[1] == "COMPONENT_RANGE" || key[1] == "L2_NORM_FINITE_RANGE" ||
         key[1] == "COMPONENT_FINITE_RANGE");
     if (!known)
     {
-      this->fail("unsupported array information " + quoted(text) +
-        " (Kerf accepts the range keys VTK writes)");
+      this->fail("unsupported array information " + quoted(text) + " (Kerf accepts the range keys VTK writes)");
     }
     if (!this->line(text))
     {
@@ -539,13 +534,13 @@ private:
     }
     const std::vector<std::string_view> data = splitWords(text);
     long long length = -1;
-    bool numbers = data.size() >= 2 && data[0] == "DATA" && LineCursor::parseInteger(data[1], length) &&
-      length >= 0 && length <= 64 && data.size() == static_cast<std::size_t>(length) + 2;
+    bool numbers = data.size() >= 2 && data[0] == "DATA" && LineCursor::parseInteger(data[1], length) && length >= 0 &&
+      length <= 64 && data.size() == static_cast<std::size_t>(length) + 2;
     for (std::size_t i = 2; numbers && i < data.size(); ++i)
     {
       double value = 0.0;
-      numbers = data[i].find_first_of("nNiIxX") == std::string_view::npos &&
-        LineCursor::parseReal(data[i], value) && std::fabs(value) <= std::numeric_limits<double>::max();
+      numbers = data[i].find_first_of("nNiIxX") == std::string_view::npos && LineCursor::parseReal(data[i], value) &&
+        std::fabs(value) <= std::numeric_limits<double>::max();
     }
     if (!numbers)
     {
@@ -646,16 +641,17 @@ private:
       std::uint64_t index = 0;
       std::int64_t previous = 0;
       this->array(offsetType, offsetCount, 1, "OFFSETS", [&](std::int64_t offset) {
-        if ((index == 0 && offset != 0) || offset < previous ||
-          static_cast<std::uint64_t>(offset) > connectivityCount)
+        if ((index == 0 && offset != 0) || offset < previous || static_cast<std::uint64_t>(offset) > connectivityCount)
         {
           this->fail("cell offset " + std::to_string(index) + " is " + std::to_string(offset) +
-            (index == 0 ? "; offsets start at 0" : "; offsets never decrease and stay within the connectivity size " + std::to_string(connectivityCount)));
+            (index == 0 ? "; offsets start at 0"
+                        : "; offsets never decrease and stay within the connectivity size " +
+                  std::to_string(connectivityCount)));
         }
         if (index + 1 == offsetCount && static_cast<std::uint64_t>(offset) != connectivityCount)
         {
-          this->fail("the last cell offset is " + std::to_string(offset) +
-            ", not the connectivity size " + std::to_string(connectivityCount));
+          this->fail("the last cell offset is " + std::to_string(offset) + ", not the connectivity size " +
+            std::to_string(connectivityCount));
         }
         previous = offset;
         ++index;
@@ -685,9 +681,8 @@ private:
       }
       if (value < 0 || static_cast<std::uint64_t>(value) > size - read)
       {
-        this->fail("cell " + std::to_string(cellCount) + " of " + keyword + " claims " +
-          std::to_string(value) + " points, but " + std::to_string(size - read) +
-          " values remain in its section");
+        this->fail("cell " + std::to_string(cellCount) + " of " + keyword + " claims " + std::to_string(value) +
+          " points, but " + std::to_string(size - read) + " values remain in its section");
       }
       left = static_cast<std::uint64_t>(value);
       ++cellCount;
@@ -713,8 +708,8 @@ private:
     }
     if (cellCount != declaredCells)
     {
-      this->fail("the " + keyword + " section declares " + std::to_string(declaredCells) +
-        " cells but holds " + std::to_string(cellCount));
+      this->fail("the " + keyword + " section declares " + std::to_string(declaredCells) + " cells but holds " +
+        std::to_string(cellCount));
     }
     this->Cells += cellCount;
   }
@@ -734,13 +729,13 @@ private:
     while (true)
     {
       const bool pointData = startsWith(keyword, "point_data");
-      const std::uint64_t declared = this->count(pointData ? "the number of point values" : "the number of cell values");
+      const std::uint64_t declared =
+        this->count(pointData ? "the number of point values" : "the number of cell values");
       const std::uint64_t expected = pointData ? this->Points : this->Cells;
       if (declared != expected)
       {
-        this->fail(std::string(pointData ? "POINT_DATA" : "CELL_DATA") + " declares " +
-          std::to_string(declared) + " values for " + std::to_string(expected) +
-          (pointData ? " points" : " cells"));
+        this->fail(std::string(pointData ? "POINT_DATA" : "CELL_DATA") + " declares " + std::to_string(declared) +
+          " values for " + std::to_string(expected) + (pointData ? " points" : " cells"));
       }
       keyword.clear();
       while (this->skipToWord())

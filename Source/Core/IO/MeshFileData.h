@@ -38,10 +38,10 @@ struct MeshFileArray
 /// to name an existing point.
 struct MeshFileData
 {
-  std::vector<double> points;  ///< x, y, z per point
+  std::vector<double> points;   ///< x, y, z per point
   bool singlePrecision = false; ///< the file stores coordinates as 32-bit floats
-  CellList vertices;           ///< point cells (OBJ "p")
-  CellList lines;              ///< polylines (OBJ "l")
+  CellList vertices;            ///< point cells (OBJ "p")
+  CellList lines;               ///< polylines (OBJ "l")
   CellList polygons;
   std::vector<MeshFileArray> pointArrays;
   std::vector<MeshFileArray> polygonArrays; ///< only for files whose cells are all polygons

@@ -93,8 +93,7 @@ PolygonMesh parseOFF(const std::string& text)
   {
     if (!cursor.next())
     {
-      throw Error("OFF: the file ends after " + std::to_string(v) + " of " +
-        std::to_string(vertexCount) + " vertices");
+      throw Error("OFF: the file ends after " + std::to_string(v) + " of " + std::to_string(vertexCount) + " vertices");
     }
     Vector3 p;
     p.x() = cursor.real("x coordinate");
@@ -110,8 +109,7 @@ PolygonMesh parseOFF(const std::string& text)
   {
     if (!cursor.next())
     {
-      throw Error("OFF: the file ends after " + std::to_string(f) + " of " +
-        std::to_string(faceCount) + " faces");
+      throw Error("OFF: the file ends after " + std::to_string(f) + " of " + std::to_string(faceCount) + " faces");
     }
     const long long size = cursor.integer("number of face vertices");
     if (size < 3 || size > 1000000)
@@ -123,8 +121,8 @@ PolygonMesh parseOFF(const std::string& text)
       const long long index = cursor.integer("vertex index");
       if (index < 0 || index >= vertexCount)
       {
-        cursor.fail("vertex index " + std::to_string(index) + " is out of range [0, " +
-          std::to_string(vertexCount) + ")");
+        cursor.fail(
+          "vertex index " + std::to_string(index) + " is out of range [0, " + std::to_string(vertexCount) + ")");
       }
       mesh.polygonIndices.push_back(static_cast<int>(index));
     }

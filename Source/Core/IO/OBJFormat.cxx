@@ -45,9 +45,9 @@ public:
     {
       if (index < -definedSoFar)
       {
-        this->Cursor.fail(std::string(this->What) + " index " + std::to_string(index) +
-          " reaches before the first " + this->What + " (" + std::to_string(definedSoFar) + " " +
-          (definedSoFar == 1 ? this->What : this->Plural) + " defined so far)");
+        this->Cursor.fail(std::string(this->What) + " index " + std::to_string(index) + " reaches before the first " +
+          this->What + " (" + std::to_string(definedSoFar) + " " + (definedSoFar == 1 ? this->What : this->Plural) +
+          " defined so far)");
       }
       return definedSoFar + index;
     }
@@ -64,8 +64,8 @@ public:
     if (this->Forward.index >= defined)
     {
       throw Error("OBJ line " + std::to_string(this->Forward.line) + ": " + this->What + " index " +
-        std::to_string(this->Forward.index + 1) + " is out of range: the file has " +
-        std::to_string(defined) + " " + (defined == 1 ? this->What : this->Plural));
+        std::to_string(this->Forward.index + 1) + " is out of range: the file has " + std::to_string(defined) + " " +
+        (defined == 1 ? this->What : this->Plural));
     }
   }
 
@@ -96,8 +96,8 @@ void assignPerPoint(std::vector<std::int64_t>& perPoint, std::int64_t point, std
 }
 
 // A point array from per-point element indices, or false if a corner lacked one or two disagreed.
-bool gatherPerPoint(const std::vector<std::int64_t>& perPoint, bool everyCorner,
-  const std::vector<double>& elements, int components, std::size_t pointCount, MeshFileArray& array)
+bool gatherPerPoint(const std::vector<std::int64_t>& perPoint, bool everyCorner, const std::vector<double>& elements,
+  int components, std::size_t pointCount, MeshFileArray& array)
 {
   if (!everyCorner)
   {
@@ -227,8 +227,7 @@ MeshFileData parseOBJ(std::string_view bytes)
       if (cells.indices.size() - first < smallest)
       {
         cursor.fail("'" + std::string(keyword) + "' needs at least " + std::to_string(smallest) +
-          (smallest == 1 ? " corner" : " corners") + ", found " +
-          std::to_string(cells.indices.size() - first));
+          (smallest == 1 ? " corner" : " corners") + ", found " + std::to_string(cells.indices.size() - first));
       }
       cells.close();
     }

@@ -254,8 +254,7 @@ Header parseHeader(std::string_view bytes)
         }
         if (!isInteger(property.countType))
         {
-          failHeader(line, "the count of list property " + quoted(property.name) +
-              " must have an integer type");
+          failHeader(line, "the count of list property " + quoted(property.name) + " must have an integer type");
         }
       }
       else if (words.size() == 3 && words[1] != "list")
@@ -274,8 +273,7 @@ Header parseHeader(std::string_view bytes)
       Element& element = header.elements.back();
       if (element.find(property.name))
       {
-        failHeader(line, "property " + quoted(property.name) + " is declared twice in element " +
-            quoted(element.name));
+        failHeader(line, "property " + quoted(property.name) + " is declared twice in element " + quoted(element.name));
       }
       element.properties.push_back(std::move(property));
     }
@@ -352,10 +350,7 @@ public:
   }
 
   bool ascii() const { return this->Ascii; }
-  std::size_t remaining() const
-  {
-    return this->Bytes.size() - (this->Ascii ? this->Lines.offset() : this->Position);
-  }
+  std::size_t remaining() const { return this->Bytes.size() - (this->Ascii ? this->Lines.offset() : this->Position); }
 
   // "PLY byte 1234" or "PLY line 12": where the current row starts.
   std::string where() const
@@ -376,8 +371,8 @@ public:
     }
     if (!this->Lines.next())
     {
-      throw Error("PLY: the file ends after " + std::to_string(row) + " of " +
-        std::to_string(element.count) + " " + element.name + " rows");
+      throw Error("PLY: the file ends after " + std::to_string(row) + " of " + std::to_string(element.count) + " " +
+        element.name + " rows");
     }
   }
 
@@ -408,8 +403,8 @@ public:
     const int size = sizeOf(type);
     if (this->Bytes.size() - this->Position < static_cast<std::size_t>(size))
     {
-      throw Error("PLY byte " + std::to_string(this->Position) + ": the file ends inside " +
-        *this->ElementName + " row " + std::to_string(this->Row));
+      throw Error("PLY byte " + std::to_string(this->Position) + ": the file ends inside " + *this->ElementName +
+        " row " + std::to_string(this->Row));
     }
     const unsigned char* b = bytesOf(this->Bytes, this->Position);
     this->Position += static_cast<std::size_t>(size);
@@ -450,8 +445,7 @@ public:
 
   [[noreturn]] void fail(const std::string& message) const
   {
-    throw Error(this->where() + ": " + *this->ElementName + " row " + std::to_string(this->Row) +
-      " " + message);
+    throw Error(this->where() + ": " + *this->ElementName + " row " + std::to_string(this->Row) + " " + message);
   }
 
 private:
@@ -510,8 +504,8 @@ MeshFileData parsePLY(std::string_view bytes)
   {
     if (vertex->find(axis)->list)
     {
-      failHeader(vertex->headerLine, std::string("property '") + axis +
-          "' of the vertex element is a list; it must be a scalar");
+      failHeader(vertex->headerLine,
+        std::string("property '") + axis + "' of the vertex element is a list; it must be a scalar");
     }
   }
   Element* face = findElement(header, "face");
@@ -560,8 +554,8 @@ MeshFileData parsePLY(std::string_view bytes)
     const std::uint64_t rowBytes = smallestRow(element, reader.ascii());
     if (element.count > 0 && element.properties.empty())
     {
-      failHeader(element.headerLine, "element " + quoted(element.name) + " has " +
-          std::to_string(element.count) + " rows but no properties");
+      failHeader(element.headerLine,
+        "element " + quoted(element.name) + " has " + std::to_string(element.count) + " rows but no properties");
     }
     // Binary rows have a known smallest size, checked up front; ASCII rows are read until the
     // text runs out, which names the row and line. Either way allocations follow the file's size.
@@ -569,8 +563,8 @@ MeshFileData parsePLY(std::string_view bytes)
       rowBytes == 0 ? element.count : (reader.remaining() + (reader.ascii() ? 1 : 0)) / rowBytes;
     if (!reader.ascii() && element.count > possibleRows)
     {
-      throw Error("PLY: the file ends inside the " + element.name + " element: " +
-        std::to_string(element.count) + " rows need at least " +
+      throw Error("PLY: the file ends inside the " + element.name + " element: " + std::to_string(element.count) +
+        " rows need at least " +
         (rowBytes > 0 && element.count > UINT64_MAX / rowBytes ? std::string("2^64")
                                                                : std::to_string(element.count * rowBytes)) +
         " bytes, " + std::to_string(reader.remaining()) + " remain");
@@ -638,8 +632,8 @@ MeshFileData parsePLY(std::string_view bytes)
           {
             if (index < 0 || index >= static_cast<double>(vertexCount))
             {
-              reader.fail("uses vertex " + std::to_string(static_cast<long long>(index)) +
-                ", but the file has " + std::to_string(vertexCount) + " vertices");
+              reader.fail("uses vertex " + std::to_string(static_cast<long long>(index)) + ", but the file has " +
+                std::to_string(vertexCount) + " vertices");
             }
             mesh.polygons.indices.push_back(static_cast<std::int64_t>(index));
           }

@@ -23,8 +23,7 @@ struct CornerKey
   std::uint32_t bits[3];
   bool operator==(const CornerKey& other) const
   {
-    return this->bits[0] == other.bits[0] && this->bits[1] == other.bits[1] &&
-      this->bits[2] == other.bits[2];
+    return this->bits[0] == other.bits[0] && this->bits[1] == other.bits[1] && this->bits[2] == other.bits[2];
   }
 };
 
@@ -71,8 +70,7 @@ public:
       const auto inserted = this->Ids.emplace(key, static_cast<std::int64_t>(this->Mesh.pointCount()));
       if (inserted.second)
       {
-        this->Mesh.points.insert(this->Mesh.points.end(),
-          { corners[3 * c], corners[3 * c + 1], corners[3 * c + 2] });
+        this->Mesh.points.insert(this->Mesh.points.end(), { corners[3 * c], corners[3 * c + 1], corners[3 * c + 2] });
       }
       ids[c] = inserted.first->second;
     }
@@ -160,8 +158,7 @@ MeshFileData parseBinary(std::string_view bytes, bool textual)
   {
     throw Error("STL byte 80: " + std::string(textual ? "the file does not start with 'solid', and " : "") +
       "the binary header declares " + std::to_string(declared) + " triangles, but the file's " +
-      std::to_string(bytes.size()) + " bytes hold " + std::to_string(whole) +
-      " (84 + 50 bytes per triangle)");
+      std::to_string(bytes.size()) + " bytes hold " + std::to_string(whole) + " (84 + 50 bytes per triangle)");
   }
   const bool exactFit = (bytes.size() - headerBytes) % facetBytes == 0;
   const std::uint64_t facets = declared < whole && exactFit ? whole : declared;

@@ -97,10 +97,7 @@ private:
     }
   }
 
-  bool startsWith(std::string_view prefix) const
-  {
-    return this->Bytes.substr(this->Position, prefix.size()) == prefix;
-  }
+  bool startsWith(std::string_view prefix) const { return this->Bytes.substr(this->Position, prefix.size()) == prefix; }
 
   void skipPast(std::string_view terminator, const char* what)
   {
@@ -140,8 +137,7 @@ private:
 
   static bool isNameCharacter(char c)
   {
-    return !LineCursor::isSpace(c) && c != '=' && c != '>' && c != '/' && c != '<' && c != '"' &&
-      c != '\'';
+    return !LineCursor::isSpace(c) && c != '=' && c != '>' && c != '/' && c != '<' && c != '"' && c != '\'';
   }
 
   std::string name()
@@ -189,8 +185,10 @@ private:
         long long code = 0;
         const bool hex = entity[1] == 'x';
         const std::string_view digits = entity.substr(hex ? 2 : 1);
-        if (digits.empty() || std::from_chars(digits.data(), digits.data() + digits.size(), code, hex ? 16 : 10).ptr !=
-            digits.data() + digits.size() || code <= 0 || code > 127 || code == '<' || code == '>')
+        if (digits.empty() ||
+          std::from_chars(digits.data(), digits.data() + digits.size(), code, hex ? 16 : 10).ptr !=
+            digits.data() + digits.size() ||
+          code <= 0 || code > 127 || code == '<' || code == '>')
         {
           failAt(at + i, "an unsupported character reference in an attribute value");
         }
@@ -236,7 +234,8 @@ private:
       ++this->Position;
       this->skipSpace();
       const char quote = this->Position < this->Bytes.size() ? this->Bytes[this->Position] : '\0';
-      const std::size_t end = quote == '"' || quote == '\'' ? this->Bytes.find(quote, this->Position + 1) : std::string_view::npos;
+      const std::size_t end =
+        quote == '"' || quote == '\'' ? this->Bytes.find(quote, this->Position + 1) : std::string_view::npos;
       if (end == std::string_view::npos)
       {
         failAt(this->Position, "attribute " + quoted(key) + " has no quoted value");
@@ -245,8 +244,8 @@ private:
       {
         failAt(this->Position, "attribute " + quoted(key) + " appears twice");
       }
-      node.attributes.emplace_back(key,
-        this->value(this->Bytes.substr(this->Position + 1, end - this->Position - 1), this->Position + 1));
+      node.attributes.emplace_back(
+        key, this->value(this->Bytes.substr(this->Position + 1, end - this->Position - 1), this->Position + 1));
       this->Position = end + 1;
     }
     if (this->Bytes[this->Position] == '/')
@@ -428,8 +427,8 @@ void informationKey(const XMLNode& key)
   }
   if (length > values)
   {
-    failAt(key.offset, "an information key declares " + std::to_string(length) + " values but holds " +
-      std::to_string(values));
+    failAt(key.offset,
+      "an information key declares " + std::to_string(length) + " values but holds " + std::to_string(values));
   }
 }
 
@@ -448,8 +447,8 @@ std::uint64_t plainCount(const XMLNode& node, const char* key, bool required, st
   const char* end = text->data() + text->size();
   if (text->empty() || std::from_chars(text->data(), end, value).ptr != end || value > largest)
   {
-    failAt(node.offset, std::string(key) + "=" + quoted(*text) + " is not a count from 0 to " +
-      std::to_string(largest));
+    failAt(
+      node.offset, std::string(key) + "=" + quoted(*text) + " is not a count from 0 to " + std::to_string(largest));
   }
   return value;
 }
@@ -565,8 +564,8 @@ private:
           const std::uint64_t components = this->array(child.children[i], tuples, child.name.c_str()).components;
           if (child.name == "Points" && i == 0 && points > 0 && components != 3)
           {
-            failAt(child.children[i].offset, "the points array has " + std::to_string(components) +
-              " components, not 3");
+            failAt(
+              child.children[i].offset, "the points array has " + std::to_string(components) + " components, not 3");
           }
         }
       }
@@ -634,8 +633,8 @@ private:
     const WordType type = typeName ? wordType(*typeName) : WordType{};
     if (type.size == 0)
     {
-      failAt(node.offset, std::string("an array in ") + where + " has an unsupported type " +
-        quoted(typeName ? *typeName : "(none)"));
+      failAt(node.offset,
+        std::string("an array in ") + where + " has an unsupported type " + quoted(typeName ? *typeName : "(none)"));
     }
     for (const XMLNode& child : node.children)
     {
@@ -646,9 +645,8 @@ private:
     }
     ArrayFacts facts;
     facts.integer = type.isInteger;
-    facts.components = node.attribute("NumberOfComponents")
-      ? plainCount(node, "NumberOfComponents", true, LargestComponents)
-      : 1;
+    facts.components =
+      node.attribute("NumberOfComponents") ? plainCount(node, "NumberOfComponents", true, LargestComponents) : 1;
     if (facts.components == 0)
     {
       failAt(node.offset, "NumberOfComponents=\"0\"");
@@ -657,9 +655,10 @@ private:
     const std::uint64_t bytes = values * static_cast<std::uint64_t>(type.size);
     const std::string arrayName = node.attribute("Name") ? *node.attribute("Name") : "(unnamed)";
     auto tooShort = [&](std::uint64_t available, const char* unit) {
-      failAt(node.offset, "array " + quoted(arrayName) + " in " + where + " needs " +
-        std::to_string(values) + " values (" + std::to_string(tuples) + " tuples of " +
-        std::to_string(facts.components) + "), but its data holds " + std::to_string(available) + " " + unit);
+      failAt(node.offset,
+        "array " + quoted(arrayName) + " in " + where + " needs " + std::to_string(values) + " values (" +
+          std::to_string(tuples) + " tuples of " + std::to_string(facts.components) + "), but its data holds " +
+          std::to_string(available) + " " + unit);
     };
     const std::string* format = node.attribute("format");
     if (!node.attribute("offset") && !(format && *format == "binary"))
@@ -708,8 +707,8 @@ private:
       const std::uint64_t size = this->Bytes.size() - this->AppendedStart;
       if (offset >= size)
       {
-        failAt(node.offset, "appended-data offset " + std::to_string(offset) + " lies past its end (" +
-          std::to_string(size) + " bytes)");
+        failAt(node.offset,
+          "appended-data offset " + std::to_string(offset) + " lies past its end (" + std::to_string(size) + " bytes)");
       }
       source = this->Bytes.substr(this->AppendedStart + static_cast<std::size_t>(offset));
       base64 = this->AppendedBase64;
@@ -724,8 +723,8 @@ private:
       source = this->Bytes.substr(start, node.contentEnd - start);
     }
     const auto word = [this](const std::string& header, std::size_t index) {
-      return decodeUnsigned(bytesOf(header, index * static_cast<std::size_t>(this->HeaderWord)),
-        this->HeaderWord, this->BigEndian);
+      return decodeUnsigned(
+        bytesOf(header, index * static_cast<std::size_t>(this->HeaderWord)), this->HeaderWord, this->BigEndian);
     };
     const std::uint64_t headerWord = static_cast<std::uint64_t>(this->HeaderWord);
     const std::uint64_t sourceBytes = base64 ? base64Length(source) : source.size();
@@ -737,7 +736,8 @@ private:
       {
         failAt(node.offset, "array " + quoted(arrayName) + " lacks its binary header");
       }
-      const std::string header = base64 ? decodeBase64(source, headerWord) : std::string(source.substr(0, this->HeaderWord));
+      const std::string header =
+        base64 ? decodeBase64(source, headerWord) : std::string(source.substr(0, this->HeaderWord));
       const std::uint64_t declared = word(header, 0);
       const std::uint64_t available = std::min(declared, sourceBytes - headerWord);
       if (available / static_cast<std::uint64_t>(type.size) < values)
@@ -746,8 +746,9 @@ private:
       }
       if (wantLast && values > 0)
       {
-        const std::string decoded = base64 ? decodeBase64(source, headerWord + bytes)
-                                           : std::string(source.substr(0, static_cast<std::size_t>(headerWord + bytes)));
+        const std::string decoded = base64
+          ? decodeBase64(source, headerWord + bytes)
+          : std::string(source.substr(0, static_cast<std::size_t>(headerWord + bytes)));
         lastValue = decoded.substr(decoded.size() - static_cast<std::size_t>(type.size));
       }
     }
@@ -758,25 +759,29 @@ private:
       {
         failAt(node.offset, "array " + quoted(arrayName) + " lacks its compression header");
       }
-      const std::string start = base64 ? decodeBase64(source, 3 * headerWord) : std::string(source.substr(0, 3 * this->HeaderWord));
+      const std::string start =
+        base64 ? decodeBase64(source, 3 * headerWord) : std::string(source.substr(0, 3 * this->HeaderWord));
       const std::uint64_t blocks = word(start, 0);
       const std::uint64_t blockSize = word(start, 1);
       const std::uint64_t lastSize = word(start, 2);
       if (!fitsIn(blocks, headerWord, sourceBytes - 3 * headerWord))
       {
-        failAt(node.offset, "array " + quoted(arrayName) + " declares " + std::to_string(blocks) +
-          " compressed blocks, more than its data can list");
+        failAt(node.offset,
+          "array " + quoted(arrayName) + " declares " + std::to_string(blocks) +
+            " compressed blocks, more than its data can list");
       }
       if (blocks > 0 && (blockSize == 0 || blockSize > LargestBlock || lastSize > blockSize))
       {
-        failAt(node.offset, "array " + quoted(arrayName) + " has an inconsistent compression header (block size " +
-          std::to_string(blockSize) + ", last block " + std::to_string(lastSize) + ")");
+        failAt(node.offset,
+          "array " + quoted(arrayName) + " has an inconsistent compression header (block size " +
+            std::to_string(blockSize) + ", last block " + std::to_string(lastSize) + ")");
       }
       const std::uint64_t headerBytes = (3 + blocks) * headerWord;
-      const std::string header = base64 ? decodeBase64(source, headerBytes) : std::string(source.substr(0, static_cast<std::size_t>(headerBytes)));
-      const std::string_view blockSource =
-        base64 ? source.substr(static_cast<std::size_t>(std::min<std::uint64_t>(source.size(), (headerBytes + 2) / 3 * 4)))
-               : source.substr(static_cast<std::size_t>(headerBytes));
+      const std::string header = base64 ? decodeBase64(source, headerBytes)
+                                        : std::string(source.substr(0, static_cast<std::size_t>(headerBytes)));
+      const std::string_view blockSource = base64
+        ? source.substr(static_cast<std::size_t>(std::min<std::uint64_t>(source.size(), (headerBytes + 2) / 3 * 4)))
+        : source.substr(static_cast<std::size_t>(headerBytes));
       const std::uint64_t blockBytes = base64 ? base64Length(blockSource) : blockSource.size();
       std::uint64_t compressedTotal = 0;
       const std::uint64_t ratio = this->Compressor == "vtkLZMADataCompressor" ? (1u << 16) : 1032;
@@ -786,9 +791,9 @@ private:
         const std::uint64_t size = b + 1 == blocks && lastSize != 0 ? lastSize : blockSize;
         if (compressed > blockBytes - compressedTotal || size / ratio > compressed + 64)
         {
-          failAt(node.offset, "compressed block " + std::to_string(b) + " of array " + quoted(arrayName) +
-            " claims " + std::to_string(compressed) + " bytes for " + std::to_string(size) +
-            ", which the data cannot hold");
+          failAt(node.offset,
+            "compressed block " + std::to_string(b) + " of array " + quoted(arrayName) + " claims " +
+              std::to_string(compressed) + " bytes for " + std::to_string(size) + ", which the data cannot hold");
         }
         compressedTotal += compressed;
       }
@@ -808,14 +813,16 @@ private:
           skip += word(header, static_cast<std::size_t>(3 + k));
         }
         const std::uint64_t compressed = word(header, static_cast<std::size_t>(3 + b));
-        const std::string packed = base64 ? decodeBase64(blockSource, skip + compressed).substr(static_cast<std::size_t>(skip))
-                                          : std::string(blockSource.substr(static_cast<std::size_t>(skip), static_cast<std::size_t>(compressed)));
+        const std::string packed = base64
+          ? decodeBase64(blockSource, skip + compressed).substr(static_cast<std::size_t>(skip))
+          : std::string(blockSource.substr(static_cast<std::size_t>(skip), static_cast<std::size_t>(compressed)));
         const std::uint64_t size = b + 1 == blocks && lastSize != 0 ? lastSize : blockSize;
         std::string block;
         if (!this->Decompress(this->Compressor, packed, static_cast<std::size_t>(size), block) || block.size() != size)
         {
-          failAt(node.offset, "compressed block " + std::to_string(b) + " of array " + quoted(arrayName) +
-            " does not decompress to " + std::to_string(size) + " bytes");
+          failAt(node.offset,
+            "compressed block " + std::to_string(b) + " of array " + quoted(arrayName) + " does not decompress to " +
+              std::to_string(size) + " bytes");
         }
         lastValue = block.substr(static_cast<std::size_t>(at - b * blockSize), static_cast<std::size_t>(type.size));
       }

@@ -13,8 +13,8 @@ namespace kerf
 /// vtkLZ4DataCompressor or vtkLZMADataCompressor) into exactly `uncompressedSize` bytes; returns
 /// false if the block does not decompress to that size. Supplied by the caller, so that the Core
 /// stays free of compression libraries.
-using XMLBlockDecompressor = std::function<bool(const std::string& compressorName,
-  std::string_view compressed, std::size_t uncompressedSize, std::string& uncompressed)>;
+using XMLBlockDecompressor = std::function<bool(const std::string& compressorName, std::string_view compressed,
+  std::size_t uncompressedSize, std::string& uncompressed)>;
 
 /// Checks a .vtp file the way VTK 9.2's vtkXMLPolyDataReader will read it, and throws
 /// kerf::Error (naming the byte offset and the element) at the first thing that reader could not

@@ -105,7 +105,8 @@ void note(std::vector<T>& examples, const T& value)
 }
 
 // "points 3, 9" or "cells 7, 12, ..." (the ellipsis when there are more than the examples).
-std::string places(const char* what, const std::vector<int>& ids, int count, const std::vector<long long>* names = nullptr)
+std::string places(
+  const char* what, const std::vector<int>& ids, int count, const std::vector<long long>* names = nullptr)
 {
   if (ids.empty())
   {
@@ -278,10 +279,9 @@ std::string MeshReport::summary() const
       << (boundaryLoops == 1 ? " boundary loop" : " boundary loops") << ", Euler characteristic "
       << eulerCharacteristic;
   std::ostringstream defects;
-  add(defects, nonFinitePoints, "point with NaN or infinite coordinates",
-    "points with NaN or infinite coordinates", "");
-  add(defects, hugePoints, "point with a coordinate beyond +-1e50",
-    "points with coordinates beyond +-1e50", "");
+  add(
+    defects, nonFinitePoints, "point with NaN or infinite coordinates", "points with NaN or infinite coordinates", "");
+  add(defects, hugePoints, "point with a coordinate beyond +-1e50", "points with coordinates beyond +-1e50", "");
   add(defects, repeatedVertexFaces, "triangle repeating a vertex", "triangles repeating a vertex", "");
   add(defects, zeroAreaFaces, "zero-area triangle", "zero-area triangles", "");
   add(defects, duplicateFaces, "duplicate triangle", "duplicate triangles", "");
@@ -316,22 +316,20 @@ std::string describeProblems(
   {
     return "the mesh has no triangles";
   }
-  add(out, report.nonFinitePoints, "point has NaN or infinite coordinates",
-    "points have NaN or infinite coordinates", "", places("points", report.nonFinitePointIds, report.nonFinitePoints));
-  add(out, report.hugePoints, "point has a coordinate beyond +-1e50",
-    "points have coordinates beyond +-1e50", "rescale the mesh", places("points", report.hugePointIds, report.hugePoints));
+  add(out, report.nonFinitePoints, "point has NaN or infinite coordinates", "points have NaN or infinite coordinates",
+    "", places("points", report.nonFinitePointIds, report.nonFinitePoints));
+  add(out, report.hugePoints, "point has a coordinate beyond +-1e50", "points have coordinates beyond +-1e50",
+    "rescale the mesh", places("points", report.hugePointIds, report.hugePoints));
   if (report.nonFinitePoints == 0 && report.hugePoints == 0 && report.diagonal < 1.0 / CoordinateLimit)
   {
     if (out.tellp() > 0)
     {
       out << "; ";
     }
-    out << "the mesh's bounding-box diagonal " << report.diagonal
-        << " is below 1e-50 (rescale the mesh)";
+    out << "the mesh's bounding-box diagonal " << report.diagonal << " is below 1e-50 (rescale the mesh)";
   }
-  add(out, report.repeatedVertexFaces, "triangle uses the same point twice",
-    "triangles use the same point twice", "topologically degenerate",
-    places(faces, report.repeatedVertexFaceIds, report.repeatedVertexFaces, faceCells));
+  add(out, report.repeatedVertexFaces, "triangle uses the same point twice", "triangles use the same point twice",
+    "topologically degenerate", places(faces, report.repeatedVertexFaceIds, report.repeatedVertexFaces, faceCells));
   if (!requirements.allowZeroAreaFaces)
   {
     add(out, report.zeroAreaFaces, "triangle has zero area", "triangles have zero area",
@@ -339,8 +337,8 @@ std::string describeProblems(
   }
   if (!requirements.allowDuplicateFaces)
   {
-    add(out, report.duplicateFaces, "triangle duplicates another", "triangles duplicate others",
-      "same three points", places(faces, report.duplicateFaceIds, report.duplicateFaces, faceCells));
+    add(out, report.duplicateFaces, "triangle duplicates another", "triangles duplicate others", "same three points",
+      places(faces, report.duplicateFaceIds, report.duplicateFaces, faceCells));
   }
   if (requirements.manifold)
   {
@@ -366,8 +364,7 @@ std::string describeProblems(
     {
       out << "; ";
     }
-    out << "the mesh has " << report.components
-        << " connected components where one is required";
+    out << "the mesh has " << report.components << " connected components where one is required";
   }
   return out.str();
 }

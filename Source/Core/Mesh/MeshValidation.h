@@ -16,20 +16,20 @@ struct MeshReport
   int vertices = 0;
   int faces = 0;
   int edges = 0;
-  int nonFinitePoints = 0;       ///< points with a NaN or infinite coordinate (used or not)
-  int hugePoints = 0;            ///< finite points with a coordinate beyond +-CoordinateLimit
-  double diagonal = 0.0;         ///< bounding-box diagonal of the points used by triangles
-  int repeatedVertexFaces = 0;   ///< triangles that use one vertex twice
-  int zeroAreaFaces = 0;         ///< triangles with (numerically) zero area
-  int duplicateFaces = 0;        ///< triangles with the same three vertices as an earlier one
-  int nonManifoldEdges = 0;      ///< edges shared by three or more triangles
-  int nonManifoldVertices = 0;   ///< vertices whose triangles form more than one fan
-  int inconsistentEdges = 0;     ///< interior edges whose two triangles are oriented alike
-  int unreferencedVertices = 0;  ///< points used by no triangle
+  int nonFinitePoints = 0;      ///< points with a NaN or infinite coordinate (used or not)
+  int hugePoints = 0;           ///< finite points with a coordinate beyond +-CoordinateLimit
+  double diagonal = 0.0;        ///< bounding-box diagonal of the points used by triangles
+  int repeatedVertexFaces = 0;  ///< triangles that use one vertex twice
+  int zeroAreaFaces = 0;        ///< triangles with (numerically) zero area
+  int duplicateFaces = 0;       ///< triangles with the same three vertices as an earlier one
+  int nonManifoldEdges = 0;     ///< edges shared by three or more triangles
+  int nonManifoldVertices = 0;  ///< vertices whose triangles form more than one fan
+  int inconsistentEdges = 0;    ///< interior edges whose two triangles are oriented alike
+  int unreferencedVertices = 0; ///< points used by no triangle
   int boundaryEdges = 0;
   int boundaryLoops = 0;
   int components = 0;
-  int eulerCharacteristic = 0;   ///< V - E + F over referenced vertices
+  int eulerCharacteristic = 0; ///< V - E + F over referenced vertices
 
   /// The first few (up to ExampleLimit) of each defect, named in messages so a user can select
   /// them: point ids, triangle ids, and edges as their two point ids.
@@ -49,7 +49,7 @@ MeshReport inspectMesh(const TriangleMesh& mesh);
 /// coordinates within CoordinateLimit, no triangle repeating a vertex).
 struct MeshRequirements
 {
-  bool manifold = true;             ///< refuse non-manifold edges and vertices
+  bool manifold = true;              ///< refuse non-manifold edges and vertices
   bool consistentOrientation = true; ///< refuse inconsistently oriented neighbouring triangles
   bool allowZeroAreaFaces = true;
   bool allowDuplicateFaces = false;

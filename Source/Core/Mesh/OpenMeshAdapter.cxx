@@ -34,8 +34,7 @@ EditableMesh toEditableMesh(const TriangleMesh& mesh)
       {
         omerr().enable();
       }
-      throw Error("triangle " + std::to_string(f) +
-        " makes the mesh non-manifold or inconsistently oriented");
+      throw Error("triangle " + std::to_string(f) + " makes the mesh non-manifold or inconsistently oriented");
     }
   }
   if (wasEnabled)

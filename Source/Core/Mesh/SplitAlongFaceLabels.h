@@ -11,9 +11,9 @@ namespace kerf
 /// A mesh cut open along the borders between face labels.
 struct SplitMesh
 {
-  TriangleMesh mesh;                  ///< the cut mesh: no vertex is shared by faces of two labels
-  std::vector<int> originalPoint;     ///< per vertex of `mesh`: the vertex of the input it copies
-  std::vector<int> faceLabel;         ///< per face of `mesh` (faces keep the input's order)
+  TriangleMesh mesh;              ///< the cut mesh: no vertex is shared by faces of two labels
+  std::vector<int> originalPoint; ///< per vertex of `mesh`: the vertex of the input it copies
+  std::vector<int> faceLabel;     ///< per face of `mesh` (faces keep the input's order)
 };
 
 /// What splitAlongFaceLabels does where faces of one label meet at a vertex without sharing an

@@ -159,8 +159,8 @@ TriangleMesh TriangleMesh::withPoints(std::vector<Vector3> points) const
 {
   if (points.size() != this->Points.size())
   {
-    throw Error("the mesh has " + std::to_string(this->Points.size()) + " points, not " +
-      std::to_string(points.size()));
+    throw Error(
+      "the mesh has " + std::to_string(this->Points.size()) + " points, not " + std::to_string(points.size()));
   }
   TriangleMesh moved(*this);
   moved.Points = std::move(points);
@@ -212,8 +212,7 @@ void TriangleMesh::buildVertexFaces()
       ++this->VertexFaceOffsets[t[2] + 1];
     }
   }
-  std::partial_sum(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end(),
-    this->VertexFaceOffsets.begin());
+  std::partial_sum(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end(), this->VertexFaceOffsets.begin());
   this->VertexFaceList.resize(this->VertexFaceOffsets[n]);
   std::vector<int> fill(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end() - 1);
   for (int f = 0; f < this->faceCount(); ++f)
@@ -543,8 +542,7 @@ void TriangleMesh::buildVertexEdges()
     ++this->VertexEdgeOffsets[ev[0] + 1];
     ++this->VertexEdgeOffsets[ev[1] + 1];
   }
-  std::partial_sum(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end(),
-    this->VertexEdgeOffsets.begin());
+  std::partial_sum(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end(), this->VertexEdgeOffsets.begin());
   this->VertexEdgeList.resize(this->VertexEdgeOffsets[n]);
   this->VertexNeighborList.resize(this->VertexEdgeOffsets[n]);
   std::vector<int> fill(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end() - 1);

@@ -17,8 +17,8 @@ double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::V
   return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
 }
 
-bool insideTriangle(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
-  const Eigen::Vector2d& c)
+bool insideTriangle(
+  const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
 {
   return cross2(a, b, p) >= 0.0 && cross2(b, c, p) >= 0.0 && cross2(c, a, p) >= 0.0;
 }
@@ -39,8 +39,8 @@ void earClip(const PolygonMesh& mesh, std::vector<int> corners, int polygon, Tri
   {
     const Vector3& a = mesh.points[corners[k]];
     const Vector3& b = mesh.points[corners[(k + 1) % corners.size()]];
-    normal += Vector3((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()),
-      (a.x() - b.x()) * (a.y() + b.y()));
+    normal +=
+      Vector3((a.y() - b.y()) * (a.z() + b.z()), (a.z() - b.z()) * (a.x() + b.x()), (a.x() - b.x()) * (a.y() + b.y()));
   }
   if (!(normal.norm() > 0.0) || !normal.allFinite())
   {
@@ -141,8 +141,7 @@ Triangulation triangulatePolygons(const PolygonMesh& mesh)
     {
       continue; // not a surface element
     }
-    std::vector<int> corners(mesh.polygonIndices.begin() + first,
-      mesh.polygonIndices.begin() + first + size);
+    std::vector<int> corners(mesh.polygonIndices.begin() + first, mesh.polygonIndices.begin() + first + size);
     earClip(mesh, std::move(corners), f, out);
   }
   return out;

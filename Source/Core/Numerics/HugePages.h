@@ -70,5 +70,4 @@ struct HugePageAllocator
 template <class T>
 using HugePageVector = std::vector<T, HugePageAllocator<T>>;
 
-
 } // namespace kerf

@@ -143,7 +143,8 @@ void IntrinsicTriangulation::flip(int h)
   const int hBC = 3 * A + (kA + 1) % 3, hCA = 3 * A + (kA + 2) % 3;
   const int hAD = 3 * B + (kB + 1) % 3, hDB = 3 * B + (kB + 2) % 3;
   // Old halfedge -> new halfedge for the four outer edges: A becomes (c, a, d), B becomes (d, b, c).
-  const std::pair<int, int> moves[4] = { { hCA, 3 * A + 0 }, { hAD, 3 * A + 1 }, { hDB, 3 * B + 0 }, { hBC, 3 * B + 1 } };
+  const std::pair<int, int> moves[4] = { { hCA, 3 * A + 0 }, { hAD, 3 * A + 1 }, { hDB, 3 * B + 0 },
+    { hBC, 3 * B + 1 } };
   int outerTwins[4];
   for (int i = 0; i < 4; ++i)
   {

@@ -3,8 +3,8 @@
 
 #include "CacheKey.h"
 #include "Error.h"
-#include "Numerics/IntrinsicTriangulation.h"
 #include "Mesh/MeshValidation.h"
+#include "Numerics/IntrinsicTriangulation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,7 +113,8 @@ std::vector<double> concavityWeights(
     }
   }
   const double diagonal = mesh.boundingBoxDiagonal();
-  const double scale = std::max(used > 0 ? totalCurvature / used : 0.0, diagonal > 0.0 ? 1.0 / (diagonal * diagonal) : 1.0);
+  const double scale =
+    std::max(used > 0 ? totalCurvature / used : 0.0, diagonal > 0.0 ? 1.0 / (diagonal * diagonal) : 1.0);
   const double epsilon = options.curvatureRegularization * scale;
 
   // ROI Scissor's H_max over the concave mean curvature (positive where concave).
@@ -282,7 +283,8 @@ LaplacianWeighting parseLaplacianWeighting(const std::string& name)
       return entry.first;
     }
   }
-  throw Error("weighting must be uniform, cotangent, concavity, smooth-concavity or intrinsic-delaunay, got '" + name + "'");
+  throw Error(
+    "weighting must be uniform, cotangent, concavity, smooth-concavity or intrinsic-delaunay, got '" + name + "'");
 }
 
 std::string cacheKey(const LaplacianWeightOptions& options)
@@ -290,8 +292,8 @@ std::string cacheKey(const LaplacianWeightOptions& options)
   std::string key = laplacianWeightingName(options.weighting);
   if (needsDescriptors(options.weighting))
   {
-    key += " beta=" + cacheKey(options.concaveBeta) + " regularization=" +
-      cacheKey(options.curvatureRegularization) + " quantile=" + cacheKey(options.concavityQuantile);
+    key += " beta=" + cacheKey(options.concaveBeta) + " regularization=" + cacheKey(options.curvatureRegularization) +
+      " quantile=" + cacheKey(options.concavityQuantile);
   }
   return key;
 }

@@ -84,8 +84,8 @@ std::vector<double> cornerCotangents(const TriangleMesh& mesh);
 /// SmoothConcavity is measured positive on concave edges, i.e. minus Kerf's mean curvature.
 /// IntrinsicDelaunay throws kerf::Error when the intrinsic Delaunay triangulation joins vertices
 /// that no mesh edge joins (solve on intrinsicDelaunayLaplacian(mesh).mesh instead).
-std::vector<double> computeLaplacianWeights(const TriangleMesh& mesh,
-  const LaplacianWeightOptions& options, const SurfaceDescriptors* descriptors = nullptr);
+std::vector<double> computeLaplacianWeights(
+  const TriangleMesh& mesh, const LaplacianWeightOptions& options, const SurfaceDescriptors* descriptors = nullptr);
 
 /// The mean diagonal entry of the Laplacian over the vertices used by triangles (1 if none): the
 /// scale soft-constraint weights are given relative to.

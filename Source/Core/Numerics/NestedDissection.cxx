@@ -67,7 +67,7 @@ std::vector<int> geometricNestedDissection(
     ids[v] = v;
   }
   std::vector<int> perm(static_cast<std::size_t>(n));
-  std::vector<int> partOf(static_cast<std::size_t>(n), -1); // the stamp of the part being split
+  std::vector<int> partOf(static_cast<std::size_t>(n), -1);           // the stamp of the part being split
   std::vector<unsigned char> lower(static_cast<std::size_t>(n), 0);   // bit a: in axis a's first half
   std::vector<unsigned char> touches(static_cast<std::size_t>(n), 0); // bit a: a neighbour across axis a's median
   std::vector<std::pair<double, int>> keys(static_cast<std::size_t>(n));

@@ -99,7 +99,8 @@ KERF_INLINE void storeChunk(double* p, const Chunk& v)
 // Y_i -= sum_{t < depth} L(i, t) y[t] for rows [begin, end) of a block whose columns start at
 // `block` (leading dimension ld), on one chunk of columns; row i's values start at target(i).
 template <int Depth, typename Target>
-KERF_INLINE void subtractBlock(const double* block, std::size_t ld, int depth, const Chunk* y, int begin, int end, Target target)
+KERF_INLINE void subtractBlock(
+  const double* block, std::size_t ld, int depth, const Chunk* y, int begin, int end, Target target)
 {
   for (int i = begin; i < end; ++i)
   {
@@ -120,8 +121,8 @@ KERF_INLINE void subtractBlock(const double* block, std::size_t ld, int depth, c
 // TileRows: each block's solved rows stay in registers while its columns of L stream by in
 // memory order, and every row below subtracts one block's sum at a time.
 KERF_VECTOR_CLONES
-void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys, double* const* targets,
-  int width, const int* chunks, int chunkCount)
+void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys, double* const* targets, int width,
+  const int* chunks, int chunkCount)
 {
   const std::size_t stride = static_cast<std::size_t>(ld);
   for (int t0 = 0; t0 < columns; t0 += TileRows)
@@ -160,7 +161,6 @@ void forwardSupernode(const double* L, int ld, int columns, int rows, double* Ys
   }
 }
 
-
 // Resets workspace entries to -1 when it goes out of scope, exceptions included.
 class Marks
 {
@@ -197,11 +197,11 @@ using ColumnKey = std::vector<std::pair<int, double>>; // a column's entries
 /// whole chunk on.
 struct ColumnPlan
 {
-  std::vector<ColumnKey> keys; // the distinct columns
-  std::vector<int> distinct;   // U's column -> its distinct column
+  std::vector<ColumnKey> keys;  // the distinct columns
+  std::vector<int> distinct;    // U's column -> its distinct column
   std::vector<int> kept, fresh; // distinct columns computed before / not
-  std::vector<int> source;     // each kept column's distinct column in the last call
-  std::vector<int> slot;       // distinct column -> its column in the sweep's rows
+  std::vector<int> source;      // each kept column's distinct column in the last call
+  std::vector<int> slot;        // distinct column -> its column in the sweep's rows
   int freshBase = 0;
   int width = 0; // values per row in the sweep (a multiple of ColumnChunk)
 };
@@ -342,8 +342,8 @@ struct SparseCholesky::Implementation
   static ColumnPlan planColumns(const Eigen::SparseMatrix<double>& U, const LowRankFactor* previous);
   void reachOfColumns(const ColumnPlan& plan, LowRankFactor& out) const;
   void blocksOfColumns(const ColumnPlan& plan, LowRankFactor& out) const;
-  void copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous, const LowRankFactor& out,
-    std::vector<double>& work) const;
+  void copyKeptColumns(
+    const ColumnPlan& plan, const LowRankFactor* previous, const LowRankFactor& out, std::vector<double>& work) const;
   void scatterFreshColumns(const ColumnPlan& plan, std::vector<double>& work) const;
   void sweepFreshColumns(const ColumnPlan& plan, const LowRankFactor& out, std::vector<double>& work) const;
   void solveFreshColumnsOneByOne(const ColumnPlan& plan, std::vector<double>& work) const;
@@ -410,7 +410,8 @@ std::vector<int> SparseCholesky::permutation() const
   return std::vector<int>(perm, perm + m.factor->n);
 }
 
-bool SparseCholesky::factorOrdered(const Eigen::SparseMatrix<double>& A, Ordering ordering, const std::vector<int>* given)
+bool SparseCholesky::factorOrdered(
+  const Eigen::SparseMatrix<double>& A, Ordering ordering, const std::vector<int>* given)
 {
   Implementation& m = *this->Impl;
   m.freeFactors();
@@ -438,8 +439,7 @@ bool SparseCholesky::factorOrdered(const Eigen::SparseMatrix<double>& A, Orderin
     const SerialOpenMP serial;
     factored = factorizeSupernodal(&s, m.factor, &m.common, m.route);
   }
-  if (!factored || m.common.status != CHOLMOD_OK ||
-    m.factor->minor < m.factor->n || !m.factor->is_super)
+  if (!factored || m.common.status != CHOLMOD_OK || m.factor->minor < m.factor->n || !m.factor->is_super)
   {
     cholmod_free_factor(&m.factor, &m.common);
     return false;
@@ -535,9 +535,8 @@ ColumnPlan SparseCholesky::Implementation::planColumns(
   }
   for (int d = 0; d < static_cast<int>(plan.keys.size()); ++d)
   {
-    const auto found = previous
-      ? std::lower_bound(previous->keys.begin(), previous->keys.end(), plan.keys[d])
-      : std::vector<ColumnKey>::const_iterator();
+    const auto found = previous ? std::lower_bound(previous->keys.begin(), previous->keys.end(), plan.keys[d])
+                                : std::vector<ColumnKey>::const_iterator();
     if (previous && found != previous->keys.end() && *found == plan.keys[d])
     {
       plan.kept.push_back(d);
@@ -648,8 +647,8 @@ void SparseCholesky::Implementation::blocksOfColumns(const ColumnPlan& plan, Low
   }
 }
 
-void SparseCholesky::Implementation::copyKeptColumns(const ColumnPlan& plan, const LowRankFactor* previous,
-  const LowRankFactor& out, std::vector<double>& work) const
+void SparseCholesky::Implementation::copyKeptColumns(
+  const ColumnPlan& plan, const LowRankFactor* previous, const LowRankFactor& out, std::vector<double>& work) const
 {
   // The sweep's rows: the kept columns from the last Y where a row is in its reach, else zero.
   const std::size_t width = static_cast<std::size_t>(plan.width);
@@ -733,7 +732,8 @@ void SparseCholesky::Implementation::sweepFreshColumns(
     targets.resize(static_cast<std::size_t>(rows - columns));
     for (int i = columns; i < rows; ++i)
     {
-      targets[i - columns] = work.data() + static_cast<std::size_t>(this->position(this->rows()[this->pi()[node] + i])) * width;
+      targets[i - columns] =
+        work.data() + static_cast<std::size_t>(this->position(this->rows()[this->pi()[node] + i])) * width;
     }
     forwardSupernode(this->values() + this->px()[node], rows, columns, rows, ys, targets.data(), plan.width,
       chunks.data(), static_cast<int>(chunks.size()));
@@ -745,8 +745,7 @@ cholmod_factor* SparseCholesky::Implementation::simplicialFactor() const
   if (!this->simplicial)
   {
     this->simplicial = cholmod_copy_factor(this->factor, this->mutableCommon());
-    if (!this->simplicial ||
-      !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 0, this->simplicial, this->mutableCommon()))
+    if (!this->simplicial || !cholmod_change_factor(CHOLMOD_REAL, 1, 0, 0, 0, this->simplicial, this->mutableCommon()))
     {
       throw Error("the factor could not be converted to simplicial form");
     }
@@ -774,8 +773,8 @@ void SparseCholesky::Implementation::solveFreshColumnsOneByOne(const ColumnPlan&
     }
     cholmod_sparse set = cholmodPattern(n, setRows, setPointers);
     cholmod_dense b = cholmodView(rhs.data(), n);
-    if (!cholmod_solve2(CHOLMOD_L, simplicial, &b, &set, &this->solveX, &this->solveXset, &this->solveY,
-          &this->solveE, this->mutableCommon()))
+    if (!cholmod_solve2(CHOLMOD_L, simplicial, &b, &set, &this->solveX, &this->solveXset, &this->solveY, &this->solveE,
+          this->mutableCommon()))
     {
       throw Error("the sparse solve failed");
     }
@@ -997,9 +996,7 @@ std::string SparseCholesky::backend()
   return "Eigen SimplicialLDLT";
 }
 
-void SparseCholesky::setSupernodalRoute(SupernodalRoute)
-{
-}
+void SparseCholesky::setSupernodalRoute(SupernodalRoute) {}
 
 std::size_t SparseCholesky::factorNonZeros() const
 {

@@ -76,9 +76,9 @@ public:
   struct LowRankFactor;
   struct LowRank
   {
-    Eigen::MatrixXd gram; ///< U^T A^-1 U (k x k)
+    Eigen::MatrixXd gram;                        ///< U^T A^-1 U (k x k)
     std::shared_ptr<const LowRankFactor> factor; ///< what apply() reads
-    std::size_t reachRows = 0; ///< rows of L^-1 P U that can be nonzero
+    std::size_t reachRows = 0;                   ///< rows of L^-1 P U that can be nonzero
     /// Multiply-adds that formed the Gram matrix: the rows of each supernode of the reach times
     /// the products of the columns that can be nonzero there (about m(m+1)/2 for m columns),
     /// where the dense product would take reachRows k(k+1)/2 for U's k distinct columns.

@@ -90,8 +90,8 @@ bool cholmodAllocatorInstalled();
 /// invalid input; on Kerf's route also an A with an entry outside the analysed pattern, which
 /// cholmod_factorize does not check: common->status is then CHOLMOD_INVALID). Deterministic: one
 /// route on one machine gives the same bits every time.
-bool factorizeSupernodal(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common,
-  SupernodalRoute route = SupernodalRoute::Automatic);
+bool factorizeSupernodal(
+  cholmod_sparse* A, cholmod_factor* L, cholmod_common* common, SupernodalRoute route = SupernodalRoute::Automatic);
 #endif
 
 } // namespace kerf

@@ -192,8 +192,8 @@ extern "C" __attribute__((visibility("default"))) int KERF_SUPERNODAL_ENTRY(cons
   if (problem->complex)
   {
     using Complex = std::complex<double>;
-    return factorize<Complex>(*problem, reinterpret_cast<const Complex*>(problem->ax),
-      reinterpret_cast<Complex*>(problem->values));
+    return factorize<Complex>(
+      *problem, reinterpret_cast<const Complex*>(problem->ax), reinterpret_cast<Complex*>(problem->values));
   }
   return factorize<double>(*problem, problem->ax, problem->values);
 }

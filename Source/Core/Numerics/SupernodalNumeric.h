@@ -26,7 +26,8 @@ struct SupernodalProblem
   const int* ap = nullptr;
   const int* ai = nullptr;
   const double* ax = nullptr;
-  double* values = nullptr; ///< px[supernodes] values (doubles, or pairs when complex): each supernode a column-major rows x columns block
+  double* values = nullptr; ///< px[supernodes] values (doubles, or pairs when complex): each supernode a column-major
+                            ///< rows x columns block
 };
 
 } // namespace kerf

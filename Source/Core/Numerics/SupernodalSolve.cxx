@@ -202,7 +202,8 @@ void forwardBlockComplex(const double* __restrict L, int nsr, int nsc, double* _
 }
 
 // sum over the rows i in [from, nsr) of conj(c[i]) v[i], c and v interleaved complex.
-KERF_INLINE void conjugateDot(const double* __restrict c, const double* __restrict v, int from, int nsr, double& re, double& im)
+KERF_INLINE void conjugateDot(
+  const double* __restrict c, const double* __restrict v, int from, int nsr, double& re, double& im)
 {
   Lane p = {}, q = {};
   int i = 2 * from;

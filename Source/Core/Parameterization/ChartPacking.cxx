@@ -50,9 +50,8 @@ bool shelfPack(const std::vector<Vector2>& sizes, const std::vector<int>& order,
 
 std::vector<Vector2> convexHull(std::vector<Vector2> points)
 {
-  std::sort(points.begin(), points.end(), [](const Vector2& a, const Vector2& b) {
-    return a.y() < b.y() || (a.y() == b.y() && a.x() < b.x());
-  });
+  std::sort(points.begin(), points.end(),
+    [](const Vector2& a, const Vector2& b) { return a.y() < b.y() || (a.y() == b.y() && a.x() < b.x()); });
   points.erase(std::unique(points.begin(), points.end()), points.end());
   if (points.size() < 3)
   {

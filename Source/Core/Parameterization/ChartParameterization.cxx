@@ -1,13 +1,14 @@
-// parameterizeCharts: split, disk check, LSCM or LinABF, distortion, overlap count; the charts laid out by ChartPacking.
+// parameterizeCharts: split, disk check, LSCM or LinABF, distortion, overlap count; the charts laid out by
+// ChartPacking.
 #include "Parameterization/ChartParameterization.h"
 
 #include "Error.h"
+#include "Mesh/MeshValidation.h"
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/SerialOpenMP.h"
 #include "Numerics/SparseCholesky.h"
 #include "Numerics/SupernodalFactorization.h"
 #include "Numerics/SupernodalSolve.h"
-#include "Mesh/MeshValidation.h"
 #include "Parameterization/CutToDisk.h"
 #include "Parameterization/LinearABF.h"
 
@@ -260,7 +261,7 @@ private:
   cholmod_common Common;
   double* Values = nullptr; // a supernodal factor's values, interleaved real and imaginary parts
   std::size_t Capacity = 0; // doubles
-  std::vector<double> Work;  // SupernodalSolve's workspace
+  std::vector<double> Work; // SupernodalSolve's workspace
 };
 #else
 class HermitianSolves
@@ -270,8 +271,8 @@ class HermitianSolves
 
 // Solves H z = rhs for the Hermitian positive definite H given by its lower triangle: with
 // ComplexCHOLMOD, CHOLMOD's L L^H (supernodal or simplicial, CHOLMOD's choice by the flops per
-// nonzero of the factor; supernodal values by factorizeSupernodal) after an AMD ordering, through `solves` if given; else Eigen's
-// SimplicialLDLT.
+// nonzero of the factor; supernodal values by factorizeSupernodal) after an AMD ordering, through `solves` if given;
+// else Eigen's SimplicialLDLT.
 Eigen::VectorXcd solveHermitian(
   const Eigen::SparseMatrix<Complex>& lower, const Eigen::VectorXcd& rhs, ChartSolver solver, HermitianSolves* solves)
 {
@@ -357,7 +358,8 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
     const int i = loop[e];
     const int j = loop[(e + 1) % loop.size()];
     const IndexRange neighbors = chart.vertexNeighbors(i);
-    const std::size_t at = static_cast<std::size_t>(std::find(neighbors.begin(), neighbors.end(), j) - neighbors.begin());
+    const std::size_t at =
+      static_cast<std::size_t>(std::find(neighbors.begin(), neighbors.end(), j) - neighbors.begin());
     edgeImaginary[static_cast<std::size_t>(chart.vertexEdges(i)[at])] = i > j ? 0.5 : -0.5;
     addPinned(i, j, Complex(0.0, 0.5));
   }
@@ -405,7 +407,8 @@ std::vector<Vector2> complexConformalMap(const TriangleMesh& chart, const std::v
     for (const auto& [row, edge] : below)
     {
       rows[entry] = row;
-      values[entry++] = Complex(-edgeWeight[static_cast<std::size_t>(edge)], edgeImaginary[static_cast<std::size_t>(edge)]);
+      values[entry++] =
+        Complex(-edgeWeight[static_cast<std::size_t>(edge)], edgeImaginary[static_cast<std::size_t>(edge)]);
     }
   }
   columnStart[freeCount] = entry;
@@ -535,7 +538,8 @@ std::vector<Vector2> conformalMapOfDisk(
   for (int v = 0; v < n; ++v)
   {
     const int fu = freeIndex[2 * static_cast<std::size_t>(v)];
-    uv[static_cast<std::size_t>(v)] = fu < 0 ? Vector2(pinned[2 * v], pinned[2 * v + 1]) : Vector2(solution[fu], solution[fu + 1]);
+    uv[static_cast<std::size_t>(v)] =
+      fu < 0 ? Vector2(pinned[2 * v], pinned[2 * v + 1]) : Vector2(solution[fu], solution[fu + 1]);
     if (!uv[static_cast<std::size_t>(v)].allFinite())
     {
       throw Error("the conformal map is not finite at vertex " + std::to_string(v) + " of the chart");
@@ -576,7 +580,8 @@ std::vector<double> reconstructionCotangents(const TriangleMesh& chart)
   return cotangents;
 }
 
-std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, ChartSolver solver, HermitianSolves* solves)
+std::vector<Vector2> flattenDisk(
+  const TriangleMesh& chart, ChartMethod method, ChartSolver solver, HermitianSolves* solves)
 {
   return conformalMapOfDisk(
     chart, method == ChartMethod::LinABF ? reconstructionCotangents(chart) : cornerCotangents(chart), solver, solves);
@@ -584,8 +589,8 @@ std::vector<Vector2> flattenDisk(const TriangleMesh& chart, ChartMethod method, 
 
 } // namespace
 
-FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
-  const Vector2& t1, const Vector2& t2)
+FaceDistortion faceDistortion(
+  const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0, const Vector2& t1, const Vector2& t2)
 {
   // The triangle in an orthonormal frame of its plane, p0 at the origin and p1 on the x axis.
   const Vector3 e1 = p1 - p0;
@@ -614,7 +619,8 @@ FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector
   distortion.stretch = std::sqrt(0.5 * (s1 * s1 + s2 * s2)); // Sander et al. 2001, section 3
   distortion.shear = s2 > 0.0 ? s1 / s2 : std::numeric_limits<double>::infinity();
   // The inverse map's singular values are 1 / s2 and 1 / s1.
-  distortion.inverseStretch = s2 > 0.0 ? std::sqrt(0.5 * (1.0 / (s1 * s1) + 1.0 / (s2 * s2))) : std::numeric_limits<double>::infinity();
+  distortion.inverseStretch =
+    s2 > 0.0 ? std::sqrt(0.5 * (1.0 / (s1 * s1) + 1.0 / (s2 * s2))) : std::numeric_limits<double>::infinity();
   distortion.flipped = J.determinant() < 0.0;
   return distortion;
 }
@@ -655,7 +661,8 @@ int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangl
         if (cross2(t[1] - t[0], sample - t[0]) > 0.0 && cross2(t[2] - t[1], sample - t[1]) > 0.0 &&
           cross2(t[0] - t[2], sample - t[2]) > 0.0)
         {
-          int& cell = owner[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(x)];
+          int& cell =
+            owner[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(x)];
           if (cell >= 0 && cell != chart)
           {
             pairs.emplace(std::min(cell, chart), std::max(cell, chart));
@@ -689,7 +696,8 @@ double seamScore(const TriangleMesh& chart, const std::vector<Vector2>& uv, std:
     areas[static_cast<std::size_t>(f)] =
       0.5 * (chart.point(t[1]) - chart.point(t[0])).cross(chart.point(t[2]) - chart.point(t[0])).norm();
     area3D += areas[static_cast<std::size_t>(f)];
-    areaUV += signedArea(uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
+    areaUV += signedArea(
+      uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
   }
   const double scale = std::abs(areaUV) > 0.0 ? std::sqrt(area3D / std::abs(areaUV)) : 0.0;
   const double mirror = areaUV < 0.0 ? -1.0 : 1.0;
@@ -832,7 +840,8 @@ ChartParameterizationResult parameterizeCharts(
 
   // Charts: the connected pieces, in increasing label order, then piece order; faces in mesh order.
   // A piece has one label (the split gives each label its own copies of the vertices).
-  std::vector<std::pair<int, int>> pieces(static_cast<std::size_t>(split.componentCount()), { 0, -1 }); // (label, component)
+  std::vector<std::pair<int, int>> pieces(
+    static_cast<std::size_t>(split.componentCount()), { 0, -1 }); // (label, component)
   for (int f = 0; f < split.faceCount(); ++f)
   {
     std::pair<int, int>& piece = pieces[static_cast<std::size_t>(split.faceComponent(f))];
@@ -918,7 +927,8 @@ ChartParameterizationResult parameterizeCharts(
   }
   if (!problems.empty())
   {
-    throw Error("these charts are not topological disks and cannot be flattened (cut them into disks first): " + problems);
+    throw Error(
+      "these charts are not topological disks and cannot be flattened (cut them into disks first): " + problems);
   }
   // Flatten each chart, adding seams where the map is worst (options.maximumSeams).
   std::vector<std::vector<Vector2>> chartUV(labels.size());
@@ -989,7 +999,8 @@ ChartParameterizationResult parameterizeCharts(
     for (const Triangle& t : chart.triangles())
     {
       area3D += 0.5 * (chart.point(t[1]) - chart.point(t[0])).cross(chart.point(t[2]) - chart.point(t[0])).norm();
-      areaUV += signedArea(uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
+      areaUV += signedArea(
+        uv[static_cast<std::size_t>(t[0])], uv[static_cast<std::size_t>(t[1])], uv[static_cast<std::size_t>(t[2])]);
     }
     if (!(std::abs(areaUV) > 0.0))
     {

@@ -1,4 +1,5 @@
-// Texture coordinates for a surface cut into charts: LSCM or LinABF per chart, distortion, overlap count, and their layout in the unit square (ChartPacking).
+// Texture coordinates for a surface cut into charts: LSCM or LinABF per chart, distortion, overlap count, and their
+// layout in the unit square (ChartPacking).
 #pragma once
 
 #include "Mesh/SplitAlongFaceLabels.h"
@@ -131,7 +132,8 @@ std::string chartTopologyProblem(const TriangleMesh& chart);
 /// E = E_Dirichlet - A(u, v) (Mullen et al. 2008, section 3), with the two boundary vertices farthest apart (two
 /// sweeps) pinned at (0, 0) and (d, 0), d their 3D distance. Returns one point per vertex. Throws
 /// kerf::Error for a chart that is not a disk or a system the solver cannot factor.
-std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexCHOLMOD);
+std::vector<Vector2> leastSquaresConformalMap(
+  const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexCHOLMOD);
 
 /// Linear angle based flattening of a disk: the planar angles of LinABF (linearAngleBasedAngles,
 /// Zayer, Lévy and Seidel 2007), then the positions that fit them best, by the least-squares
@@ -142,12 +144,13 @@ std::vector<Vector2> leastSquaresConformalMap(const TriangleMesh& chart, ChartSo
 /// the 3D cotangents, solved the same way, with the same two pinned vertices: LSCM is the case
 /// alpha = the 3D angles. Returns one point per vertex. Throws kerf::Error for a chart that is not
 /// a disk or a system that cannot be factored.
-std::vector<Vector2> linearAngleBasedFlattening(const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexCHOLMOD);
+std::vector<Vector2> linearAngleBasedFlattening(
+  const TriangleMesh& chart, ChartSolver solver = ChartSolver::ComplexCHOLMOD);
 
 /// Distortion of the affine map from triangle (p0, p1, p2) to (t0, t1, t2): the singular values
 /// s1 >= s2 of its Jacobian.
-FaceDistortion faceDistortion(const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0,
-  const Vector2& t1, const Vector2& t2);
+FaceDistortion faceDistortion(
+  const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0, const Vector2& t1, const Vector2& t2);
 
 /// Number of pairs of charts whose triangles cover a common sample of a resolution x resolution
 /// grid over the unit square (sample at each texel's centre, strictly inside a triangle).
@@ -159,12 +162,11 @@ int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangl
 /// (a label in several pieces gives several charts). Cuts the charts that are not disks but can
 /// be made disks by cutToDisk (options.cutToDisks; the copies of the vertices along these cuts
 /// are appended to result.split's vertices). Flattens each chart with
-/// leastSquaresConformalMap or linearAngleBasedFlattening (options.method), scales each so its texture area equals its 3D
-/// area, measures the distortion, turns each chart to its minimal bounding box and packs them
-/// into the unit square with one scale for all (equal texel density). Throws kerf::Error listing
-/// every chart that is not a disk and was not cut (by label, and piece if the label has several, with what it
-/// is: boundary loops and genus, non-manifold edges, zero-area triangles), for a label count other than the
-/// face count, an empty mesh or a margin outside [0, 0.25].
+/// leastSquaresConformalMap or linearAngleBasedFlattening (options.method), scales each so its texture area equals its
+/// 3D area, measures the distortion, turns each chart to its minimal bounding box and packs them into the unit square
+/// with one scale for all (equal texel density). Throws kerf::Error listing every chart that is not a disk and was not
+/// cut (by label, and piece if the label has several, with what it is: boundary loops and genus, non-manifold edges,
+/// zero-area triangles), for a label count other than the face count, an empty mesh or a margin outside [0, 0.25].
 ChartParameterizationResult parameterizeCharts(
   const TriangleMesh& mesh, const std::vector<int>& faceLabels, const ChartParameterizationOptions& options = {});
 

@@ -18,7 +18,6 @@ namespace kerf
 namespace
 {
 
-
 // A graph with weighted undirected edges: the chart's vertices, then one cap vertex per boundary loop.
 struct CappedGraph
 {
@@ -102,8 +101,8 @@ EdgeCut splitAlongEdges(const TriangleMesh& mesh, const std::vector<char>& cut)
 {
   if (cut.size() != static_cast<std::size_t>(mesh.edgeCount()))
   {
-    throw Error("the cut has " + std::to_string(cut.size()) + " edge flags for " + std::to_string(mesh.edgeCount()) +
-      " edges");
+    throw Error(
+      "the cut has " + std::to_string(cut.size()) + " edge flags for " + std::to_string(mesh.edgeCount()) + " edges");
   }
   const int faces = mesh.faceCount();
   // Corner 3 f + k holds vertex k of triangle f; corners of one vertex joined across uncut edges.

@@ -103,7 +103,8 @@ LinearABFAngles linearAngleBasedAngles(const TriangleMesh& chart)
       const int v = chart.triangle(f)[static_cast<std::size_t>(k)];
       if (interior[static_cast<std::size_t>(v)] >= 0)
       {
-        beta[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)] *= 2.0 * M_PI / vertexSum[static_cast<std::size_t>(v)];
+        beta[3 * static_cast<std::size_t>(f) + static_cast<std::size_t>(k)] *=
+          2.0 * M_PI / vertexSum[static_cast<std::size_t>(v)];
       }
     }
   }
@@ -129,7 +130,8 @@ LinearABFAngles linearAngleBasedAngles(const TriangleMesh& chart)
       {
         const std::size_t c = 3 * static_cast<std::size_t>(f);
         rhs[2 * j] -= beta[c + static_cast<std::size_t>(k)];
-        rhs[2 * j + 1] += logSine[c + static_cast<std::size_t>((k + 2) % 3)] - logSine[c + static_cast<std::size_t>((k + 1) % 3)];
+        rhs[2 * j + 1] +=
+          logSine[c + static_cast<std::size_t>((k + 2) % 3)] - logSine[c + static_cast<std::size_t>((k + 1) % 3)];
       }
     }
   }
@@ -158,7 +160,8 @@ LinearABFAngles linearAngleBasedAngles(const TriangleMesh& chart)
     for (int a = 0; a < rows.count; ++a)
     {
       const Eigen::Vector3d Pg = P * rows.coefficient[static_cast<std::size_t>(a)];
-      rhs[rows.row[static_cast<std::size_t>(a)]] -= rows.coefficient[static_cast<std::size_t>(a)].dot(particular[static_cast<std::size_t>(f)]);
+      rhs[rows.row[static_cast<std::size_t>(a)]] -=
+        rows.coefficient[static_cast<std::size_t>(a)].dot(particular[static_cast<std::size_t>(f)]);
       for (int b = 0; b < rows.count; ++b)
       {
         if (rows.row[static_cast<std::size_t>(a)] >= rows.row[static_cast<std::size_t>(b)])
@@ -201,17 +204,19 @@ LinearABFAngles linearAngleBasedAngles(const TriangleMesh& chart)
     for (int k = 0; k < 3; ++k)
     {
       result.angles[c + static_cast<std::size_t>(k)] = beta[c + static_cast<std::size_t>(k)] + e[k];
-      angleSum[static_cast<std::size_t>(chart.triangle(f)[static_cast<std::size_t>(k)])] += result.angles[c + static_cast<std::size_t>(k)];
+      angleSum[static_cast<std::size_t>(chart.triangle(f)[static_cast<std::size_t>(k)])] +=
+        result.angles[c + static_cast<std::size_t>(k)];
     }
   }
   // A rank-deficient C (a closed chart has dependent vertex and triangle sums) leaves a singular
   // system whose solution misses the constraints.
   for (int v = 0; v < n; ++v)
   {
-    if (interior[static_cast<std::size_t>(v)] >= 0 && !(std::abs(angleSum[static_cast<std::size_t>(v)] - 2.0 * M_PI) < VertexSumTolerance))
+    if (interior[static_cast<std::size_t>(v)] >= 0 &&
+      !(std::abs(angleSum[static_cast<std::size_t>(v)] - 2.0 * M_PI) < VertexSumTolerance))
     {
-      throw Error("the angle system of the chart is singular: vertex " + std::to_string(v) +
-        "'s angles sum to " + std::to_string(angleSum[static_cast<std::size_t>(v)]) + " instead of 2 pi (is the chart a disk?)");
+      throw Error("the angle system of the chart is singular: vertex " + std::to_string(v) + "'s angles sum to " +
+        std::to_string(angleSum[static_cast<std::size_t>(v)]) + " instead of 2 pi (is the chart a disk?)");
     }
   }
   return result;

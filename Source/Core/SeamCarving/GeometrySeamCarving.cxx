@@ -1,10 +1,11 @@
-// Geometry seam carving's editing: weighted Laplace deformation with ring seams split or collapsed per sector on OpenMesh.
+// Geometry seam carving's editing: weighted Laplace deformation with ring seams split or collapsed per sector on
+// OpenMesh.
 #include "SeamCarving/GeometrySeamCarving.h"
 
 #include "Error.h"
-#include "Numerics/SparseCholesky.h"
 #include "Mesh/OpenMeshAdapter.h"
 #include "Mesh/Submesh.h"
+#include "Numerics/SparseCholesky.h"
 #include "SeamCarving/GeometrySeams.h"
 
 #include <Eigen/SparseCore>
@@ -45,15 +46,15 @@ enum Side : char
 // An inner edge of a ring (a "rung"), from its handle-side vertex s to its fixed-side vertex t.
 struct Rung
 {
-  int s = -1, t = -1;        // submesh vertices
+  int s = -1, t = -1;          // submesh vertices
   int sectors[2] = { -1, -1 }; // sectors of its two ring triangles
-  bool collapsible = false;  // in the ring's set of every second rung
+  bool collapsible = false;    // in the ring's set of every second rung
 };
 
 struct Ring
 {
-  std::vector<Rung> rungs;  // in order around the ring where the strip allows
-  std::vector<char> side;   // per submesh vertex of the rest mesh
+  std::vector<Rung> rungs; // in order around the ring where the strip allows
+  std::vector<char> side;  // per submesh vertex of the rest mesh
 };
 
 // An edge's rest vector (initialised, unlike OpenMesh's vectors, for the property's growth).
@@ -73,18 +74,18 @@ struct GeometrySeamCarving::Implementation
 {
   SeamCarvingOptions options;
   const TriangleMesh* mesh = nullptr;
-  std::vector<int> label;          // per input vertex: 0 fixed, 1 modeling, 2 handle
-  std::vector<int> modelingFaces;  // input triangles of the modeling region
+  std::vector<int> label;         // per input vertex: 0 fixed, 1 modeling, 2 handle
+  std::vector<int> modelingFaces; // input triangles of the modeling region
   std::vector<char> isModelingFace;
-  Submesh sub;                     // the modeling region
-  EditableMesh base;               // its rest state, with the properties below
+  Submesh sub;       // the modeling region
+  EditableMesh base; // its rest state, with the properties below
   OpenMesh::VPropHandleT<int> role;
-  OpenMesh::VPropHandleT<int> origin;     // input vertex, -1 for split points
+  OpenMesh::VPropHandleT<int> origin; // input vertex, -1 for split points
   OpenMesh::VPropHandleT<double> stiffness;
-  OpenMesh::VPropHandleT<int> rank;       // position in the rest state's elimination order, -1 before it is known
-  OpenMesh::VPropHandleT<int> tie;        // creation order of split points, 0 for the others
-  OpenMesh::EPropHandleT<RestVector> rest;      // rest vector from halfedge 0's start to its end
-  OpenMesh::EPropHandleT<double> weight;  // Laplace weight omega
+  OpenMesh::VPropHandleT<int> rank;        // position in the rest state's elimination order, -1 before it is known
+  OpenMesh::VPropHandleT<int> tie;         // creation order of split points, 0 for the others
+  OpenMesh::EPropHandleT<RestVector> rest; // rest vector from halfedge 0's start to its end
+  OpenMesh::EPropHandleT<double> weight;   // Laplace weight omega
   OpenMesh::FPropHandleT<int> faceRing, faceSector, faceOrigin;
   std::vector<Ring> rings;
   int sectors = 0;
@@ -101,8 +102,8 @@ struct GeometrySeamCarving::Implementation
   std::vector<int> freeIndex; // per current vertex: unknown index, -1 if constrained
   int unknowns = 0;
   SparseCholesky factor;
-  Eigen::SparseMatrix<double> coupling;   // unknowns x current vertices: weights to constrained points
-  Eigen::MatrixXd restRhs;                // unknowns x 3: sum of w r(w -> u)
+  Eigen::SparseMatrix<double> coupling; // unknowns x current vertices: weights to constrained points
+  Eigen::MatrixXd restRhs;              // unknowns x 3: sum of w r(w -> u)
   int skipped = 0;
   SeamCarvingResult result;
 
@@ -435,8 +436,11 @@ void GeometrySeamCarving::Implementation::split(EditableMesh& m, const Ring& rin
     const Vec3 toS = this->restVector(m, ls), toT = this->restVector(m, lt);
     const double ws = m.property(this->weight, m.edge_handle(ls)), wt = m.property(this->weight, m.edge_handle(lt));
     const char where = this->sideOf(ring, l);
-    const Vec3 rest = where == HandleSide ? Vec3(toS + half) : where == FixedSide ? Vec3(toT - half) : Vec3(0.5 * (toS + toT));
-    // Dekkers and Kobbelt 2014, 3.3.2: omega'_{l,new} = 1/2 (|l - new| / |l - s| omega_{l,s} + |l - new| / |l - t| omega_{l,t}).
+    const Vec3 rest = where == HandleSide ? Vec3(toS + half)
+      : where == FixedSide                ? Vec3(toT - half)
+                                          : Vec3(0.5 * (toS + toT));
+    // Dekkers and Kobbelt 2014, 3.3.2: omega'_{l,new} = 1/2 (|l - new| / |l - s| omega_{l,s} + |l - new| / |l - t|
+    // omega_{l,t}).
     wings.push_back({ l, rest, 0.5 * (scaledWeight(ws, toS, rest) + scaledWeight(wt, toT, rest)) });
   }
   const VH mid = m.add_vertex(0.5 * (m.point(s) + m.point(t)));
@@ -513,10 +517,11 @@ bool GeometrySeamCarving::Implementation::collapse(
     const Vec3 shiftedT = viaT->second.first + 0.5 * tau;
     const char where = this->sideOf(ring, VH(index));
     const Vec3 rest = where == HandleSide ? shiftedS
-      : where == FixedSide              ? shiftedT
-                                        : Vec3(0.5 * (viaS.first + viaT->second.first));
+      : where == FixedSide                ? shiftedT
+                                          : Vec3(0.5 * (viaS.first + viaT->second.first));
     neighbors.push_back({ VH(index), rest,
-      0.5 * (scaledWeight(viaS.second, viaS.first, rest) + scaledWeight(viaT->second.second, viaT->second.first, rest)) });
+      0.5 *
+        (scaledWeight(viaS.second, viaS.first, rest) + scaledWeight(viaT->second.second, viaT->second.first, rest)) });
   }
   for (const auto& [index, viaT] : fromT)
   {
@@ -635,8 +640,8 @@ void GeometrySeamCarving::Implementation::assemble()
   {
     const HH h = m.halfedge_handle(e, 0);
     const int i = m.from_vertex_handle(h).idx(), j = m.to_vertex_handle(h).idx();
-    const double w = m.property(this->weight, e) * 0.5 *
-      (m.property(this->stiffness, VH(i)) + m.property(this->stiffness, VH(j)));
+    const double w =
+      m.property(this->weight, e) * 0.5 * (m.property(this->stiffness, VH(i)) + m.property(this->stiffness, VH(j)));
     const Vec3& r = m.property(this->rest, e).value; // x_j - x_i at rest
     const int fi = this->freeIndex[i], fj = this->freeIndex[j];
     if (fi >= 0)
@@ -797,7 +802,8 @@ GeometrySeamCarving::GeometrySeamCarving(const SeamCarvingInput& input, const Se
     if (!d.isModelingFace[f] && input.faceRing[f] >= 0)
     {
       throw Error("triangle " + std::to_string(f) +
-        " lies in a ring seam but outside the modeling region; use the output of Geometry Seams computed on the same regions");
+        " lies in a ring seam but outside the modeling region; use the output of Geometry Seams computed on the same "
+        "regions");
     }
   }
   for (double angle : input.normalConeAngle)
@@ -839,8 +845,7 @@ GeometrySeamCarving::GeometrySeamCarving(const SeamCarvingInput& input, const Se
         d.order[j].push_back(k);
       }
     }
-    std::stable_sort(d.order[j].begin(), d.order[j].end(),
-      [&](int a, int b) { return error[j][a] < error[j][b]; });
+    std::stable_sort(d.order[j].begin(), d.order[j].end(), [&](int a, int b) { return error[j][a] < error[j][b]; });
   }
   d.state.assign(d.sectors, 0);
 }
@@ -896,7 +901,8 @@ const SeamCarvingResult& GeometrySeamCarving::deform(const Eigen::Matrix4d& hand
       {
         corner[k++] = v.idx();
       }
-      distortion[m.property(d.faceSector, f)] += triangleArea(positions[corner[0]], positions[corner[1]], positions[corner[2]]);
+      distortion[m.property(d.faceSector, f)] +=
+        triangleArea(positions[corner[0]], positions[corner[1]], positions[corner[2]]);
     }
     bool changed = false;
     for (int j = 0; j < d.sectors; ++j)
@@ -978,8 +984,7 @@ const SeamCarvingResult& GeometrySeamCarving::deform(const Eigen::Matrix4d& hand
     else
     {
       const Vector3& p = mesh.point(v);
-      out.points.push_back(
-        d.label[v] == HandlePoint ? Vector3((handleTransform * p.homogeneous()).head<3>()) : p);
+      out.points.push_back(d.label[v] == HandlePoint ? Vector3((handleTransform * p.homogeneous()).head<3>()) : p);
     }
     out.pointOrigin.push_back(v);
   }

@@ -1,4 +1,5 @@
-// Geometry seam carving's editing: weighted Laplace deformation of the modeling region with ring seams split or collapsed per sector.
+// Geometry seam carving's editing: weighted Laplace deformation of the modeling region with ring seams split or
+// collapsed per sector.
 #pragma once
 
 #include "Mesh/TriangleMesh.h"
@@ -36,18 +37,18 @@ struct SeamCarvingResult
 {
   std::vector<Vector3> points;
   std::vector<Triangle> triangles;
-  std::vector<int> pointOrigin;  ///< input vertex of each point, -1 for a point a split made
-  std::vector<int> faceRing;     ///< ring of each triangle (split halves keep their ring), -1 outside
-  std::vector<int> faceSector;   ///< sector of each triangle, -1 outside the modeling region
+  std::vector<int> pointOrigin; ///< input vertex of each point, -1 for a point a split made
+  std::vector<int> faceRing;    ///< ring of each triangle (split halves keep their ring), -1 outside
+  std::vector<int> faceSector;  ///< sector of each triangle, -1 outside the modeling region
   /// Per sector: rings executed, positive when split, negative when collapsed (the tuple (k, b)
   /// of section 3.3.1 as one signed count).
   std::vector<int> sectorState;
   std::vector<double> sectorDistortion; ///< per sector: d(A_j) of Eq. 5 against the current rest area
-  int splitSegments = 0;    ///< ring segments split
-  int collapsedSegments = 0; ///< ring segments collapsed
-  int skippedOperations = 0; ///< edge collapses refused by the link condition (left as they are)
-  int solves = 0;            ///< Laplace solves of the last deform()
-  int factorizations = 0;    ///< factorizations of the last deform()
+  int splitSegments = 0;                ///< ring segments split
+  int collapsedSegments = 0;            ///< ring segments collapsed
+  int skippedOperations = 0;            ///< edge collapses refused by the link condition (left as they are)
+  int solves = 0;                       ///< Laplace solves of the last deform()
+  int factorizations = 0;               ///< factorizations of the last deform()
 };
 
 /// An editing session on one preprocessed surface (Dekkers and Kobbelt 2014, 3.3). deform()

@@ -5,9 +5,9 @@
 #include "Geodesic/GraphDistance.h"
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/LaplacianWeights.h"
 #include "Mesh/MinimumCut.h"
 #include "Mesh/Submesh.h"
+#include "Numerics/LaplacianWeights.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,8 +118,8 @@ ModelingRegion makeModelingRegion(const TriangleMesh& mesh, const std::vector<in
     {
       if (labels[global[v]] == 1)
       {
-        throw Error("the modeling region reaches the surface's border at point " +
-          std::to_string(global[v]) + "; it must be surrounded by the handle and the fixed region");
+        throw Error("the modeling region reaches the surface's border at point " + std::to_string(global[v]) +
+          "; it must be surrounded by the handle and the fixed region");
       }
       kind = labels[global[v]];
     }
@@ -136,8 +136,8 @@ ModelingRegion makeModelingRegion(const TriangleMesh& mesh, const std::vector<in
   const int euler = r.vertexCount() - r.edgeCount() + r.faceCount();
   if (euler != 0)
   {
-    throw Error("the modeling region is not a ring: its Euler characteristic is " + std::to_string(euler) +
-      " (a ring's is 0)");
+    throw Error(
+      "the modeling region is not a ring: its Euler characteristic is " + std::to_string(euler) + " (a ring's is 0)");
   }
   region.handleLoop = *loops[2].front();
   region.fixedLoop = *loops[0].front();
@@ -166,7 +166,8 @@ void checkOptions(const GeometrySeamsOptions& options)
     if (!std::isfinite(weight) || weight < 0.0)
     {
       throw Error("the edge-cost weights alpha, beta and gamma must be finite and >= 0 (got " +
-        std::to_string(options.alpha) + ", " + std::to_string(options.beta) + ", " + std::to_string(options.gamma) + ")");
+        std::to_string(options.alpha) + ", " + std::to_string(options.beta) + ", " + std::to_string(options.gamma) +
+        ")");
     }
   }
   if (options.alpha + options.beta + options.gamma <= 0.0)
@@ -332,8 +333,8 @@ std::vector<std::vector<int>> traceSectorContours(
     {
       continue; // cannot happen on a connected ring; kept safe
     }
-    contours.emplace_back(simple.begin() + static_cast<std::ptrdiff_t>(first),
-      simple.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    contours.emplace_back(
+      simple.begin() + static_cast<std::ptrdiff_t>(first), simple.begin() + static_cast<std::ptrdiff_t>(last) + 1);
   }
   return contours;
 }
@@ -430,7 +431,8 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
     angle[v] = normalConeAngle[modeling.sub.globalVertex[v]];
     if (!std::isfinite(angle[v]))
     {
-      throw Error("the normal-cone angle of point " + std::to_string(modeling.sub.globalVertex[v]) + " is not a number");
+      throw Error(
+        "the normal-cone angle of point " + std::to_string(modeling.sub.globalVertex[v]) + " is not a number");
     }
   }
 

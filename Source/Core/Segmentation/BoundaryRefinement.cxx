@@ -156,7 +156,8 @@ BoundaryRefinementResult refineSegmentBoundaries(
     }
     if (anySource && anySink)
     {
-      const MinimumCut cut = minimumCut(static_cast<int>(nodes.size()), edges, edgeCapacity, sourceCapacity, sinkCapacity);
+      const MinimumCut cut =
+        minimumCut(static_cast<int>(nodes.size()), edges, edgeCapacity, sourceCapacity, sinkCapacity);
       for (std::size_t i = 0; i < freed; ++i)
       {
         const int f = nodes[i];

@@ -3,10 +3,10 @@
 
 #include "Error.h"
 #include "Geodesic/GraphDistance.h"
-#include "Numerics/FieldGradient.h"
 #include "Harmonic/Isolines.h"
-#include "Numerics/SparseCholesky.h"
 #include "Mesh/MeshValidation.h"
+#include "Numerics/FieldGradient.h"
+#include "Numerics/SparseCholesky.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/SegmentSpines.h"
 #include "Session/Surface.h"
@@ -98,8 +98,8 @@ std::vector<int> farthestPoints(const TriangleMesh& mesh, int count)
 
 // The potential of a unit source at each feature point, with the sink at a ground vertex
 // (L_rr G = e_i on the other vertices; the ground and unused vertices hold 0).
-std::vector<std::vector<double>> unitPotentials(const TriangleMesh& mesh, const std::vector<double>& weights,
-  const std::vector<int>& sources)
+std::vector<std::vector<double>> unitPotentials(
+  const TriangleMesh& mesh, const std::vector<double>& weights, const std::vector<int>& sources)
 {
   const int n = mesh.vertexCount();
   const Eigen::SparseMatrix<double> laplacian = assembleLaplacian(mesh, weights);
@@ -393,8 +393,7 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
         for (const Isoline& line : isolines)
         {
           Candidate candidate;
-          if (!sides.smallerSide(scores[s].value, line, candidate) ||
-            candidate.sideArea < minimumArea)
+          if (!sides.smallerSide(scores[s].value, line, candidate) || candidate.sideArea < minimumArea)
           {
             continue;
           }
@@ -444,7 +443,8 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
     cut.rank = cut.bestScore * std::pow(static_cast<double>(cut.fields.size()), options.voteExponent) *
       std::pow(candidates[cut.representative].sideArea / graph.totalArea(), options.areaExponent);
   }
-  std::stable_sort(cuts.begin(), cuts.end(), [](const ConsensusCut& a, const ConsensusCut& b) { return a.rank > b.rank; });
+  std::stable_sort(
+    cuts.begin(), cuts.end(), [](const ConsensusCut& a, const ConsensusCut& b) { return a.rank > b.rank; });
   result.consensusCuts = static_cast<int>(cuts.size());
 
   // Greedy selection: each cut splits the current segments by its side; refused when a segment
@@ -475,8 +475,7 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
       next[f] = slot;
       segmentArea[slot] += graph.area(f);
     }
-    if (count == segments || count > k ||
-      *std::min_element(segmentArea.begin(), segmentArea.end()) < minimumArea)
+    if (count == segments || count > k || *std::min_element(segmentArea.begin(), segmentArea.end()) < minimumArea)
     {
       continue;
     }

@@ -1,4 +1,5 @@
-// Consensus cuts: automatic segmentation from the isolines of many concavity-aware harmonic fields between feature points.
+// Consensus cuts: automatic segmentation from the isolines of many concavity-aware harmonic fields between feature
+// points.
 #pragma once
 
 #include "Numerics/LaplacianWeights.h"
@@ -58,8 +59,8 @@ struct ConsensusCutResult
   std::vector<int> labels; ///< per face, numbered by first face
   int featurePoints = 0;
   int fields = 0;
-  int candidates = 0;      ///< candidate cuts (isoline components at score peaks)
-  int consensusCuts = 0;   ///< distinct cuts after grouping the candidates
+  int candidates = 0;    ///< candidate cuts (isoline components at score peaks)
+  int consensusCuts = 0; ///< distinct cuts after grouping the candidates
   int chosenCuts = 0;
   /// Faces whose label the random walks changed (before the final clean-up).
   int walkedFaces = 0;

@@ -49,8 +49,8 @@ EasyMeshCutResult refineBoundaries(
   return result;
 }
 
-EasyMeshCutResult easyMeshCut(
-  const std::shared_ptr<const Surface>& surface, const std::vector<LabelledStroke>& strokes, const EasyMeshCutOptions& options)
+EasyMeshCutResult easyMeshCut(const std::shared_ptr<const Surface>& surface, const std::vector<LabelledStroke>& strokes,
+  const EasyMeshCutOptions& options)
 {
   const TriangleMesh& mesh = surface->mesh();
   EasyMeshCutResult result;

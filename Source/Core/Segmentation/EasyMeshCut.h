@@ -1,4 +1,5 @@
-// Easy Mesh Cutting in one call: region growing from labelled strokes, then optionally the boundaries refined as snakes.
+// Easy Mesh Cutting in one call: region growing from labelled strokes, then optionally the boundaries refined as
+// snakes.
 #pragma once
 
 #include "Segmentation/RegionGrowing.h"
@@ -62,7 +63,7 @@ EasyMeshCutResult refineBoundaries(
 /// growRegions, BoundarySnake and overrideWithStroke do (no stroke, strokes of fewer than two
 /// labels, stroke points off the surface, edges shared by three triangles, an override away from
 /// every boundary or with a radius that is not positive).
-EasyMeshCutResult easyMeshCut(
-  const std::shared_ptr<const Surface>& surface, const std::vector<LabelledStroke>& strokes, const EasyMeshCutOptions& options);
+EasyMeshCutResult easyMeshCut(const std::shared_ptr<const Surface>& surface, const std::vector<LabelledStroke>& strokes,
+  const EasyMeshCutOptions& options);
 
 } // namespace kerf

@@ -279,8 +279,8 @@ PartitionConsensus combinePartitions(
     {
       std::swap(a, b);
     }
-    heap.push({ averageLinkage(groups[a], groups[b], slotWeight), -std::min(groups[a].weight, groups[b].weight), -a,
-      -b, groups[a].version, groups[b].version });
+    heap.push({ averageLinkage(groups[a], groups[b], slotWeight), -std::min(groups[a].weight, groups[b].weight), -a, -b,
+      groups[a].version, groups[b].version });
   };
   for (int a = 0; a < static_cast<int>(groups.size()); ++a)
   {

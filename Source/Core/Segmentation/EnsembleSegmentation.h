@@ -82,8 +82,8 @@ struct EnsembleSegmentationResult
 /// Ensemble segmentation: each member with a positive weight segments the surface into k parts
 /// with its own options, combinePartitions joins their votes, and refineSegmentBoundaries moves the
 /// joined segments' boundaries onto nearby short, concave ways (unless options.refinement's band
-/// is 0). Each dual-graph component is segmented apart with its share of k (segmentComponents). Deterministic. Throws kerf::Error for
-/// k < 1, k > faces, a surface that is not edge-manifold and consistently oriented, weights out of
+/// is 0). Each dual-graph component is segmented apart with its share of k (segmentComponents). Deterministic. Throws
+/// kerf::Error for k < 1, k > faces, a surface that is not edge-manifold and consistently oriented, weights out of
 /// range, or whatever a member refuses.
 EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, const EnsembleSegmentationOptions& options);
 

@@ -2,8 +2,8 @@
 #include "Segmentation/FaceGraph.h"
 
 #include "Error.h"
-#include "Session/Surface.h"
 #include "Mesh/UnionFind.h"
+#include "Session/Surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -61,8 +61,8 @@ FaceGraph::FaceGraph(const TriangleMesh& mesh)
       dual.normalCosine = std::clamp(na.dot(nb), -1.0, 1.0);
       const double angle = std::atan2(na.cross(nb).norm(), na.dot(nb));
       // Convex where each face's neighbour lies below its plane (both terms negative).
-      const double side = (this->Centroids[fb] - this->Centroids[fa]).dot(na) +
-        (this->Centroids[fa] - this->Centroids[fb]).dot(nb);
+      const double side =
+        (this->Centroids[fb] - this->Centroids[fa]).dot(na) + (this->Centroids[fa] - this->Centroids[fb]).dot(nb);
       dual.bend = side > 0.0 ? -angle : angle;
     }
     const int index = static_cast<int>(this->Edges.size());
@@ -164,8 +164,7 @@ DualDistances dualDijkstra(
       {
         continue;
       }
-      if (candidate < result.distance[g] ||
-        (candidate == result.distance[g] && result.nearest[f] < result.nearest[g]))
+      if (candidate < result.distance[g] || (candidate == result.distance[g] && result.nearest[f] < result.nearest[g]))
       {
         const bool shorter = candidate < result.distance[g];
         result.distance[g] = candidate;
@@ -234,8 +233,8 @@ std::vector<int> splitIntoConnectedSegments(const FaceGraph& graph, const std::v
   return result;
 }
 
-RegionAdjacency::RegionAdjacency(const FaceGraph& graph, const std::vector<int>& labels,
-  const std::vector<double>* edgeHeight)
+RegionAdjacency::RegionAdjacency(
+  const FaceGraph& graph, const std::vector<int>& labels, const std::vector<double>* edgeHeight)
   : FaceRegion(labels)
 {
   const int count = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
@@ -336,8 +335,8 @@ void RegionAdjacency::merge(int from, int into)
     }
     else
     {
-      list.insert(std::lower_bound(list.begin(), list.end(), into,
-                    [](const auto& p, int value) { return p.first < value; }),
+      list.insert(
+        std::lower_bound(list.begin(), list.end(), into, [](const auto& p, int value) { return p.first < value; }),
         { into, boundary });
     }
   }
@@ -387,8 +386,8 @@ namespace
 {
 // Live regions by increasing area (ties by index), re-checked as they come off the heap.
 template <typename Stop>
-void mergeSmallestFirst(RegionAdjacency& regions, const Stop& stop,
-  const std::function<int(const RegionAdjacency&, int)>& chooser)
+void mergeSmallestFirst(
+  RegionAdjacency& regions, const Stop& stop, const std::function<int(const RegionAdjacency&, int)>& chooser)
 {
   using Entry = std::pair<double, int>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
@@ -422,16 +421,16 @@ void mergeSmallestFirst(RegionAdjacency& regions, const Stop& stop,
 }
 } // namespace
 
-void mergeSmallRegions(RegionAdjacency& regions, double minimumArea,
-  const std::function<int(const RegionAdjacency&, int)>& chooser)
+void mergeSmallRegions(
+  RegionAdjacency& regions, double minimumArea, const std::function<int(const RegionAdjacency&, int)>& chooser)
 {
   mergeSmallestFirst(
     regions, [minimumArea](const RegionAdjacency& r, int smallest) { return r.area(smallest) >= minimumArea; },
     chooser);
 }
 
-void mergeSmallestUntil(RegionAdjacency& regions, int count,
-  const std::function<int(const RegionAdjacency&, int)>& chooser)
+void mergeSmallestUntil(
+  RegionAdjacency& regions, int count, const std::function<int(const RegionAdjacency&, int)>& chooser)
 {
   mergeSmallestFirst(
     regions, [count](const RegionAdjacency& r, int) { return r.liveCount() <= count; },
@@ -495,17 +494,16 @@ std::vector<int> segmentsPerComponent(const FaceGraph& graph, int k)
   return share;
 }
 
-std::vector<int> segmentComponents(const FaceGraph& graph, int k,
-  const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent)
+std::vector<int> segmentComponents(
+  const FaceGraph& graph, int k, const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent)
 {
   const TriangleMesh& mesh = graph.mesh();
   if (graph.componentCount() == 1)
   {
     return segmentComponent(mesh, k);
   }
-  const std::vector<int> shares = k >= graph.componentCount()
-    ? segmentsPerComponent(graph, k)
-    : std::vector<int>(graph.componentCount(), 1);
+  const std::vector<int> shares =
+    k >= graph.componentCount() ? segmentsPerComponent(graph, k) : std::vector<int>(graph.componentCount(), 1);
   std::vector<int> labels(graph.faceCount(), 0);
   int offset = 0;
   for (int c = 0; c < graph.componentCount(); ++c)
@@ -547,8 +545,8 @@ std::vector<int> segmentComponents(const FaceGraph& graph, int k,
   return numberByFirstFace(labels);
 }
 
-std::vector<int> segmentSurfaceComponents(const Surface& surface, int k,
-  const std::function<std::vector<int>(const Surface&, int)>& segmentComponent)
+std::vector<int> segmentSurfaceComponents(
+  const Surface& surface, int k, const std::function<std::vector<int>(const Surface&, int)>& segmentComponent)
 {
   const FaceGraph& graph = faceGraph(surface);
   if (graph.componentCount() == 1)

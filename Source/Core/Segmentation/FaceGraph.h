@@ -1,4 +1,5 @@
-// The dual graph of a triangle mesh (faces joined across manifold edges) with the geometry every face-clustering method reads.
+// The dual graph of a triangle mesh (faces joined across manifold edges) with the geometry every face-clustering method
+// reads.
 #pragma once
 
 #include "Mesh/TriangleMesh.h"
@@ -45,7 +46,10 @@ public:
   /// The dual edges of face f (at most 3).
   const std::array<int, 3>& faceEdges(int f) const { return this->FaceDualEdges[f]; }
   /// The face across dual edge e from f.
-  int opposite(int e, int f) const { return this->Edges[e].faces[0] == f ? this->Edges[e].faces[1] : this->Edges[e].faces[0]; }
+  int opposite(int e, int f) const
+  {
+    return this->Edges[e].faces[0] == f ? this->Edges[e].faces[1] : this->Edges[e].faces[0];
+  }
 
   double area(int f) const { return this->Areas[f]; }
   const std::vector<double>& areas() const { return this->Areas; }
@@ -87,8 +91,8 @@ struct DualDistances
   std::vector<double> distance;
   std::vector<int> nearest;
 };
-DualDistances dualDijkstra(const FaceGraph& graph, const std::vector<double>& edgeLengths, const std::vector<int>& sources,
-  double limit = std::numeric_limits<double>::infinity());
+DualDistances dualDijkstra(const FaceGraph& graph, const std::vector<double>& edgeLengths,
+  const std::vector<int>& sources, double limit = std::numeric_limits<double>::infinity());
 
 /// Relabels so that every label is one connected set of faces (a label spread over several
 /// pieces becomes several labels), numbered in order of first face.
@@ -111,8 +115,8 @@ public:
 
   /// Regions are the labels (0..count-1, every face labelled); `edgeHeight` (per dual edge) is
   /// optional and feeds Boundary::lowestHeight.
-  RegionAdjacency(const FaceGraph& graph, const std::vector<int>& labels,
-    const std::vector<double>* edgeHeight = nullptr);
+  RegionAdjacency(
+    const FaceGraph& graph, const std::vector<int>& labels, const std::vector<double>* edgeHeight = nullptr);
 
   int regionCount() const { return static_cast<int>(this->Areas.size()); }
   /// Regions not merged into another yet.
@@ -142,14 +146,14 @@ private:
 
 /// Merges, smallest area first, every region below `minimumArea` into the neighbour `chooser`
 /// picks (largestNeighbour or longestBoundaryNeighbour); regions without neighbours stay.
-void mergeSmallRegions(RegionAdjacency& regions, double minimumArea,
-  const std::function<int(const RegionAdjacency&, int)>& chooser);
+void mergeSmallRegions(
+  RegionAdjacency& regions, double minimumArea, const std::function<int(const RegionAdjacency&, int)>& chooser);
 
 /// Merges the smallest region (by area) into the neighbour `chooser` picks (by default the one it
 /// shares the longest boundary with) until at most `count` regions remain (or no region has a
 /// neighbour left).
-void mergeSmallestUntil(RegionAdjacency& regions, int count,
-  const std::function<int(const RegionAdjacency&, int)>& chooser = nullptr);
+void mergeSmallestUntil(
+  RegionAdjacency& regions, int count, const std::function<int(const RegionAdjacency&, int)>& chooser = nullptr);
 
 /// The clean-up every method ends with: segments split into connected pieces, then the smallest
 /// pieces merged into the neighbour with the longest shared boundary until `k` remain (never fewer
@@ -163,12 +167,12 @@ std::vector<int> segmentsPerComponent(const FaceGraph& graph, int k);
 /// Runs `segmentComponent` on every dual-graph component as a mesh of its own, asking each for its
 /// share of k (segmentsPerComponent; one segment each when k is smaller than the number of
 /// components), and joins the labels. `segmentComponent` gets the component's mesh and its k.
-std::vector<int> segmentComponents(const FaceGraph& graph, int k,
-  const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent);
+std::vector<int> segmentComponents(
+  const FaceGraph& graph, int k, const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent);
 
 /// segmentComponents for methods that read a kerf::Surface (and what it caches): a connected
 /// surface is handed over itself, each component of another as a Surface of its own.
-std::vector<int> segmentSurfaceComponents(const Surface& surface, int k,
-  const std::function<std::vector<int>(const Surface&, int)>& segmentComponent);
+std::vector<int> segmentSurfaceComponents(
+  const Surface& surface, int k, const std::function<std::vector<int>(const Surface&, int)>& segmentComponent);
 
 } // namespace kerf

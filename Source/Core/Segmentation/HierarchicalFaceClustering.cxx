@@ -2,9 +2,9 @@
 #include "Segmentation/HierarchicalFaceClustering.h"
 
 #include "Error.h"
+#include "Mesh/UnionFind.h"
 #include "Numerics/HugePages.h"
 #include "Session/Surface.h"
-#include "Mesh/UnionFind.h"
 
 #include <Eigen/Eigenvalues>
 
@@ -62,7 +62,8 @@ double irregularity(double perimeter, double area)
 double shapeError(const ClusterState& x, const ClusterState& y, double shared, double area)
 {
   const double gamma = irregularity(x.perimeter + y.perimeter - 2.0 * shared, area);
-  return gamma > 0.0 ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma : 0.0;
+  return gamma > 0.0 ? (gamma - std::max(irregularity(x.perimeter, x.area), irregularity(y.perimeter, y.area))) / gamma
+                     : 0.0;
 }
 
 // E = E_fit + a1 E_dir + a2 E_shape of joining x and y, which share a boundary of length `shared`;
@@ -455,8 +456,8 @@ public:
       }
       if (!contracted.exact)
       {
-        contracted.key = contractionCost(clusters[contracted.x], clusters[contracted.y], contracted.length, options,
-          contracted.smallestEigenvalue);
+        contracted.key = contractionCost(
+          clusters[contracted.x], clusters[contracted.y], contracted.length, options, contracted.smallestEigenvalue);
         contracted.exact = true;
         contracted.heapKey = contracted.key;
         ++this->evaluations;
@@ -703,7 +704,8 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
       seeds.push_back({ dual.faces[0], dual.faces[1], dual.length * scale });
     }
     merges.reserve(static_cast<std::size_t>(n) - 1);
-    contraction.run(clusters, summaries, seeds, static_cast<std::size_t>(n), std::numeric_limits<double>::infinity(), options, merges);
+    contraction.run(clusters, summaries, seeds, static_cast<std::size_t>(n), std::numeric_limits<double>::infinity(),
+      options, merges);
     HugePageVector<int> node(n);
     std::iota(node.begin(), node.end(), 0);
     for (const Contraction& m : merges)
@@ -801,7 +803,7 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   std::vector<int> survivors, survivorNodes;
   HugePageVector<ClusterState> survivorClusters;
   HugePageVector<ClusterSummary> survivorSummaries;
-  HugePageVector<int> clusterOf(n); // per face, its cluster's index in `survivors`
+  HugePageVector<int> clusterOf(n);  // per face, its cluster's index in `survivors`
   std::vector<std::size_t> blockEnd; // per block, the end of its contractions in `merges`
   {
     std::vector<int> localNode, localParent, localSurvivor;
@@ -848,7 +850,9 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   }
   // The blocks' contractions into the tree by their running maxima of cost (each block in its order).
   HugePageVector<int> treeIndex(merges.size()); // per position in `merges`, its merge in the tree
-  const auto treeNode = [&](int child) { return child >= 0 ? child : n + treeIndex[static_cast<std::size_t>(-1 - child)]; };
+  const auto treeNode = [&](int child) {
+    return child >= 0 ? child : n + treeIndex[static_cast<std::size_t>(-1 - child)];
+  };
   {
     using Next = std::pair<double, std::size_t>; // (running maximum, block)
     std::priority_queue<Next, std::vector<Next>, std::greater<Next>> next;
@@ -904,8 +908,9 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
       crossings.push_back({ std::min(a, b), std::max(a, b), e });
     }
   }
-  std::sort(crossings.begin(), crossings.end(),
-    [](const Crossing& p, const Crossing& q) { return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.edge < q.edge); });
+  std::sort(crossings.begin(), crossings.end(), [](const Crossing& p, const Crossing& q) {
+    return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.edge < q.edge);
+  });
   HugePageVector<PairSeed> seeds;
   for (const Crossing& c : crossings)
   {
@@ -921,7 +926,8 @@ FaceClusterHierarchy buildFaceClusterHierarchy(const FaceGraph& graph, const Hie
   }
   const std::size_t first = merges.size();
   contraction.keepLists = false;
-  contraction.run(clusters, summaries, seeds, clusters.size(), std::numeric_limits<double>::infinity(), options, merges);
+  contraction.run(
+    clusters, summaries, seeds, clusters.size(), std::numeric_limits<double>::infinity(), options, merges);
   for (std::size_t i = first; i < merges.size(); ++i)
   {
     record(hierarchy, clusterNode, merges[i].keep, merges[i].gone, merges[i].cost);

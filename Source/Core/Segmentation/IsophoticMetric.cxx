@@ -43,8 +43,8 @@ void checkIsophoticMetricOptions(const IsophoticMetricOptions& options)
   {
     if (!std::isfinite(value) || value < 0.0)
     {
-      throw Error(std::string("the metric's ") + name + " must be a finite non-negative number, not " +
-        std::to_string(value));
+      throw Error(
+        std::string("the metric's ") + name + " must be a finite non-negative number, not " + std::to_string(value));
     }
   }
 }

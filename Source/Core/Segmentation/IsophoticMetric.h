@@ -61,10 +61,10 @@ double unitBoxScale(const TriangleMesh& mesh);
 
 /// The metric's length of every edge (indexed as mesh edges), in the input's units:
 ///   d(p, q) = |p - q| + w |n_p - n_q| + w* f(k_pq) |p - q|        (Ji et al. 2006, section 3)
-/// (without the last factor |p - q| with options.curvaturePerEdge), evaluated on the mesh scaled into a unit bounding box (lengths divided and curvatures
-/// multiplied by s = unitBoxScale) and multiplied by s again, so that where the surface is flat
-/// the length is the Euclidean one. k_pq, the normal curvature along pq, is the mean of Euler's
-/// formula at p and at q (so d(p, q) = d(q, p)). Throws kerf::Error for invalid options.
+/// (without the last factor |p - q| with options.curvaturePerEdge), evaluated on the mesh scaled into a unit bounding
+/// box (lengths divided and curvatures multiplied by s = unitBoxScale) and multiplied by s again, so that where the
+/// surface is flat the length is the Euclidean one. k_pq, the normal curvature along pq, is the mean of Euler's formula
+/// at p and at q (so d(p, q) = d(q, p)). Throws kerf::Error for invalid options.
 std::vector<double> isophoticEdgeLengths(
   const TriangleMesh& mesh, const SurfaceDescriptors& descriptors, const IsophoticMetricOptions& options);
 

@@ -1,4 +1,5 @@
-// Multi-label random walks from labelled seed vertices: each vertex and face to the label a walk from it most likely reaches first.
+// Multi-label random walks from labelled seed vertices: each vertex and face to the label a walk from it most likely
+// reaches first.
 #pragma once
 
 #include "Mesh/TriangleMesh.h"

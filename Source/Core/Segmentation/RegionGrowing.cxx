@@ -10,14 +10,14 @@
 
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
 #include <queue>
 #include <set>
 #include <sstream>
-#include <cstdint>
 #include <unordered_map>
 #include <utility>
 
@@ -194,7 +194,8 @@ void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLeng
   using Entry = std::pair<double, int>;
   std::vector<Entry> heapStorage;
   heapStorage.reserve(static_cast<std::size_t>(mesh.vertexCount()));
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(std::greater<Entry>(), std::move(heapStorage));
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(
+    std::greater<Entry>(), std::move(heapStorage));
   for (std::size_t i = 0; i < seeds.vertices.size(); ++i)
   {
     const int v = seeds.vertices[i];
@@ -233,7 +234,8 @@ void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLeng
   }
 }
 
-NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds)
+NearestLabels nearestTwoLabels(
+  const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds)
 {
   if (static_cast<int>(edgeLengths.size()) != mesh.edgeCount())
   {
@@ -253,7 +255,8 @@ NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<doubl
   using Entry = std::pair<double, std::uint64_t>;
   std::vector<Entry> heapStorage;
   heapStorage.reserve(2 * n);
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(std::greater<Entry>(), std::move(heapStorage));
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(
+    std::greater<Entry>(), std::move(heapStorage));
   auto push = [&queue](double d, int v, int l) {
     queue.emplace(d, static_cast<std::uint64_t>(l) << 32 | static_cast<std::uint32_t>(v));
   };
@@ -630,7 +633,8 @@ void placeCutsOnWalks(const TriangleMesh& mesh, const CutPlacementOptions& optio
     int best = 0;
     for (int i = 1; i < used; ++i)
     {
-      if (sums[i].second > sums[best].second || (sums[i].second == sums[best].second && sums[i].first < sums[best].first))
+      if (sums[i].second > sums[best].second ||
+        (sums[i].second == sums[best].second && sums[i].first < sums[best].first))
       {
         best = i;
       }
@@ -663,7 +667,8 @@ void placeCutsOnWalks(const TriangleMesh& mesh, const CutPlacementOptions& optio
     }
     // Sorted, absent neighbours (-1) first: a label held twice sits in two adjacent places;
     // otherwise the smallest label present.
-    int label = around[1] >= 0 && around[1] == around[2] ? around[1] : (around[0] >= 0 && around[0] == around[1] ? around[0] : -1);
+    int label = around[1] >= 0 && around[1] == around[2] ? around[1]
+                                                         : (around[0] >= 0 && around[0] == around[1] ? around[0] : -1);
     if (label < 0)
     {
       label = around[0] >= 0 ? around[0] : (around[1] >= 0 ? around[1] : around[2]);

@@ -1,8 +1,8 @@
 // Region growing from labelled strokes under the improved isophotic metric (Easy Mesh Cutting, section 4.2).
 #pragma once
 
-#include "Numerics/LaplacianWeights.h"
 #include "Mesh/TriangleMesh.h"
+#include "Numerics/LaplacianWeights.h"
 #include "Segmentation/IsophoticMetric.h"
 
 #include <string>
@@ -36,9 +36,9 @@ struct StrokeSeeds
 /// (kerf::snapToVertex), and each segment between consecutive points sampled every half mean
 /// edge length, each sample snapped the same way, so that the vertices the segment crosses are
 /// marked too (where two consecutive ones are not neighbours, also their common neighbour nearest
-/// to their midpoint, so that a stroke marks a chain of vertices wherever one exists). Throws kerf::Error for no stroke, a stroke without points, NaN coordinates, a
-/// negative label, or a point farther than `maximumDistance` (length units; 0: no limit) from
-/// the surface.
+/// to their midpoint, so that a stroke marks a chain of vertices wherever one exists). Throws kerf::Error for no
+/// stroke, a stroke without points, NaN coordinates, a negative label, or a point farther than `maximumDistance`
+/// (length units; 0: no limit) from the surface.
 StrokeSeeds snapStrokes(const TriangleMesh& mesh, const ClosestPointLocator& locator,
   const std::vector<LabelledStroke>& strokes, double maximumDistance);
 
@@ -144,7 +144,8 @@ struct NearestLabels
   std::vector<int> first, second;
   std::vector<double> firstDistance, secondDistance;
 };
-NearestLabels nearestTwoLabels(const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds);
+NearestLabels nearestTwoLabels(
+  const TriangleMesh& mesh, const std::vector<double>& edgeLengths, const StrokeSeeds& seeds);
 
 /// Cut placement, an addition to the paper's growing (and, with 1 - p as the distance, the last
 /// step of the random walks): where the fronts of two labels meet, the

@@ -1,4 +1,5 @@
-// Snakes on a mesh from a labelling: vertex labels and one snaxel per cut edge, slid, split and edited (Ji et al. 2006, section 5).
+// Snakes on a mesh from a labelling: vertex labels and one snaxel per cut edge, slid, split and edited (Ji et al. 2006,
+// section 5).
 #include "Segmentation/SnakeRefinement.h"
 
 #include "Error.h"
@@ -10,8 +11,8 @@
 
 #include <algorithm>
 #include <array>
-#include <iterator>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <sstream>
@@ -208,12 +209,13 @@ void BoundarySnake::updateCutEdges() const
     std::sort(this->CutCandidates.begin(), this->CutCandidates.end());
     std::vector<int> merged;
     merged.reserve(this->CutEdges.size() + this->CutCandidates.size());
-    std::set_union(this->CutEdges.begin(), this->CutEdges.end(), this->CutCandidates.begin(),
-      this->CutCandidates.end(), std::back_inserter(merged));
+    std::set_union(this->CutEdges.begin(), this->CutEdges.end(), this->CutCandidates.begin(), this->CutCandidates.end(),
+      std::back_inserter(merged));
     this->CutEdges.swap(merged);
     this->CutCandidates.clear();
   }
-  this->CutEdges.erase(std::remove_if(this->CutEdges.begin(), this->CutEdges.end(), [this](int e) { return !this->isCut(e); }),
+  this->CutEdges.erase(
+    std::remove_if(this->CutEdges.begin(), this->CutEdges.end(), [this](int e) { return !this->isCut(e); }),
     this->CutEdges.end());
 }
 
@@ -494,8 +496,7 @@ SnakeStatistics BoundarySnake::refine(const SnakeOptions& options)
         }
         const int runStart = i;
         i += length;
-        if (vertex < 0 || std::find(touched.begin(), touched.end(), vertex) != touched.end() ||
-          !this->canSplit(vertex))
+        if (vertex < 0 || std::find(touched.begin(), touched.end(), vertex) != touched.end() || !this->canSplit(vertex))
         {
           continue;
         }
@@ -723,7 +724,8 @@ void BoundarySnake::overrideWithStroke(const std::vector<Vector3>& stroke, doubl
   {
     if (!stroke[i].allFinite() || stroke[i].cwiseAbs().maxCoeff() > CoordinateLimit)
     {
-      throw Error("point " + std::to_string(i) + " of the override stroke has a NaN, infinite or huge coordinate (beyond 1e50)");
+      throw Error(
+        "point " + std::to_string(i) + " of the override stroke has a NaN, infinite or huge coordinate (beyond 1e50)");
     }
     const ClosestPointLocator::Hit hit = locator.closest(stroke[i]);
     if (maximumDistance > 0.0 && hit.distance > maximumDistance)
@@ -774,7 +776,8 @@ void BoundarySnake::overrideWithStroke(const std::vector<Vector3>& stroke, doubl
   std::vector<char> seen(static_cast<std::size_t>(mesh.vertexCount()), 0);
   for (std::size_t s = 0; s + 1 < path.size(); ++s)
   {
-    const int samples = 1 + static_cast<int>(std::min(1e4, (path[s + 1] - path[s]).norm() / (0.5 * this->MeanEdgeLength)));
+    const int samples =
+      1 + static_cast<int>(std::min(1e4, (path[s + 1] - path[s]).norm() / (0.5 * this->MeanEdgeLength)));
     for (int k = 0; k <= samples; ++k)
     {
       const int v = snapToVertex(mesh, locator.closest(path[s] + (path[s + 1] - path[s]) * (double(k) / samples)));
@@ -814,8 +817,8 @@ void BoundarySnake::overrideWithStroke(const std::vector<Vector3>& stroke, doubl
   }
   if (counts.size() < 2 || sideTotals[0] == 0 || sideTotals[1] == 0)
   {
-    throw Error("the override stroke is not near a boundary: the " + std::to_string(band.size()) +
-      " vertices within " + numberText(radius) + " beside it " +
+    throw Error("the override stroke is not near a boundary: the " + std::to_string(band.size()) + " vertices within " +
+      numberText(radius) + " beside it " +
       (counts.empty() ? std::string("are none") : "have the single label " + std::to_string(counts.begin()->first)));
   }
   std::vector<std::pair<int, int>> byCount; // (-count, label): most frequent first
@@ -825,7 +828,8 @@ void BoundarySnake::overrideWithStroke(const std::vector<Vector3>& stroke, doubl
   }
   std::sort(byCount.begin(), byCount.end());
   const int a = byCount[0].second, b = byCount[1].second;
-  const double leftShareOfA = double(counts[a][0]) / sideTotals[0], rightShareOfA = double(counts[a][1]) / sideTotals[1];
+  const double leftShareOfA = double(counts[a][0]) / sideTotals[0],
+               rightShareOfA = double(counts[a][1]) / sideTotals[1];
   const int leftLabel = leftShareOfA >= rightShareOfA ? a : b;
   const int rightLabel = leftLabel == a ? b : a;
   std::vector<double> previousParameters = this->Parameters;

@@ -1,4 +1,5 @@
-// Boundaries between labels as snakes on the mesh, refined greedily and edited by override strokes (Easy Mesh Cutting, section 5).
+// Boundaries between labels as snakes on the mesh, refined greedily and edited by override strokes (Easy Mesh Cutting,
+// section 5).
 #pragma once
 
 #include "Mesh/TriangleMesh.h"
@@ -43,9 +44,9 @@ struct SnakeStatistics
 struct SnakePoint
 {
   Vector3 position = Vector3::Zero();
-  int edge = -1;    ///< the supporting edge, or -1 for a meeting point
-  double t = 0.0;   ///< from the edge's first vertex (edgeVertices(edge)[0]) to its second
-  int face = -1;    ///< the face of a meeting point, or -1
+  int edge = -1;  ///< the supporting edge, or -1 for a meeting point
+  double t = 0.0; ///< from the edge's first vertex (edgeVertices(edge)[0]) to its second
+  int face = -1;  ///< the face of a meeting point, or -1
 };
 
 /// One boundary curve between two labels: consecutive points lie in a common triangle, coincident
@@ -130,13 +131,13 @@ private:
 
   std::shared_ptr<const Surface> SharedSurface;
   const TriangleMesh& Mesh;
-  std::vector<int> Labels;            ///< per vertex
-  std::vector<double> Parameters;     ///< per edge, meaningful where the edge is cut
-  mutable std::vector<int> CutEdges;  ///< sorted; may hold stale entries until updateCutEdges
+  std::vector<int> Labels;           ///< per vertex
+  std::vector<double> Parameters;    ///< per edge, meaningful where the edge is cut
+  mutable std::vector<int> CutEdges; ///< sorted; may hold stale entries until updateCutEdges
   mutable std::vector<int> CutCandidates;
-  mutable std::vector<char> Visited;  ///< per edge, all 0 between calls of chains()
+  mutable std::vector<char> Visited;   ///< per edge, all 0 between calls of chains()
   const std::vector<Vector3>& Normals; ///< the surface's cached vertex normals
-  std::vector<double> TotalCurvature; ///< |k_min| + |k_max| per vertex, unit-box scale
+  std::vector<double> TotalCurvature;  ///< |k_min| + |k_max| per vertex, unit-box scale
   double MeanEdgeLength = 0.0;
   double CurvatureOffset = 1.0; ///< of the refinement running
 };

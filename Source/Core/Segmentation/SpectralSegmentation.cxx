@@ -12,8 +12,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <map>
+#include <numeric>
 #include <queue>
 
 namespace kerf
@@ -22,7 +22,8 @@ namespace kerf
 namespace
 {
 // Area-weighted k-means of the rows of `points`, seeded as Liu and Zhang 2004 do.
-std::vector<int> clusterEmbedding(const Eigen::MatrixXd& points, const std::vector<double>& weights, int k, int& iterations)
+std::vector<int> clusterEmbedding(
+  const Eigen::MatrixXd& points, const std::vector<double>& weights, int k, int& iterations)
 {
   const int m = static_cast<int>(points.rows());
   const Eigen::MatrixXd association = points * points.transpose();
@@ -147,8 +148,8 @@ std::vector<int> spectralPatches(const FaceGraph& graph, const SpectralSegmentat
   return patch;
 }
 
-Eigen::MatrixXd spectralAffinity(
-  const FaceGraph& graph, const std::vector<int>& patch, const SpectralSegmentationOptions& options, std::vector<double>& area)
+Eigen::MatrixXd spectralAffinity(const FaceGraph& graph, const std::vector<int>& patch,
+  const SpectralSegmentationOptions& options, std::vector<double>& area)
 {
   const int n = graph.faceCount();
   const int m = *std::max_element(patch.begin(), patch.end()) + 1;
@@ -188,7 +189,8 @@ Eigen::MatrixXd spectralAffinity(
       continue;
     }
     const TriangleMesh& mesh = graph.mesh();
-    const Vector3 middle = 0.5 * (mesh.point(mesh.edgeVertices(d.meshEdge)[0]) + mesh.point(mesh.edgeVertices(d.meshEdge)[1]));
+    const Vector3 middle =
+      0.5 * (mesh.point(mesh.edgeVertices(d.meshEdge)[0]) + mesh.point(mesh.edgeVertices(d.meshEdge)[1]));
     Boundary& boundary = boundaries[std::min(a, b)][std::max(a, b)];
     boundary.length += d.length;
     boundary.angular += d.length * angular[e];
@@ -207,7 +209,8 @@ Eigen::MatrixXd spectralAffinity(
     {
       const double length = std::max(boundary.length, std::numeric_limits<double>::min());
       const Vector3 middle = boundary.middle / length;
-      const PatchEdge edge{ a, b, (centroid[a] - middle).norm() + (centroid[b] - middle).norm(), boundary.angular / length };
+      const PatchEdge edge{ a, b, (centroid[a] - middle).norm() + (centroid[b] - middle).norm(),
+        boundary.angular / length };
       meanGeodesic += edge.geodesic;
       meanPatchAngular += edge.angular;
       patchEdges.push_back(edge);
@@ -319,7 +322,8 @@ Eigen::MatrixXd leadingEigenvectors(const Eigen::MatrixXd& symmetric, int count,
       Eigen::MatrixXd vectors = solver.eigenvectors();
       // Checked, not trusted, as the tridiagonal route checks its own; the infinity norm bounds the
       // spectrum's scale.
-      const double scale = std::max(symmetric.cwiseAbs().rowwise().sum().maxCoeff(), std::numeric_limits<double>::min());
+      const double scale =
+        std::max(symmetric.cwiseAbs().rowwise().sum().maxCoeff(), std::numeric_limits<double>::min());
       const double residual = (symmetric * vectors - vectors * lanczosValues.asDiagonal()).colwise().norm().maxCoeff();
       if (residual <= 1e-8 * scale &&
         (vectors.transpose() * vectors - Eigen::MatrixXd::Identity(count, count)).cwiseAbs().maxCoeff() <= 1e-8)

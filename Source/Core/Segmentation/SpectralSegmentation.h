@@ -52,8 +52,8 @@ std::vector<int> spectralPatches(const FaceGraph& graph, const SpectralSegmentat
 /// The matrix whose leading eigenvectors segmentSpectrally clusters: N = D^-1/2 W D^-1/2 on the
 /// patch graph of `patch` (per face, as spectralPatches gives it), m x m for m patches, with
 /// each patch's area in `area`.
-Eigen::MatrixXd spectralAffinity(
-  const FaceGraph& graph, const std::vector<int>& patch, const SpectralSegmentationOptions& options, std::vector<double>& area);
+Eigen::MatrixXd spectralAffinity(const FaceGraph& graph, const std::vector<int>& patch,
+  const SpectralSegmentationOptions& options, std::vector<double>& area);
 
 /// The eigenvectors of the `count` largest eigenvalues of a symmetric matrix, orthonormal columns
 /// in ascending order of their eigenvalues (as Eigen's SelfAdjointEigenSolver orders them), and

@@ -63,7 +63,8 @@ std::vector<int> drainEdges(const FaceGraph& graph, const std::vector<long long>
     {
       int lowest = -1;
       forEachEdgeNeighbour(graph, e, [&](int o) {
-        if (level[o] < level[e] && (lowest < 0 || level[o] < level[lowest] || (level[o] == level[lowest] && o < lowest)))
+        if (level[o] < level[e] &&
+          (lowest < 0 || level[o] < level[lowest] || (level[o] == level[lowest] && o < lowest)))
         {
           lowest = o;
         }

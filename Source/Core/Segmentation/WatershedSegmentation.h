@@ -24,8 +24,8 @@ struct WatershedOptions
 
 struct WatershedResult
 {
-  std::vector<int> labels;  ///< per face, numbered by first face
-  int basins = 0;           ///< catchment basins (minima) before merging
+  std::vector<int> labels; ///< per face, numbered by first face
+  int basins = 0;          ///< catchment basins (minima) before merging
   int segmentCount = 0;
 };
 

@@ -18,8 +18,8 @@ Surface::~Surface() = default;
 const ClosestPointLocator& Surface::locator() const
 {
   // The locator is not copyable (it refers to the mesh): hold it through a pointer.
-  return *this->derived<std::shared_ptr<const ClosestPointLocator>>("locator",
-    [this] { return std::make_shared<const ClosestPointLocator>(this->Mesh); });
+  return *this->derived<std::shared_ptr<const ClosestPointLocator>>(
+    "locator", [this] { return std::make_shared<const ClosestPointLocator>(this->Mesh); });
 }
 
 const std::vector<Vector3>& Surface::vertexNormals() const

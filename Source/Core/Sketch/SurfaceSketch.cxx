@@ -1,4 +1,5 @@
-// Screen samples on a depth image taken back to space: stroke pieces split at the background and at depth jumps, simplification, walks and disc rims.
+// Screen samples on a depth image taken back to space: stroke pieces split at the background and at depth jumps,
+// simplification, walks and disc rims.
 #include "Sketch/SurfaceSketch.h"
 
 #include "Error.h"
@@ -36,7 +37,8 @@ std::optional<double> DepthImage::depth(double x, double y) const
     return std::nullopt;
   }
   auto at = [this](int column, int row) {
-    return this->Depth[static_cast<std::size_t>(row) * static_cast<std::size_t>(this->Width) + static_cast<std::size_t>(column)];
+    return this
+      ->Depth[static_cast<std::size_t>(row) * static_cast<std::size_t>(this->Width) + static_cast<std::size_t>(column)];
   };
   // Bilinear between the four pixels around (x, y) where all four show the surface, so that a
   // walk's steps follow the surface smoothly in any direction; else the nearest pixel.
@@ -49,7 +51,8 @@ std::optional<double> DepthImage::depth(double x, double y) const
     {
       const double fx = x - column;
       const double fy = y - row;
-      return (1.0 - fy) * ((1.0 - fx) * corners[0] + fx * corners[1]) + fy * ((1.0 - fx) * corners[2] + fx * corners[3]);
+      return (1.0 - fy) * ((1.0 - fx) * corners[0] + fx * corners[1]) +
+        fy * ((1.0 - fx) * corners[2] + fx * corners[3]);
     }
   }
   const float nearest = at(static_cast<int>(std::lround(x)), static_cast<int>(std::lround(y)));
@@ -227,8 +230,8 @@ std::vector<Vector3> simplifyPolyline(const std::vector<Vector3>& points, double
   return simplified;
 }
 
-SurfaceWalk walkOnSurface(const DepthImage& image, double x0, double y0, double x1, double y1,
-  const SketchOptions& options, double limit)
+SurfaceWalk walkOnSurface(
+  const DepthImage& image, double x0, double y0, double x1, double y1, const SketchOptions& options, double limit)
 {
   SurfaceWalk walk;
   const std::optional<Vector3> start = image.surfacePoint(x0, y0);
@@ -289,7 +292,8 @@ double dragRadius(const DepthImage& image, double x0, double y0, double x1, doub
   {
     return walk.length;
   }
-  return walk.length + std::hypot(x1 - walk.stopX, y1 - walk.stopY) * image.pixelSize(walk.stopX, walk.stopY, walk.stopDepth);
+  return walk.length +
+    std::hypot(x1 - walk.stopX, y1 - walk.stopY) * image.pixelSize(walk.stopX, walk.stopY, walk.stopDepth);
 }
 
 std::vector<Vector3> discRim(

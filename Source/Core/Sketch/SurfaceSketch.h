@@ -97,10 +97,10 @@ std::vector<Vector3> simplifyPolyline(const std::vector<Vector3>& points, double
 /// A walk over the visible surface under a straight screen segment.
 struct SurfaceWalk
 {
-  double length = 0.0; ///< the sum of the steps' lengths in space
-  Vector3 end = Vector3::Zero(); ///< the last point on the surface
-  bool reached = false; ///< false when the walk left the surface or crossed a jump before the end
-  bool started = false; ///< false when the segment starts off the surface
+  double length = 0.0;             ///< the sum of the steps' lengths in space
+  Vector3 end = Vector3::Zero();   ///< the last point on the surface
+  bool reached = false;            ///< false when the walk left the surface or crossed a jump before the end
+  bool started = false;            ///< false when the segment starts off the surface
   double stopX = 0.0, stopY = 0.0; ///< the screen position of the last point on the surface
   double stopDepth = 0.0;          ///< and its depth
 };
@@ -108,8 +108,8 @@ struct SurfaceWalk
 /// Walks the screen segment from (x0, y0) to (x1, y1) in steps of options.step pixels, summing
 /// the steps in space (the length of a way over the visible surface: about the geodesic distance
 /// where the screen line follows a geodesic, longer where it bends, and a little short of the
-/// surface's length by the chords it sums); stops where the segment leaves the surface or crosses a jump in depth, or once
-/// the length reaches `limit`.
+/// surface's length by the chords it sums); stops where the segment leaves the surface or crosses a jump in depth, or
+/// once the length reaches `limit`.
 SurfaceWalk walkOnSurface(const DepthImage& image, double x0, double y0, double x1, double y1,
   const SketchOptions& options = SketchOptions(), double limit = -1.0);
 
@@ -118,8 +118,8 @@ SurfaceWalk walkOnSurface(const DepthImage& image, double x0, double y0, double 
 /// away behind a contour, the rest of the screen distance at the scale of the walk's last point,
 /// so that the radius grows with the drag wherever the mouse goes. 0 when (x0, y0) is off the
 /// surface.
-double dragRadius(const DepthImage& image, double x0, double y0, double x1, double y1,
-  const SketchOptions& options = SketchOptions());
+double dragRadius(
+  const DepthImage& image, double x0, double y0, double x1, double y1, const SketchOptions& options = SketchOptions());
 
 /// The rim of a disc of `radius` around the surface point under (x, y), as it shows on the
 /// visible surface: in each of `directions` screen directions, the point where the walk along the

@@ -39,7 +39,6 @@ int main()
     error += std::abs(mean->GetTuple1(i) * radius - 1.0);
   }
   error /= static_cast<double>(mean->GetNumberOfTuples());
-  std::cout << "mean |H R - 1| = " << error << " over " << mean->GetNumberOfTuples() << " points"
-            << std::endl;
+  std::cout << "mean |H R - 1| = " << error << " over " << mean->GetNumberOfTuples() << " points" << std::endl;
   return error < 0.01 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

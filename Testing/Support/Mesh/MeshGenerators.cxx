@@ -24,13 +24,11 @@ TriangleMesh makeIcosphere(double radius, int levels)
     throw Error("icosphere subdivision level must be in [0, 9]");
   }
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Vector3> points = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 },
-    { 0, -1, t }, { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 },
-    { -t, 0, -1 }, { -t, 0, 1 } };
-  std::vector<Triangle> triangles = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 },
-    { 0, 10, 11 }, { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 },
-    { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 },
-    { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
+  std::vector<Vector3> points = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 }, { 0, -1, t }, { 0, 1, t },
+    { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
+  std::vector<Triangle> triangles = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 }, { 1, 5, 9 },
+    { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 }, { 3, 2, 6 }, { 3, 6, 8 },
+    { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 }, { 9, 8, 1 } };
   for (Vector3& p : points)
   {
     p.normalize();
@@ -127,8 +125,7 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings)
     for (int i = 0; i < around; ++i)
     {
       const int i1 = (i + 1) % around;
-      const int a = j * around + i, b = j * around + i1, c = (j + 1) * around + i1,
-                d = (j + 1) * around + i;
+      const int a = j * around + i, b = j * around + i1, c = (j + 1) * around + i1, d = (j + 1) * around + i;
       triangles.push_back({ a, b, c });
       triangles.push_back({ a, c, d });
     }
@@ -136,8 +133,8 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings)
   return TriangleMesh(std::move(points), std::move(triangles));
 }
 
-TriangleMesh makeBumpyCylinder(double radius, double height, int around, int rings, int bumps,
-  double bumpHeight, double bumpRadius, double bumpSize)
+TriangleMesh makeBumpyCylinder(
+  double radius, double height, int around, int rings, int bumps, double bumpHeight, double bumpRadius, double bumpSize)
 {
   const TriangleMesh cylinder = makeCylinder(radius, height, around, rings);
   if (bumps < 0 || !(bumpRadius > 0.0))
@@ -213,8 +210,8 @@ TriangleMesh makeSlitCylinder(double radius, double height, int around, int ring
   return TriangleMesh(std::move(points), grid.triangles());
 }
 
-TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outerDistance, double angle,
-  int columns, int rows)
+TriangleMesh makeConeSector(
+  double halfAngle, double innerDistance, double outerDistance, double angle, int columns, int rows)
 {
   const TriangleMesh grid = makeGrid(outerDistance - innerDistance, angle, columns, rows);
   std::vector<Vector3> points = grid.points();
@@ -222,7 +219,8 @@ TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outer
   {
     const double distance = innerDistance + p.x();
     const double around = p.y();
-    p = distance * Vector3(std::sin(halfAngle) * std::cos(around), std::sin(halfAngle) * std::sin(around), std::cos(halfAngle));
+    p = distance *
+      Vector3(std::sin(halfAngle) * std::cos(around), std::sin(halfAngle) * std::sin(around), std::cos(halfAngle));
   }
   return TriangleMesh(std::move(points), grid.triangles());
 }
@@ -256,8 +254,8 @@ TriangleMesh makeJitteredGrid(int cells, double jitter, unsigned seed)
   return TriangleMesh(points, grid.triangles());
 }
 
-double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& lobeRadii,
-  double neckHeight, double neckDepth)
+double dumbbellRadius(
+  double z, double halfLength, const std::array<double, 2>& lobeRadii, double neckHeight, double neckDepth)
 {
   const double s = std::clamp(z / halfLength, -1.0, 1.0);
   const double neck = neckHeight / halfLength;
@@ -268,8 +266,8 @@ double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& 
   return std::sqrt(std::max(0.0, 1.0 - s * s)) * lobe * pinch;
 }
 
-TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
-  double neckHeight, double neckDepth, int levels)
+TriangleMesh makeDumbbell(
+  double halfLength, const std::array<double, 2>& lobeRadii, double neckHeight, double neckDepth, int levels)
 {
   const TriangleMesh sphere = makeIcosphere(1.0, levels);
   std::vector<Vector3> points = sphere.points();

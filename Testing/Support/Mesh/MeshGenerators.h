@@ -24,8 +24,8 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings);
 /// makeCylinder with `bumps` round bumps evenly spaced around z (the first on the +x axis) at
 /// height `bumpHeight`: a point at distance d (measured on the unrolled cylinder) from the nearest
 /// bump's centre moves outward by bumpSize * (1 - (d / bumpRadius)^2)^2 where d < bumpRadius.
-TriangleMesh makeBumpyCylinder(double radius, double height, int around, int rings, int bumps,
-  double bumpHeight, double bumpRadius, double bumpSize);
+TriangleMesh makeBumpyCylinder(double radius, double height, int around, int rings, int bumps, double bumpHeight,
+  double bumpRadius, double bumpSize);
 
 /// Per-vertex seam-carving regions along z (Dekkers and Kobbelt 2014, 3.1): 2 (handle) where
 /// z <= handleTop, 0 (fixed) where z >= fixedBottom, 1 (modeling) between.
@@ -50,8 +50,8 @@ TriangleMesh makeSlitCylinder(double radius, double height, int around, int ring
 /// distances [innerDistance, outerDistance] from the apex and angles [0, angle] about z,
 /// `columns` x `rows` cells. A disk whose quads are planar trapezoids (two rulings through the
 /// apex span a plane): it unrolls without distortion.
-TriangleMesh makeConeSector(double halfAngle, double innerDistance, double outerDistance, double angle,
-  int columns, int rows);
+TriangleMesh makeConeSector(
+  double halfAngle, double innerDistance, double outerDistance, double angle, int columns, int rows);
 
 /// Per triangle, the octant of its centroid (1 if x > 0, plus 2 if y > 0, plus 4 if z > 0): chart
 /// labels for tests, eight disks on a sphere centred at the origin.
@@ -61,8 +61,8 @@ std::vector<int> octantLabels(const TriangleMesh& mesh);
 /// [-halfLength, halfLength], with radius `lobeRadii[0]` below the neck and `lobeRadii[1]` above
 /// it (blended smoothly), pinched by the factor (1 - neckDepth) around z = neckHeight. A surface
 /// of revolution about the z axis, closed and outward oriented, with a concave neck.
-TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRadii,
-  double neckHeight, double neckDepth, int levels);
+TriangleMesh makeDumbbell(
+  double halfLength, const std::array<double, 2>& lobeRadii, double neckHeight, double neckDepth, int levels);
 
 /// A sphere of radius 1 (an icosphere with `levels` subdivisions) with `count` fingers in the
 /// xy plane, evenly spaced around z from the +x axis: a point at angle alpha from the nearest
@@ -71,7 +71,7 @@ TriangleMesh makeDumbbell(double halfLength, const std::array<double, 2>& lobeRa
 TriangleMesh makeProtrusions(int count, double length, double width, int levels);
 
 /// The radius of makeDumbbell's surface at height z (the profile it is built from).
-double dumbbellRadius(double z, double halfLength, const std::array<double, 2>& lobeRadii,
-  double neckHeight, double neckDepth);
+double dumbbellRadius(
+  double z, double halfLength, const std::array<double, 2>& lobeRadii, double neckHeight, double neckDepth);
 
 } // namespace kerf
