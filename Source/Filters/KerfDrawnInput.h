@@ -2,7 +2,7 @@
 // input.
 #pragma once
 
-#include "Geodesic/RoiScissor.h"
+#include "Geodesic/ROIScissor.h"
 #include "KerfPanelPoints.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Sketch/SurfaceSketch.h"
@@ -130,8 +130,8 @@ PanelLabelledStrokes PanelLabelled(const DrawnStrokeList& drawn,
 /// the surface they may be.
 struct DiscClicks
 {
-  std::vector<RoiClick> added;
-  std::vector<RoiClick> subtracted;
+  std::vector<ROIClick> added;
+  std::vector<ROIClick> subtracted;
   /// The farthest a click of the click input may be from the surface, as a fraction of the
   /// bounding-box diagonal (infinity: no limit).
   double tolerance = 0.0;

@@ -3,7 +3,7 @@
 
 #include "Mesh/MeshValidation.h"
 #include "Mesh/TriangleMesh.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>

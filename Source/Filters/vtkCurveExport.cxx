@@ -10,7 +10,7 @@
 #include "KerfParameterChecks.h"
 #include "KerfSurfaceInput.h"
 #include "Mesh/SplitAlongFaceLabels.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>

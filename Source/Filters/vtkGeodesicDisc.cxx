@@ -2,7 +2,7 @@
 // and distance out.
 #include "vtkGeodesicDisc.h"
 
-#include "Geodesic/RoiScissor.h"
+#include "Geodesic/ROIScissor.h"
 #include "KerfDrawnInput.h"
 #include "KerfFilterBorder.h"
 #include "KerfOutputArrays.h"

@@ -3,7 +3,7 @@
 #include "vtkGeodesicSeam.h"
 
 #include "Error.h"
-#include "Geodesic/Seams.h"
+#include "Geodesic/GeodesicSeam.h"
 #include "KerfFilterBorder.h"
 #include "KerfInputArrays.h"
 #include "KerfOutputArrays.h"

@@ -2,7 +2,7 @@
 // labels and boundary out.
 #include "vtkROIScissor.h"
 
-#include "Geodesic/RoiScissor.h"
+#include "Geodesic/ROIScissor.h"
 #include "KerfDrawnInput.h"
 #include "KerfFilterBorder.h"
 #include "KerfOutputArrays.h"
@@ -55,14 +55,14 @@ int vtkROIScissor::RequestData(vtkInformation*, vtkInformationVector** inputVect
     kerf::ClickDistances& distances = this->State->surface.SessionFor(this->State->clickDistances);
     const kerf::DiscClicks clicks =
       kerf::ReadDiscClicks(distances.surface(), this, *this->DrawnDiscs, vtkPointSet::GetData(inputVector[1], 0));
-    kerf::RoiScissorOptions options;
+    kerf::ROIScissorOptions options;
     options.innerFraction = kerf::Finite(this->InnerFraction, "InnerFraction");
     options.isolineCount = this->IsolineCount;
     options.segmentFraction = kerf::Finite(this->SegmentFraction, "SegmentFraction");
     options.paths.metric.gamma = kerf::Finite(this->Gamma, "Gamma");
     options.clickTolerance = clicks.tolerance;
     this->UpdateProgress(0.1);
-    const kerf::RoiScissorResult result =
+    const kerf::ROIScissorResult result =
       kerf::roiScissor(distances.surface(), clicks.added, clicks.subtracted, options, &distances);
     this->UpdateProgress(0.9);
 

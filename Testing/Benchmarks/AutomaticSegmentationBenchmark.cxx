@@ -29,7 +29,7 @@
 #include "Segmentation/EnsembleSegmentation.h"
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <benchmark/benchmark.h>
 

@@ -30,7 +30,7 @@
 #include "Segmentation/IsophoticMetric.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Segmentation/SnakeRefinement.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <vtkCellArray.h>
 #include <vtkNew.h>

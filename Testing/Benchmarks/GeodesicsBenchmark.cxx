@@ -43,13 +43,13 @@
 #include "KerfBenchmarks.h"
 
 #include "Geodesic/GeodesicPaths.h"
+#include "Geodesic/GeodesicSeam.h"
 #include "Geodesic/HeatGeodesics.h"
-#include "Geodesic/RoiScissor.h"
-#include "Geodesic/Seams.h"
+#include "Geodesic/ROIScissor.h"
 #include "Geometry/ClosestPoint.h"
 #include "Harmonic/Isolines.h"
 #include "Mesh/MeshGenerators.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <benchmark/benchmark.h>
 
@@ -98,7 +98,7 @@ struct Scene
   vtkSmartPointer<vtkPolyData> polyData;
   kerf::SurfaceCurve neck;
   std::vector<kerf::SurfacePoint> targets;
-  kerf::RoiClick click;
+  kerf::ROIClick click;
 };
 
 const Scene& sceneFor(const GeodesicSize& size)

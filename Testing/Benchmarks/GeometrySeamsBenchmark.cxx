@@ -10,7 +10,7 @@
 //   BM_GeometrySeamsExhaustive/<size>  the same with the paper's loop, one max-flow per edge of
 //                                      the sector contour, for the first ring only (15 rings take
 //                                      about 15 times as long: each ring repeats the loop)
-//   BM_SeamCarvingSession/<size>       kerf::GeometrySeamCarving's set-up on the 15 rings (rest
+//   BM_SeamCarvingSurface/<size>       kerf::GeometrySeamCarving's set-up on the 15 rings (rest
 //                                      OpenMesh copy, rungs and sides, first factorization)
 //   BM_SeamCarvingUpdate/<size>        one handle update that changes no seam: the handle
 //                                      moves by +-1e-4 around a stretch of one ring height
@@ -230,7 +230,7 @@ void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes)
         [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::GlobalCutFirst, 15); }),
       benchmark::RegisterBenchmark(("BM_GeometrySeamsExhaustive/" + label).c_str(),
         [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::Exhaustive, 1); }),
-      benchmark::RegisterBenchmark(("BM_SeamCarvingSession/" + label).c_str(), seamCarvingSession, size),
+      benchmark::RegisterBenchmark(("BM_SeamCarvingSurface/" + label).c_str(), seamCarvingSession, size),
       benchmark::RegisterBenchmark(("BM_SeamCarvingUpdate/" + label).c_str(),
         [size](benchmark::State& state) {
           seamCarvingUpdate(state, size, 1.0, 1.0 + 1e-4 / (size.height / (size.rings - 1)));

@@ -13,7 +13,7 @@
 #include "Segmentation/KMeansSegmentation.h"
 #include "Segmentation/SpectralSegmentation.h"
 #include "Segmentation/WatershedSegmentation.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -5,7 +5,7 @@
 #include "Harmonic/Isolines.h"
 #include "Mesh/MeshGenerators.h"
 #include "Mesh/MeshValidation.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

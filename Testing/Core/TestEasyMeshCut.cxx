@@ -1,8 +1,8 @@
 // Easy Mesh Cutting in one call: fingers cut off by closed boundaries, shorter after the snakes, deterministic.
 #include "Error.h"
 #include "Segmentation/EasyMeshCut.h"
-#include "Session/Surface.h"
 #include "StrokeShapes.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/ConvexFlooding.h"
 #include "Segmentation/FaceGraph.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -6,7 +6,7 @@
 #include "Geodesic/VectorDijkstra.h"
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshGenerators.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 #include "Error.h"
 #include "Geodesic/HeatGeodesics.h"
 #include "Mesh/MeshGenerators.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/IsophoticMetric.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

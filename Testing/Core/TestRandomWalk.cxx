@@ -6,8 +6,8 @@
 #include "Numerics/LaplacianWeights.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/RegionGrowing.h"
-#include "Session/Surface.h"
 #include "StrokeShapes.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

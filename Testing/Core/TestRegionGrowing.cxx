@@ -6,8 +6,8 @@
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/RegionGrowing.h"
-#include "Session/Surface.h"
 #include "StrokeShapes.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -5,8 +5,8 @@
 #include "Evaluation/SegmentationMetrics.h"
 #include "Evaluation/SimulatedClicks.h"
 #include "Mesh/MeshGenerators.h"
-#include "Session/Surface.h"
 #include "StrokeShapes.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

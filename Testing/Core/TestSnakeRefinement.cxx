@@ -4,8 +4,8 @@
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/RegionGrowing.h"
 #include "Segmentation/SnakeRefinement.h"
-#include "Session/Surface.h"
 #include "StrokeShapes.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

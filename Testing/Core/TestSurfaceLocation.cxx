@@ -3,7 +3,7 @@
 #include "Geodesic/SurfaceLocation.h"
 #include "Harmonic/Isolines.h"
 #include "Mesh/MeshGenerators.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

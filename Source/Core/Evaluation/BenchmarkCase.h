@@ -2,7 +2,7 @@
 #pragma once
 
 #include "Evaluation/PrincetonBenchmark.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <memory>
 #include <vector>

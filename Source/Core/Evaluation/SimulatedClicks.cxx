@@ -5,7 +5,7 @@
 #include "Error.h"
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/SegmentSpines.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -145,7 +145,7 @@ std::vector<int> selectionOrder(const FaceGraph& graph, const std::vector<int>& 
 // A piece's clicks and what they select.
 struct Selection
 {
-  std::vector<RoiClick> added, subtracted;
+  std::vector<ROIClick> added, subtracted;
   std::vector<char> region; // per face: selected and not claimed before
   double error = Infinity;  // the area of region xor target, over the target's area
   double missed = 0.0;      // the target's area outside the region, over the target's area
@@ -197,7 +197,7 @@ public:
     this->Result.clicks.push_back({ piece, current.added.back(), false, true, current.error });
     // Corrections: the larger error first; a correction that does not help is undone and not
     // made again.
-    std::vector<std::pair<RoiClick, bool>> made{ { current.added.back(), false } };
+    std::vector<std::pair<ROIClick, bool>> made{ { current.added.back(), false } };
     for (int clicks = 1; clicks < this->Options.clicksPerPiece && this->needsCorrection(current); ++clicks)
     {
       std::vector<char> missed(faces, 0), spilled(faces, 0);
@@ -210,14 +210,14 @@ public:
         spilledArea += spilled[f] ? this->Graph.area(f) : 0.0;
       }
       bool found = false;
-      std::pair<RoiClick, bool> correction;
+      std::pair<ROIClick, bool> correction;
       for (const bool subtract : { spilledArea > missedArea, !(spilledArea > missedArea) })
       {
         if (!found && (subtract ? spilledArea : missedArea) > 0.0)
         {
           const std::vector<char> part = largestPart(this->Graph, subtract ? spilled : missed);
           correction = { subtract ? this->subtracting(part) : this->adding(part), subtract };
-          found = std::none_of(made.begin(), made.end(), [&](const std::pair<RoiClick, bool>& other) {
+          found = std::none_of(made.begin(), made.end(), [&](const std::pair<ROIClick, bool>& other) {
             return other.second == subtract && other.first.position == correction.first.position &&
               other.first.radius == correction.first.radius;
           });
@@ -283,7 +283,7 @@ private:
   }
 
   // The distance field of a click at face f's centroid (kept for ROI Scissor's run).
-  const std::vector<double>& clickAt(int f, RoiClick& click)
+  const std::vector<double>& clickAt(int f, ROIClick& click)
   {
     click.position = this->Graph.centroid(f);
     return *this->Distances.from(
@@ -292,7 +292,7 @@ private:
   }
 
   // An adding click inside `part`, whose disc holds the part with the radius margin.
-  RoiClick adding(const std::vector<char>& part)
+  ROIClick adding(const std::vector<char>& part)
   {
     int face = innermostFace(this->Graph, part);
     if (this->Options.placement == SimulatedClickPlacement::SpineMiddle)
@@ -306,7 +306,7 @@ private:
       face =
         spines.empty() || spines.front().faces.empty() ? face : spines.front().faces[spines.front().faces.size() / 2];
     }
-    RoiClick click;
+    ROIClick click;
     const std::vector<double>& d = this->clickAt(face, click);
     double farthest = 0.0;
     for (double value : d)
@@ -320,9 +320,9 @@ private:
 
   // A subtracting click at the innermost face of `part`, its disc stopping at what the first
   // click holds.
-  RoiClick subtracting(const std::vector<char>& part)
+  ROIClick subtracting(const std::vector<char>& part)
   {
-    RoiClick click;
+    ROIClick click;
     click.radius =
       extremeDistance(this->Mesh, this->clickAt(innermostFace(this->Graph, part), click), this->Holding, true);
     return click;

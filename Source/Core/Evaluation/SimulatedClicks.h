@@ -1,7 +1,7 @@
 // Simulated ROI Scissor clicks made from a segmentation, and the segmentation their regions make.
 #pragma once
 
-#include "Geodesic/RoiScissor.h"
+#include "Geodesic/ROIScissor.h"
 
 #include <memory>
 #include <vector>
@@ -46,14 +46,14 @@ struct SimulatedClickOptions
   double correctionThreshold = 0.1;
   /// ... and by more than this fraction of the whole surface's area.
   double surfaceThreshold = 0.017;
-  RoiScissorOptions scissor;
+  ROIScissorOptions scissor;
 };
 
 /// One click of the simulated user, as ROI Scissor takes it.
 struct SimulatedClick
 {
   int piece = -1;        ///< the piece it selects (see ClickedSegmentation::pieceLabels)
-  RoiClick click;        ///< a point on the surface (a face's centroid) and a radius
+  ROIClick click;        ///< a point on the surface (a face's centroid) and a radius
   bool subtract = false; ///< subtracts its disc instead of adding it
   bool kept = true;      ///< false when the user undid it (the region got no better)
   double error = 1.0;    ///< the piece's error (as ClickedSegmentation::pieceErrors) with this click

@@ -6,7 +6,7 @@
 #include "Geodesic/SurfaceLocation.h"
 #include "Geodesic/VectorDijkstra.h"
 #include "Numerics/FieldGradient.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>

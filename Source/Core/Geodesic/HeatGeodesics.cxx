@@ -7,7 +7,7 @@
 #include "Numerics/IntrinsicTriangulation.h"
 #include "Numerics/NestedDissection.h"
 #include "Numerics/SerialOpenMP.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <Eigen/SparseCore>
 

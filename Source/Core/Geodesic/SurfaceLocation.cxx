@@ -4,7 +4,7 @@
 #include "Error.h"
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include "Harmonic/Isolines.h"
 #include "Harmonic/StrokeConstraints.h"
 #include "Numerics/LaplacianWeights.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <memory>
 #include <optional>

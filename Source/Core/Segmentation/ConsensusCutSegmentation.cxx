@@ -9,7 +9,7 @@
 #include "Numerics/SparseCholesky.h"
 #include "Segmentation/RandomWalk.h"
 #include "Segmentation/SegmentSpines.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <array>

@@ -1,7 +1,7 @@
 // Easy Mesh Cutting in one call: region growing, optional snake refinement, boundaries as polylines.
 #include "Segmentation/EasyMeshCut.h"
 
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 namespace kerf
 {

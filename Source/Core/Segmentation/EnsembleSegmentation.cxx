@@ -3,7 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>

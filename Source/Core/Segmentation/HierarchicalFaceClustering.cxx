@@ -4,7 +4,7 @@
 #include "Error.h"
 #include "Mesh/UnionFind.h"
 #include "Numerics/HugePages.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <Eigen/Eigenvalues>
 

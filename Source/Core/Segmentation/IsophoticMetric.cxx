@@ -4,7 +4,7 @@
 #include "CacheKey.h"
 #include "Error.h"
 #include "Geometry/SurfaceDescriptors.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include "Mesh/MeshValidation.h"
 #include "Mesh/MinimumCut.h"
 #include "Segmentation/RandomWalk.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <array>

@@ -7,7 +7,7 @@
 #include "Geometry/SurfaceDescriptors.h"
 #include "Mesh/MeshValidation.h"
 #include "Segmentation/IsophoticMetric.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <array>

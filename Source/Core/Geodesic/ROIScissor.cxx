@@ -1,5 +1,5 @@
 // ROI Scissor's candidate discs, boundary constraints, field on the region, feature points and geodesic boundary.
-#include "Geodesic/RoiScissor.h"
+#include "Geodesic/ROIScissor.h"
 
 #include "CacheKey.h"
 #include "Error.h"
@@ -8,7 +8,7 @@
 #include "Harmonic/HarmonicFieldSolver.h"
 #include "Mesh/Submesh.h"
 #include "Numerics/FieldGradient.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>
@@ -165,8 +165,8 @@ std::shared_ptr<const std::vector<double>> ClickDistances::from(
   return distance;
 }
 
-GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat,
+GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<ROIClick>& added,
+  const std::vector<ROIClick>& subtracted, double clickTolerance, const HeatGeodesicOptions& heat,
   ClickDistances* cache)
 {
   const TriangleMesh& mesh = surface.mesh();
@@ -177,9 +177,9 @@ GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>&
   GeodesicDiscs discs;
   discs.addedCount = added.size();
   int component = -1;
-  for (const std::vector<RoiClick>* clicks : { &added, &subtracted })
+  for (const std::vector<ROIClick>* clicks : { &added, &subtracted })
   {
-    for (const RoiClick& click : *clicks)
+    for (const ROIClick& click : *clicks)
     {
       checkRadius(click.radius);
       const SurfacePoint point = projectClick(surface, click.position, clickTolerance);
@@ -263,8 +263,8 @@ GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>&
   return discs;
 }
 
-GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options, ClickDistances* cache)
+GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<ROIClick>& added,
+  const std::vector<ROIClick>& subtracted, const ROIScissorOptions& options, ClickDistances* cache)
 {
   const TriangleMesh& mesh = surface.mesh();
   if (!(options.innerFraction > 0.0 && options.innerFraction < 1.0))
@@ -332,15 +332,15 @@ GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<
   return region;
 }
 
-RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options, ClickDistances* distances)
+ROIScissorResult roiScissor(const Surface& surface, const std::vector<ROIClick>& added,
+  const std::vector<ROIClick>& subtracted, const ROIScissorOptions& options, ClickDistances* distances)
 {
   const TriangleMesh& mesh = surface.mesh();
   if (options.isolineCount < 1 || !(options.segmentFraction > 0.0))
   {
     throw Error("ROI Scissor's isoline count and segment fraction must be positive");
   }
-  RoiScissorResult result;
+  ROIScissorResult result;
   const int n = mesh.vertexCount();
   GeodesicDiscRegion region = geodesicDiscRegion(surface, added, subtracted, options, distances);
   result.clicks = std::move(region.clicks);

@@ -1,5 +1,5 @@
 // The surface cache: locator, normals, descriptors and Laplacian weights computed on first use.
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include "Geometry/ClosestPoint.h"
 #include "Geometry/SurfaceDescriptors.h"

@@ -1,9 +1,9 @@
 // Seams as streamlines of v* = -D^-1 v (SeamCut, Eq. 2) from one distance field per source line.
-#include "Geodesic/Seams.h"
+#include "Geodesic/GeodesicSeam.h"
 
 #include "Error.h"
 #include "Numerics/FieldGradient.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <algorithm>
 #include <limits>

@@ -1,10 +1,10 @@
 // SeamCut seams: meridians from the equator, regrowth on one field, anchoring, bad input.
 #include "Error.h"
-#include "Geodesic/Seams.h"
+#include "Geodesic/GeodesicSeam.h"
 #include "Geometry/ClosestPoint.h"
 #include "Harmonic/Isolines.h"
 #include "Mesh/MeshGenerators.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 

@@ -17,13 +17,13 @@ class Surface;
 
 /// A click: a point in space (projected onto the surface) and the geodesic radius r of its
 /// candidate disc C(r).
-struct RoiClick
+struct ROIClick
 {
   Vector3 position = Vector3::Zero();
   double radius = 0.0;
 };
 
-struct RoiScissorOptions
+struct ROIScissorOptions
 {
   /// Vertices nearer than this fraction of r to a click get the value 1 (ROI Scissor, 4.1).
   double innerFraction = 0.1;
@@ -93,8 +93,8 @@ struct GeodesicDiscs
 /// positive and finite, clicks on different connected components, a region holding no vertex
 /// (radius below the distance to the nearest vertex, or every added click inside a subtracted
 /// disc) and a region that covers its whole component (radius larger than the mesh).
-GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, double clickTolerance,
+GeodesicDiscs geodesicDiscs(const Surface& surface, const std::vector<ROIClick>& added,
+  const std::vector<ROIClick>& subtracted, double clickTolerance,
   const HeatGeodesicOptions& heat = HeatGeodesicOptions(), ClickDistances* distances = nullptr);
 
 /// ROI Scissor's candidate region (section 4.1) and its boundary constraints.
@@ -113,12 +113,12 @@ struct GeodesicDiscRegion
 /// kerf::Error for geodesicDiscs' errors, an inner fraction outside (0, 1), inner vertices that
 /// meet the border (radius too small) and no inner vertex inside the region (every added click
 /// inside a subtracted disc).
-GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted, const RoiScissorOptions& options = RoiScissorOptions(),
+GeodesicDiscRegion geodesicDiscRegion(const Surface& surface, const std::vector<ROIClick>& added,
+  const std::vector<ROIClick>& subtracted, const ROIScissorOptions& options = ROIScissorOptions(),
   ClickDistances* distances = nullptr);
 
 /// What one ROI Scissor selection produced.
-struct RoiScissorResult
+struct ROIScissorResult
 {
   std::vector<SurfacePoint> clicks;                     ///< the clicks on the surface (added, then subtracted)
   std::vector<char> candidate;                          ///< per vertex: inside the union minus the difference of discs
@@ -151,8 +151,8 @@ struct RoiScissorResult
 ///
 /// Throws kerf::Error for geodesicDiscRegion's errors, options out of range, and a field without
 /// a closed isoline.
-RoiScissorResult roiScissor(const Surface& surface, const std::vector<RoiClick>& added,
-  const std::vector<RoiClick>& subtracted = {}, const RoiScissorOptions& options = RoiScissorOptions(),
+ROIScissorResult roiScissor(const Surface& surface, const std::vector<ROIClick>& added,
+  const std::vector<ROIClick>& subtracted = {}, const ROIScissorOptions& options = ROIScissorOptions(),
   ClickDistances* distances = nullptr);
 
 /// The surface point nearest to `position`; throws kerf::Error if it is farther than

@@ -1,10 +1,10 @@
 // ROI Scissor: the same protrusion from different clicks, a boundary in the crease, Boolean discs, bad input.
 #include "Error.h"
-#include "Geodesic/RoiScissor.h"
+#include "Geodesic/ROIScissor.h"
 #include "IO/MeshFormats.h"
 #include "Mesh/MeshGenerators.h"
 #include "Mesh/Triangulation.h"
-#include "Session/Surface.h"
+#include "Surface/Surface.h"
 
 #include <gtest/gtest.h>
 
@@ -62,7 +62,7 @@ Vector3 onDumbbell(double z, double angle)
 }
 } // namespace
 
-TEST(RoiScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
+TEST(ROIScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
 {
   const std::shared_ptr<Surface> surface = dumbbell();
   const TriangleMesh& mesh = surface->mesh();
@@ -80,7 +80,7 @@ TEST(RoiScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
   }
   for (const Vector3& click : clicks)
   {
-    const RoiScissorResult result = roiScissor(*surface, { { click, 2.6 } });
+    const ROIScissorResult result = roiScissor(*surface, { { click, 2.6 } });
     ASSERT_EQ(result.boundaries.size(), 1u);
     EXPECT_EQ(result.boundaries[0].selfCrossings, 0);
     // The boundary runs through the crease: every point within 0.1 of its height (the
@@ -122,7 +122,7 @@ TEST(RoiScissor, ClicksInsideTheProtrusionGiveTheSameRegion)
 // concave is near, so the best isoline is the innermost, a loop within a few triangles of the
 // click that the side labels cross without separating. The region stays the click's side inside
 // the candidate region (it once became the whole camel but two triangles).
-TEST(RoiScissor, RegionStaysInsideTheCandidateRegion)
+TEST(ROIScissor, RegionStaysInsideTheCandidateRegion)
 {
   const PolygonMesh polygons = readOFF(std::string(KERF_SOURCE_DIR) + "/Data/camel.off");
   const Surface camel(TriangleMesh(polygons.points, triangulatePolygons(polygons).triangles));
@@ -137,7 +137,7 @@ TEST(RoiScissor, RegionStaysInsideTheCandidateRegion)
   int fallbacks = 0;
   for (int v : { xMax, xMin, zMin })
   {
-    const RoiScissorResult result = roiScissor(camel, { { mesh.point(v), 0.1 } });
+    const ROIScissorResult result = roiScissor(camel, { { mesh.point(v), 0.1 } });
     std::vector<char> inRegion(mesh.faceCount(), 0);
     for (int f : result.regionFaces)
     {
@@ -158,12 +158,12 @@ TEST(RoiScissor, RegionStaysInsideTheCandidateRegion)
   EXPECT_GE(fallbacks, 1); // the case that once failed takes the isoline's side
 }
 
-TEST(RoiScissor, ConstraintsFollowTheDiscs)
+TEST(ROIScissor, ConstraintsFollowTheDiscs)
 {
   const std::shared_ptr<Surface> surface = dumbbell();
   const TriangleMesh& mesh = surface->mesh();
   const Vector3 top = onDumbbell(HalfLength - 0.05, 0.0);
-  const RoiScissorResult one = roiScissor(*surface, { { top, 2.6 } });
+  const ROIScissorResult one = roiScissor(*surface, { { top, 2.6 } });
   // Zeros sit on both sides of the border and nowhere else; ones are near the click.
   for (int v : one.zeroVertices)
   {
@@ -180,8 +180,8 @@ TEST(RoiScissor, ConstraintsFollowTheDiscs)
     EXPECT_DOUBLE_EQ(one.field[v], 1.0);
   }
   // A union with a second disc grows the candidate region; a difference shrinks it.
-  const RoiScissorResult both = roiScissor(*surface, { { top, 2.6 }, { onDumbbell(-1.5, 1.0), 0.5 } });
-  const RoiScissorResult less = roiScissor(*surface, { { top, 2.6 } }, { { onDumbbell(1.2, 3.14), 0.3 } });
+  const ROIScissorResult both = roiScissor(*surface, { { top, 2.6 }, { onDumbbell(-1.5, 1.0), 0.5 } });
+  const ROIScissorResult less = roiScissor(*surface, { { top, 2.6 } }, { { onDumbbell(1.2, 3.14), 0.3 } });
   int counts[3] = { 0, 0, 0 };
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
@@ -195,7 +195,7 @@ TEST(RoiScissor, ConstraintsFollowTheDiscs)
   EXPECT_LT(counts[2], counts[0]);
 }
 
-TEST(RoiScissor, RefusesBadInput)
+TEST(ROIScissor, RefusesBadInput)
 {
   const std::shared_ptr<Surface> surface = dumbbell();
   const Vector3 top = onDumbbell(HalfLength - 0.05, 0.0);
@@ -223,19 +223,19 @@ TEST(RoiScissor, RefusesBadInput)
   EXPECT_THROW(roiScissor(*two, { { top, 2.6 }, { Vector3(4.5, 0.0, 0.0), 0.3 } }), Error);
 }
 
-TEST(RoiScissor, ClickDistancesAreKeptPerClick)
+TEST(ROIScissor, ClickDistancesAreKeptPerClick)
 {
   const std::shared_ptr<Surface> surface = dumbbell();
   ClickDistances distances(surface);
-  const RoiClick top{ onDumbbell(HalfLength - 0.05, 0.0), 2.6 };
-  const RoiClick side{ onDumbbell(1.2, 3.14), 0.3 };
-  const GeodesicDiscRegion alone = geodesicDiscRegion(*surface, { top }, {}, RoiScissorOptions(), &distances);
+  const ROIClick top{ onDumbbell(HalfLength - 0.05, 0.0), 2.6 };
+  const ROIClick side{ onDumbbell(1.2, 3.14), 0.3 };
+  const GeodesicDiscRegion alone = geodesicDiscRegion(*surface, { top }, {}, ROIScissorOptions(), &distances);
   EXPECT_EQ(distances.computations(), 1);
   // A second click computes only its own field; the first radius changed computes none.
-  const GeodesicDiscRegion less = geodesicDiscRegion(*surface, { top }, { side }, RoiScissorOptions(), &distances);
+  const GeodesicDiscRegion less = geodesicDiscRegion(*surface, { top }, { side }, ROIScissorOptions(), &distances);
   EXPECT_EQ(distances.computations(), 2);
   const GeodesicDiscRegion wider =
-    geodesicDiscRegion(*surface, { { top.position, 2.8 } }, { side }, RoiScissorOptions(), &distances);
+    geodesicDiscRegion(*surface, { { top.position, 2.8 } }, { side }, ROIScissorOptions(), &distances);
   EXPECT_EQ(distances.computations(), 2);
   // The same regions as without the cache, and faces follow their vertices.
   EXPECT_EQ(alone.candidate, geodesicDiscRegion(*surface, { top }, {}).candidate);
@@ -266,7 +266,7 @@ TEST(RoiScissor, ClickDistancesAreKeptPerClick)
   }
   EXPECT_GT(grown, 0);
   // The ROI Scissor selection through the cache equals the one without it.
-  const RoiScissorResult cached = roiScissor(*surface, { top }, {}, RoiScissorOptions(), &distances);
+  const ROIScissorResult cached = roiScissor(*surface, { top }, {}, ROIScissorOptions(), &distances);
   EXPECT_EQ(distances.computations(), 2);
   EXPECT_EQ(cached.faceLabels, roiScissor(*surface, { top }).faceLabels);
 }
