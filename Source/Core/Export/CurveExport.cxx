@@ -4,6 +4,7 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
+#include "Mesh/ShortestPaths.h"
 #include "Mesh/UnionFind.h"
 
 #include <algorithm>
@@ -744,42 +745,28 @@ public:
   // The path ends at point `point` of curve `curve` (named in the error).
   void appendPath(int source, int target, std::vector<int>& chain, std::size_t curve, std::size_t point)
   {
-    using Entry = std::pair<double, int>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+    DistanceQueue queue;
     this->Distance[static_cast<std::size_t>(source)] = 0.0;
     this->Touched.push_back(source);
     queue.emplace(0.0, source);
-    bool reached = false;
-    while (!queue.empty())
-    {
-      const auto [d, v] = queue.top();
-      queue.pop();
-      if (d > this->Distance[static_cast<std::size_t>(v)])
-      {
-        continue;
-      }
-      if (v == target)
-      {
-        reached = true;
-        break;
-      }
-      const IndexRange neighbors = this->Mesh.vertexNeighbors(v);
-      for (int w : neighbors)
-      {
-        const double candidate = d + (this->Mesh.point(w) - this->Mesh.point(v)).norm();
-        double& current = this->Distance[static_cast<std::size_t>(w)];
-        if (candidate < current)
+    const double infinity = std::numeric_limits<double>::infinity();
+    const bool reached = searchShortestPaths(
+      queue, [&](int v) -> double& { return this->Distance[static_cast<std::size_t>(v)]; },
+      [&](int v, double d, const auto& lower) {
+        for (int w : this->Mesh.vertexNeighbors(v))
         {
-          if (current == std::numeric_limits<double>::infinity())
+          const bool fresh = this->Distance[static_cast<std::size_t>(w)] == infinity;
+          if (lower(w, d + (this->Mesh.point(w) - this->Mesh.point(v)).norm()))
           {
-            this->Touched.push_back(w);
+            if (fresh)
+            {
+              this->Touched.push_back(w);
+            }
+            this->Previous[static_cast<std::size_t>(w)] = v;
           }
-          current = candidate;
-          this->Previous[static_cast<std::size_t>(w)] = v;
-          queue.emplace(candidate, w);
         }
-      }
-    }
+      },
+      [target](int v, double) { return v == target; });
     if (!reached)
     {
       this->reset();

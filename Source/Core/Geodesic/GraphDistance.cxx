@@ -2,6 +2,7 @@
 #include "Geodesic/GraphDistance.h"
 
 #include "Error.h"
+#include "Mesh/ShortestPaths.h"
 
 #include <functional>
 #include <limits>
@@ -13,31 +14,19 @@ namespace kerf
 
 namespace
 {
-using Entry = std::pair<double, int>;
-using MinimumQueue = std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>>;
+using MinimumQueue = DistanceQueue;
 
 // Dijkstra from the entries already queued, relaxing only where a value gets smaller.
 void relax(const TriangleMesh& mesh, MinimumQueue& queue, std::vector<double>& distance)
 {
-  while (!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[v])
-    {
-      continue;
-    }
-    const IndexRange neighbors = mesh.vertexNeighbors(v);
-    for (int w : neighbors)
-    {
-      const double candidate = d + (mesh.point(w) - mesh.point(v)).norm();
-      if (candidate < distance[w])
+  searchShortestPaths(
+    queue, [&](int v) -> double& { return distance[v]; },
+    [&](int v, double d, const auto& lower) {
+      for (int w : mesh.vertexNeighbors(v))
       {
-        distance[w] = candidate;
-        queue.emplace(candidate, w);
+        lower(w, d + (mesh.point(w) - mesh.point(v)).norm());
       }
-    }
-  }
+    });
 }
 
 void checkSource(const TriangleMesh& mesh, int s)

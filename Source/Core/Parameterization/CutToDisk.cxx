@@ -3,6 +3,7 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
+#include "Mesh/ShortestPaths.h"
 #include "Mesh/UnionFind.h"
 
 #include <algorithm>
@@ -38,30 +39,21 @@ void shortestPathTree(const CappedGraph& graph, int root, std::vector<double>& d
   distance.assign(n, std::numeric_limits<double>::infinity());
   parent.assign(n, -1);
   parentEdge.assign(n, -1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  DistanceQueue queue;
   distance[static_cast<std::size_t>(root)] = 0.0;
   queue.push({ 0.0, root });
-  while (!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distance[static_cast<std::size_t>(v)])
-    {
-      continue;
-    }
-    for (const CappedGraph::Arc& arc : graph.arcs[static_cast<std::size_t>(v)])
-    {
-      const double candidate = d + arc.length;
-      if (candidate < distance[static_cast<std::size_t>(arc.to)])
+  searchShortestPaths(
+    queue, [&](int v) -> double& { return distance[static_cast<std::size_t>(v)]; },
+    [&](int v, double d, const auto& lower) {
+      for (const CappedGraph::Arc& arc : graph.arcs[static_cast<std::size_t>(v)])
       {
-        distance[static_cast<std::size_t>(arc.to)] = candidate;
-        parent[static_cast<std::size_t>(arc.to)] = v;
-        parentEdge[static_cast<std::size_t>(arc.to)] = arc.edge;
-        queue.push({ candidate, arc.to });
+        if (lower(arc.to, d + arc.length))
+        {
+          parent[static_cast<std::size_t>(arc.to)] = v;
+          parentEdge[static_cast<std::size_t>(arc.to)] = arc.edge;
+        }
       }
-    }
-  }
+    });
 }
 
 double edgeLength(const TriangleMesh& mesh, int e)

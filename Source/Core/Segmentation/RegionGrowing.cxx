@@ -5,6 +5,7 @@
 #include "Geometry/ClosestPoint.h"
 #include "Mesh/MeshValidation.h"
 #include "Mesh/MinimumCut.h"
+#include "Mesh/ShortestPaths.h"
 #include "Segmentation/RandomWalk.h"
 #include "Surface/Surface.h"
 
@@ -191,11 +192,9 @@ void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLeng
   const double infinity = std::numeric_limits<double>::infinity();
   labels.assign(static_cast<std::size_t>(mesh.vertexCount()), -1);
   distances.assign(static_cast<std::size_t>(mesh.vertexCount()), infinity);
-  using Entry = std::pair<double, int>;
-  std::vector<Entry> heapStorage;
+  std::vector<DistanceEntry> heapStorage;
   heapStorage.reserve(static_cast<std::size_t>(mesh.vertexCount()));
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue(
-    std::greater<Entry>(), std::move(heapStorage));
+  DistanceQueue queue(std::greater<DistanceEntry>(), std::move(heapStorage));
   for (std::size_t i = 0; i < seeds.vertices.size(); ++i)
   {
     const int v = seeds.vertices[i];
@@ -210,28 +209,20 @@ void growFromSeeds(const TriangleMesh& mesh, const std::vector<double>& edgeLeng
       queue.emplace(0.0, v);
     }
   }
-  while (!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (d > distances[v])
-    {
-      continue; // a stale entry: v was reached by a shorter path
-    }
-    const IndexRange neighbors = mesh.vertexNeighbors(v);
-    const IndexRange edges = mesh.vertexEdges(v);
-    for (std::size_t i = 0; i < neighbors.size(); ++i)
-    {
-      const int w = neighbors[i];
-      const double candidate = d + edgeLengths[static_cast<std::size_t>(edges[i])];
-      if (candidate < distances[w])
+  searchShortestPaths(
+    queue, [&](int v) -> double& { return distances[v]; },
+    [&](int v, double d, const auto& lower) {
+      const IndexRange neighbors = mesh.vertexNeighbors(v);
+      const IndexRange edges = mesh.vertexEdges(v);
+      for (std::size_t i = 0; i < neighbors.size(); ++i)
       {
-        distances[w] = candidate;
-        labels[w] = labels[v];
-        queue.emplace(candidate, w);
+        const int w = neighbors[i];
+        if (lower(w, d + edgeLengths[static_cast<std::size_t>(edges[i])]))
+        {
+          labels[w] = labels[v];
+        }
       }
-    }
-  }
+    });
 }
 
 NearestLabels nearestTwoLabels(

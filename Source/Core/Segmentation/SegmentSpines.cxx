@@ -2,6 +2,7 @@
 #include "Segmentation/SegmentSpines.h"
 
 #include "Error.h"
+#include "Mesh/ShortestPaths.h"
 
 #include <functional>
 #include <limits>
@@ -29,8 +30,7 @@ std::vector<SegmentSpine> segmentSpines(const TriangleMesh& mesh, const std::vec
   // Distance inside the segment from its border faces (Dijkstra over face neighbours).
   const double infinity = std::numeric_limits<double>::infinity();
   std::vector<double> inside(labels.size(), infinity);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  DistanceQueue queue;
   for (int f = 0; f < mesh.faceCount(); ++f)
   {
     for (int k = 0; k < 3 && labels[f] >= 0; ++k)
@@ -43,28 +43,18 @@ std::vector<SegmentSpine> segmentSpines(const TriangleMesh& mesh, const std::vec
       }
     }
   }
-  while (!queue.empty())
-  {
-    const auto [d, f] = queue.top();
-    queue.pop();
-    if (d > inside[f])
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      const int g = mesh.faceNeighbor(f, k);
-      if (g >= 0 && labels[g] == labels[f])
+  searchShortestPaths(
+    queue, [&](int f) -> double& { return inside[f]; },
+    [&](int f, double d, const auto& lower) {
+      for (int k = 0; k < 3; ++k)
       {
-        const double candidate = d + (centroid(g) - centroid(f)).norm();
-        if (candidate < inside[g])
+        const int g = mesh.faceNeighbor(f, k);
+        if (g >= 0 && labels[g] == labels[f])
         {
-          inside[g] = candidate;
-          queue.emplace(candidate, g);
+          lower(g, d + (centroid(g) - centroid(f)).norm());
         }
       }
-    }
-  }
+    });
   // The innermost face of each label (a borderless segment: its first face).
   std::map<int, int> innermost;
   for (int f = 0; f < mesh.faceCount(); ++f)

@@ -2,6 +2,7 @@
 #include "Segmentation/SpectralSegmentation.h"
 
 #include "Error.h"
+#include "Mesh/ShortestPaths.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
 
 #include <Eigen/Dense>
@@ -230,29 +231,19 @@ Eigen::MatrixXd spectralAffinity(const FaceGraph& graph, const std::vector<int>&
   }
   // All-pairs shortest paths on the patch graph.
   Eigen::MatrixXd distance = Eigen::MatrixXd::Constant(m, m, std::numeric_limits<double>::infinity());
-  using Entry = std::pair<double, int>;
   for (int source = 0; source < m; ++source)
   {
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+    DistanceQueue heap;
     distance(source, source) = 0.0;
     heap.emplace(0.0, source);
-    while (!heap.empty())
-    {
-      const auto [d, p] = heap.top();
-      heap.pop();
-      if (d > distance(source, p))
-      {
-        continue;
-      }
-      for (const auto& [q, w] : adjacency[p])
-      {
-        if (d + w < distance(source, q))
+    searchShortestPaths(
+      heap, [&](int p) -> double& { return distance(source, p); },
+      [&](int p, double d, const auto& lower) {
+        for (const auto& [q, w] : adjacency[p])
         {
-          distance(source, q) = d + w;
-          heap.emplace(d + w, q);
+          lower(q, d + w);
         }
-      }
-    }
+      });
   }
   const double sigma = std::max(distance.mean(), std::numeric_limits<double>::min());
   // W = exp(-Dist / (2 sigma^2)), N = D^-1/2 W D^-1/2 (Liu and Zhang 2004, section 3).
