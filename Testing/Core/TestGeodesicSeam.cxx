@@ -48,7 +48,7 @@ double longitude(const Vector3& p)
 }
 } // namespace
 
-TEST(Seams, IsotropicSeamsAreMeridians)
+TEST(GeodesicSeam, IsotropicSeamsAreMeridians)
 {
   const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 5));
   const SeamField field(*surface, equator(surface->mesh()));
@@ -67,7 +67,7 @@ TEST(Seams, IsotropicSeamsAreMeridians)
   }
 }
 
-TEST(Seams, AnchoredSeamMeetsTheLineAtTheAnchor)
+TEST(GeodesicSeam, AnchoredSeamMeetsTheLineAtTheAnchor)
 {
   const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 5));
   const SeamField field(*surface, equator(surface->mesh()));
@@ -80,7 +80,7 @@ TEST(Seams, AnchoredSeamMeetsTheLineAtTheAnchor)
   EXPECT_NEAR(seam.length, exact, 0.015 * exact);
 }
 
-TEST(Seams, AnisotropicSeamFollowsTheMetric)
+TEST(GeodesicSeam, AnisotropicSeamFollowsTheMetric)
 {
   // On a cylinder the metric is the same everywhere, so seams stay straight lines of the
   // unrolled cylinder, but their lengths are measured under it: an axial seam from the bottom
@@ -116,7 +116,7 @@ TEST(Seams, AnisotropicSeamFollowsTheMetric)
   EXPECT_NEAR(euclidean, mesh.point(loop[0]).z() < 1.0 ? 2.0 : 1.0, 0.01);
 }
 
-TEST(Seams, RefusesBadInput)
+TEST(GeodesicSeam, RefusesBadInput)
 {
   const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 3));
   SurfaceCurve empty;
@@ -130,7 +130,7 @@ TEST(Seams, RefusesBadInput)
   EXPECT_THROW(field.seam(bad), Error);
 }
 
-TEST(Seams, SessionKeepsTheFieldOfTheSameLine)
+TEST(GeodesicSeam, SessionKeepsTheFieldOfTheSameLine)
 {
   const auto surface = std::make_shared<Surface>(makeIcosphere(1.0, 3));
   SeamSession session(surface);
@@ -163,7 +163,7 @@ TEST(Seams, SessionKeepsTheFieldOfTheSameLine)
   EXPECT_EQ(session.field(lines, options).distance(), distance);
 }
 
-TEST(Seams, SeveralLinesOnOneComponent)
+TEST(GeodesicSeam, SeveralLinesOnOneComponent)
 {
   // The two boundary-free halves of a cut: latitudes +-30 degrees as two source lines; a seam
   // from the north pole ends on the northern one.
