@@ -82,8 +82,11 @@ def section(run):
             times = [milliseconds(r["real_time"], r["time_unit"]) for r in reps]
             median = statistics.median(times)
             spread = "%.0f%%" % (100.0 * (max(times) - min(times)) / median) if len(times) > 1 and median > 0 else ""
+            # The arguments only: the minimum time and the real-time flag are the same for all.
+            arguments = "/".join(part for part in name.split("/")[1:]
+                                 if part != "real_time" and not part.startswith("min_time:"))
             row = "| `%s` | %s | %s | %d | %s |" % (
-                name[len(family) + 1:] or name, format_time(median), spread, len(times),
+                arguments or family, format_time(median), spread, len(times),
                 format_counter(statistics.median(r["iterations"] for r in reps)))
             for c in counters:
                 values = [r[c] for r in reps if c in r]

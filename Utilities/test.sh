@@ -6,12 +6,23 @@
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${KERF_BUILD_DIR:-$source_dir/build}
+# Each stage says how long it took, and the main suite names its slowest tests (ctest's cost
+# data: the mean seconds of each test's runs), so that a suite growing past the budget shows where.
+stage_start=$(date +%s)
+stage() { echo "kerf test: $1 took $(($(date +%s) - stage_start)) s"; stage_start=$(date +%s); }
 "$source_dir/Utilities/setup.sh"
+stage "the set-up"
 "$source_dir/Utilities/build.sh"
+stage "the build"
 status=0
 # A 24-bit screen: on xvfb-run's default 8-bit one ParaView's render windows fail to open
 # ("bad X server connection") now and then.
 (cd "$build_dir" && xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j"$(nproc)" "$@") || status=$?
+stage "the main suite"
+if [ -f "$build_dir/Testing/Temporary/CTestCostData.txt" ]; then
+  echo "kerf test: the slowest tests (mean seconds):"
+  awk 'NF == 3 { printf "  %8.1f  %s\n", $3, $1 }' "$build_dir/Testing/Temporary/CTestCostData.txt" | sort -rn | head -8
+fi
 
 if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
   sanitize_dir=${KERF_SANITIZE_BUILD_DIR:-$source_dir/build-sanitize}

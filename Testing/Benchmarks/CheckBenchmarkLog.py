@@ -1,0 +1,42 @@
+"""Utilities/benchmark-log.py turns a KerfBenchmarks run into the log: a short run with two
+repetitions gives a section for its family whose row holds the median of the repetitions.
+
+Usage: CheckBenchmarkLog.py KERF_BENCHMARKS SOURCE_DIR WORK_DIR"""
+import json
+import os
+import statistics
+import subprocess
+import sys
+
+
+def main(program, source, work):
+    os.makedirs(work, exist_ok=True)
+    run = os.path.join(work, "benchmark-log-run.json")
+    log = os.path.join(work, "benchmark-log.md")
+    subprocess.run([program, "--benchmark_filter=BM_SketchStroke", "--benchmark_min_time=0.01",
+                    "--benchmark_repetitions=2", "--benchmark_out=" + run, "--benchmark_out_format=json"],
+                   check=True, stdout=subprocess.DEVNULL)
+    subprocess.run([sys.executable, os.path.join(source, "Utilities", "benchmark-log.py"), run, "-o", log],
+                   check=True)
+    with open(run, encoding="utf-8") as f:
+        repetitions = [b for b in json.load(f)["benchmarks"] if b["run_type"] == "iteration"]
+    with open(log, encoding="utf-8") as f:
+        text = f.read()
+    failures = []
+    if len(repetitions) != 2:
+        failures.append("the run has %d repetitions, not 2" % len(repetitions))
+    if "### BM_SketchStroke" not in text:
+        failures.append("the log has no section for BM_SketchStroke")
+    median_us = statistics.median(b["real_time"] for b in repetitions) * 1000.0  # ms -> us
+    row = [line for line in text.split("\n") if line.startswith("| `1300x770`")]
+    if len(row) != 1:
+        failures.append("the log has %d rows for 1300x770, not 1" % len(row))
+    elif "%.3g us" % median_us not in row[0] or "| 2 |" not in row[0]:
+        failures.append("the row %r lacks the median %.3g us of 2 runs" % (row[0], median_us))
+    for failure in failures:
+        print("ERROR: " + failure)
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(*sys.argv[1:]))
