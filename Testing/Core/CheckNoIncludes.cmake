@@ -1,8 +1,9 @@
-# Fails if any file under CORE_DIR includes a VTK header.
+# Fails if any file under CORE_DIR includes a header that PATTERN matches (a regular expression
+# applied to what follows "#include"); WHAT names those headers in the messages.
 file(GLOB_RECURSE files "${CORE_DIR}/*.h" "${CORE_DIR}/*.cxx" "${CORE_DIR}/*.hxx" "${CORE_DIR}/*.txx")
 set(offenders)
 foreach (file IN LISTS files)
-  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]vtk")
+  file(STRINGS "${file}" lines REGEX "^[ \t]*#[ \t]*include[ \t]*${PATTERN}")
   if (lines)
     list(APPEND offenders "${file}: ${lines}")
   endif ()
@@ -13,6 +14,6 @@ if (count EQUAL 0)
 endif ()
 if (offenders)
   string(REPLACE ";" "\n" offenders "${offenders}")
-  message(FATAL_ERROR "Source/Core must not include VTK headers:\n${offenders}")
+  message(FATAL_ERROR "Source/Core must not include ${WHAT}:\n${offenders}")
 endif ()
-message(STATUS "${count} Core files checked: no VTK include")
+message(STATUS "${count} Core files checked: no ${WHAT}")
