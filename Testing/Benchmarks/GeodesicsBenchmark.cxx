@@ -18,7 +18,7 @@
 //                                length, the path's (along edges)
 //   BM_GeodesicPolylineFirst/<size>  kerf::shortestPath between the same two vertices as VTK's path on a
 //                                new kerf::Surface: the heat set-up, one distance and the streamline
-//                                (22k and 100k only)
+//                                (every size; at 1M several seconds)
 //   BM_GeodesicPolyline/<size>       the same path with the surface's heat set-up kept (a new path)
 //   BM_GeodesicPolylineAnisotropic/<size>  the same path under the anisotropic metric (gamma = 1, Short-
 //                                Term Vector Dijkstra), the surface's curvature and metric kept
