@@ -4,20 +4,15 @@
 #include "Error.h"
 #include "Mesh/ShortestPaths.h"
 
-#include <functional>
 #include <limits>
-#include <queue>
-#include <utility>
 
 namespace kerf
 {
 
 namespace
 {
-using MinimumQueue = DistanceQueue;
-
 // Dijkstra from the entries already queued, relaxing only where a value gets smaller.
-void relax(const TriangleMesh& mesh, MinimumQueue& queue, std::vector<double>& distance)
+void relax(const TriangleMesh& mesh, DistanceQueue& queue, std::vector<double>& distance)
 {
   searchShortestPaths(
     queue, [&](int v) -> double& { return distance[v]; },
@@ -41,7 +36,7 @@ void checkSource(const TriangleMesh& mesh, int s)
 std::vector<double> edgeGraphDistances(const TriangleMesh& mesh, const std::vector<int>& sources)
 {
   std::vector<double> distance(mesh.vertexCount(), std::numeric_limits<double>::infinity());
-  MinimumQueue queue;
+  DistanceQueue queue;
   for (int s : sources)
   {
     checkSource(mesh, s);
@@ -65,7 +60,7 @@ void lowerEdgeGraphDistances(const TriangleMesh& mesh, int source, std::vector<d
   // A vertex whose value the new source cannot lower is not expanded: every path through it is
   // at least as long from the new source as from the old ones (the old values satisfy
   // distance[w] <= distance[v] + |vw| as rounded, and rounding is monotonic).
-  MinimumQueue queue;
+  DistanceQueue queue;
   if (distance[source] != 0.0)
   {
     distance[source] = 0.0;

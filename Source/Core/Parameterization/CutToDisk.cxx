@@ -7,10 +7,8 @@
 #include "Mesh/UnionFind.h"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <numeric>
-#include <queue>
 #include <string>
 #include <utility>
 

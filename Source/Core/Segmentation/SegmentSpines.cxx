@@ -4,10 +4,8 @@
 #include "Error.h"
 #include "Mesh/ShortestPaths.h"
 
-#include <functional>
 #include <limits>
 #include <map>
-#include <queue>
 #include <utility>
 
 namespace kerf

@@ -15,7 +15,6 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <queue>
 
 namespace kerf
 {
