@@ -371,6 +371,57 @@ TEST(GeometrySeams, RingsAvoidTheBumps)
   EXPECT_EQ(bumpRingFaces, 0); // no ring crosses the band of bumps
 }
 
+// The tube of a single knob, with the defaults (15 rings): the tube is featureless above and below
+// the knob, so no ring comes near it, and the rings lie on both sides of it. (With mu(e) shifted
+// to start at 0, the iso-contour across the knob, a few percent longer than the others, had the
+// cheapest edges of the region: 10 of the 15 rings crossed the knob.)
+TEST(GeometrySeams, RingsGoAroundAKnob)
+{
+  const TriangleMesh mesh = makeFeatureTube(TubeFeature::Knob, 64, 81);
+  const std::vector<double> region = heightBandRegions(mesh, 0.8, 4.2);
+  const std::vector<int> knob = featureTubePoints(mesh);
+  ASSERT_GT(knob.size(), 90u);
+  std::vector<char> onKnob(mesh.vertexCount(), 0);
+  for (int v : knob)
+  {
+    onKnob[v] = 1;
+  }
+  const GeometrySeamsResult result =
+    computeGeometrySeams(mesh, region, computeSurfaceDescriptors(mesh).normalConeAngle, GeometrySeamsOptions());
+  ASSERT_EQ(result.ringCost.size(), 15u);
+  int knobFaces = 0, below = 0, above = 0;
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    if (result.ring[f] < 0)
+    {
+      continue;
+    }
+    const Triangle& t = mesh.triangle(f);
+    knobFaces += onKnob[t[0]] || onKnob[t[1]] || onKnob[t[2]] ? 1 : 0;
+    const double z = (mesh.point(t[0]).z() + mesh.point(t[1]).z() + mesh.point(t[2]).z()) / 3.0;
+    below += z < 1.55 ? 1 : 0;
+    above += z > 2.45 ? 1 : 0;
+  }
+  EXPECT_EQ(knobFaces, 0);
+  EXPECT_GT(below, 0);
+  EXPECT_GT(above, 0);
+}
+
+// A ridge from the handle to the fixed region leaves no way around: every ring crosses it, once.
+TEST(GeometrySeams, RingsCrossARidgeWhereTheyMust)
+{
+  const TriangleMesh mesh = makeFeatureTube(TubeFeature::Ridge, 64, 81);
+  const std::vector<double> region = heightBandRegions(mesh, 0.8, 4.2);
+  const GeometrySeamsResult result =
+    computeGeometrySeams(mesh, region, computeSurfaceDescriptors(mesh).normalConeAngle, GeometrySeamsOptions());
+  ASSERT_EQ(result.ringCost.size(), 15u);
+  for (int k = 0; k < 15; ++k)
+  {
+    EXPECT_TRUE(ringIsClosedStrip(mesh, result.ring, k)) << "ring " << k;
+    EXPECT_TRUE(ringSeparates(mesh, region, result.ring, k)) << "ring " << k;
+  }
+}
+
 TEST(GeometrySeams, GlobalCutFirstFindsTheExhaustiveMinimum)
 {
   const TriangleMesh mesh = bumpyCylinder();

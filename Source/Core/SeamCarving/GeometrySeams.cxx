@@ -191,6 +191,19 @@ void normalise(std::vector<double>& values)
   }
 }
 
+// Divides positive values by their maximum, into (0, 1], which keeps their ratios. mu(e) is
+// scaled so, not shifted: on a tube with a knob the iso-contours differ in length by a few
+// percent only, and shifted to start at 0 that difference became the term's whole range, making
+// the edges of the longest contour, the one across the knob, the cheapest of the region.
+void scaleToMaximum(std::vector<double>& values)
+{
+  const double high = values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
+  for (double& value : values)
+  {
+    value = high > 0.0 ? value / high : 0.0;
+  }
+}
+
 double polylineLength(const TriangleMesh& mesh, const std::vector<int>& vertices, bool closed)
 {
   double length = 0.0;
@@ -487,7 +500,8 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
     mu[v] = (1.0 - t) * low + t * high;
   }
 
-  // The edge terms of Eq. 3, each normalised to [0, 1].
+  // The edge terms of Eq. 3, each normalised to [0, 1] (Dekkers and Kobbelt 2014, 3.2.2): ang(e)
+  // and h(e) mapped linearly onto [0, 1], mu(e) >= 1 divided by its maximum (scaleToMaximum).
   std::vector<double> saliency(r.edgeCount()), length(r.edgeCount()), harmonic(r.edgeCount());
   double meanDifference = 0.0;
   for (int e = 0; e < r.edgeCount(); ++e)
@@ -506,7 +520,7 @@ GeometrySeamsResult computeGeometrySeams(const TriangleMesh& mesh, const std::ve
     harmonic[e] = 1.0 / (std::abs(field[a] - field[b]) + epsilon);
   }
   normalise(saliency);
-  normalise(length);
+  scaleToMaximum(length);
   normalise(harmonic);
   const double weightSum = options.alpha + options.beta + options.gamma;
   std::vector<double> kappa(r.edgeCount());

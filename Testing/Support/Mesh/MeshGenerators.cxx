@@ -136,28 +136,86 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings)
 TriangleMesh makeBumpyCylinder(
   double radius, double height, int around, int rings, int bumps, double bumpHeight, double bumpRadius, double bumpSize)
 {
-  const TriangleMesh cylinder = makeCylinder(radius, height, around, rings);
   if (bumps < 0 || !(bumpRadius > 0.0))
   {
     throw Error("a bumpy cylinder needs a bump count >= 0 and a positive bump radius");
   }
-  std::vector<Vector3> points = cylinder.points();
-  for (Vector3& p : points)
-  {
-    const double u = std::atan2(p.y(), p.x());
+  return makeReliefCylinder(radius, height, around, rings, [&](double u, double z) {
     double offset = 0.0;
     for (int b = 0; b < bumps; ++b)
     {
-      double du = std::remainder(u - 2.0 * Pi * b / bumps, 2.0 * Pi);
-      const double d2 = (radius * du) * (radius * du) + (p.z() - bumpHeight) * (p.z() - bumpHeight);
+      const double du = std::remainder(u - 2.0 * Pi * b / bumps, 2.0 * Pi);
+      const double d2 = (radius * du) * (radius * du) + (z - bumpHeight) * (z - bumpHeight);
       const double s = 1.0 - d2 / (bumpRadius * bumpRadius);
       offset = std::max(offset, s > 0.0 ? bumpSize * s * s : 0.0);
     }
-    const double scale = (radius + offset) / radius;
+    return offset;
+  });
+}
+
+TriangleMesh makeReliefCylinder(
+  double radius, double height, int around, int rings, const std::function<double(double u, double z)>& offset)
+{
+  const TriangleMesh cylinder = makeCylinder(radius, height, around, rings);
+  std::vector<Vector3> points = cylinder.points();
+  for (Vector3& p : points)
+  {
+    const double scale = (radius + offset(std::atan2(p.y(), p.x()), p.z())) / radius;
     p.x() *= scale;
     p.y() *= scale;
   }
   return TriangleMesh(std::move(points), cylinder.triangles());
+}
+
+TriangleMesh makeFeatureTube(TubeFeature feature, int around, int rings)
+{
+  auto square = [](double x) { return x * x; };
+  // 1 - (d / r)^2 for the distance d from (u0, z0) on the unrolled tube, clamped at 0.
+  auto falloff = [&](double u, double z, double u0, double z0, double r) {
+    return std::max(0.0, 1.0 - (square(std::remainder(u - u0, 2.0 * Pi)) + square(z - z0)) / square(r));
+  };
+  std::function<double(double, double)> offset;
+  switch (feature)
+  {
+    case TubeFeature::Knob:
+      offset = [&](double u, double z) { return 0.35 * square(falloff(u, z, 0.0, 2.0, 0.45)); };
+      break;
+    case TubeFeature::Groove:
+      offset = [&](double, double z) { return -0.15 * square(std::max(0.0, 1.0 - square((z - 2.5) / 0.2))); };
+      break;
+    case TubeFeature::Crease:
+      offset = [](double, double z) { return 0.08 * std::max(0.0, 1.0 - std::abs(z - 2.2) / 0.1); };
+      break;
+    case TubeFeature::Cups:
+      offset = [&](double u, double z) {
+        double height = 0.0;
+        for (double z0 : { 1.5, 2.3, 3.1 })
+        {
+          const double s = falloff(u, z, 0.0, z0, 0.3);
+          height = std::max(height, s > 0.0 ? 0.48 * s * (1.0 - s) : 0.0);
+        }
+        return height;
+      };
+      break;
+    case TubeFeature::Ridge:
+      offset = [&](double u, double) { return 0.2 * square(std::max(0.0, 1.0 - square(u / 0.25))); };
+      break;
+  }
+  return makeReliefCylinder(1.0, 5.0, around, rings, offset);
+}
+
+std::vector<int> featureTubePoints(const TriangleMesh& mesh)
+{
+  std::vector<int> points;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    const Vector3& p = mesh.point(v);
+    if (std::abs(p.head<2>().norm() - 1.0) > 1e-3 && p.z() > 0.8 && p.z() < 4.2)
+    {
+      points.push_back(v);
+    }
+  }
+  return points;
 }
 
 std::vector<double> heightBandRegions(const TriangleMesh& mesh, double handleTop, double fixedBottom)

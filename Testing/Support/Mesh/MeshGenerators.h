@@ -3,6 +3,7 @@
 
 #include "Mesh/TriangleMesh.h"
 
+#include <functional>
 #include <vector>
 
 namespace kerf
@@ -26,6 +27,32 @@ TriangleMesh makeCylinder(double radius, double height, int around, int rings);
 /// bump's centre moves outward by bumpSize * (1 - (d / bumpRadius)^2)^2 where d < bumpRadius.
 TriangleMesh makeBumpyCylinder(double radius, double height, int around, int rings, int bumps, double bumpHeight,
   double bumpRadius, double bumpSize);
+
+/// makeCylinder with each point moved outward by offset(u, z) (u the angle around z in
+/// (-pi, pi], z the height; negative moves it inward): knobs, ridges, grooves and creases on a tube.
+TriangleMesh makeReliefCylinder(
+  double radius, double height, int around, int rings, const std::function<double(double u, double z)>& offset);
+
+/// The features of the geometry seam carving tests, on a tube of radius 1 from z = 0 to z = 5
+/// (handle z <= 0.8, fixed z >= 4.2 with heightBandRegions, so the modeling region is 3.4 high):
+/// Knob: a round bump of height 0.35 and radius 0.45 at z = 2 (a ring can pass above or below);
+/// Groove: a round groove of depth 0.15 and half-width 0.2 all around at z = 2.5; Crease: a sharp
+/// ridge 0.08 high, 0.2 wide, all around at z = 2.2 (three creases); Cups: three suction-cup-like
+/// bumps (a rim of height 0.12 around a dip, radius 0.3) in a row at z = 1.5, 2.3, 3.1; Ridge: a
+/// ridge 0.2 high along the whole tube (no ring can avoid it).
+enum class TubeFeature
+{
+  Knob,
+  Groove,
+  Crease,
+  Cups,
+  Ridge
+};
+TriangleMesh makeFeatureTube(TubeFeature feature, int around, int rings);
+
+/// The points of a makeFeatureTube surface off the plain tube (radius differs from 1 by > 1e-3)
+/// in the modeling region z in (0.8, 4.2): the feature's points.
+std::vector<int> featureTubePoints(const TriangleMesh& mesh);
 
 /// Per-vertex seam-carving regions along z (Dekkers and Kobbelt 2014, 3.1): 2 (handle) where
 /// z <= handleTop, 0 (fixed) where z >= fixedBottom, 1 (modeling) between.
