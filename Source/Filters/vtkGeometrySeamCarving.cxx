@@ -38,7 +38,7 @@ struct vtkGeometrySeamCarving::Internals
   // The session and what it was made from: a new surface, new arrays or new options start afresh.
   std::unique_ptr<kerf::GeometrySeamCarving> session;
   std::shared_ptr<const kerf::Surface> sessionSurface;
-  std::array<double, 3> sessionOptions{ { NAN, NAN, NAN } };
+  std::array<double, 4> sessionOptions{ { NAN, NAN, NAN, NAN } };
   std::vector<double> sessionArrays;
 };
 
@@ -99,8 +99,8 @@ Eigen::Matrix4d handleMatrix(vtkLinearTransform* transform)
 
 // The deformed surface with OriginalPointId, the region array (named as the input's; new points
 // are modeling points), RingSeam, Sector, and the session's counts as field data.
-void writeCarving(const kerf::SeamCarvingResult& result, const std::vector<double>& inputRegion, const char* regionName,
-  vtkPolyData* output)
+void writeCarving(const kerf::SeamCarvingResult& result, int salientSegments, const std::vector<double>& inputRegion,
+  const char* regionName, vtkPolyData* output)
 {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -135,6 +135,7 @@ void writeCarving(const kerf::SeamCarvingResult& result, const std::vector<doubl
     kerf::MakeFieldValue("CollapsedSegments", static_cast<double>(result.collapsedSegments)));
   output->GetFieldData()->AddArray(
     kerf::MakeFieldValue("SkippedOperations", static_cast<double>(result.skippedOperations)));
+  output->GetFieldData()->AddArray(kerf::MakeFieldValue("SalientSegments", static_cast<double>(salientSegments)));
 }
 } // namespace
 
@@ -182,8 +183,9 @@ int vtkGeometrySeamCarving::RequestData(
     options.stiffnessScale = this->StiffnessScale;
     options.stiffnessEpsilon = this->StiffnessEpsilon;
     options.plastic = this->Plastic;
-    const std::array<double, 3> optionKey{ { options.stiffnessScale, options.stiffnessEpsilon,
-      options.plastic ? 1.0 : 0.0 } };
+    options.salientThreshold = this->SalientThreshold;
+    const std::array<double, 4> optionKey{ { options.stiffnessScale, options.stiffnessEpsilon,
+      options.plastic ? 1.0 : 0.0, options.salientThreshold } };
     std::vector<double> arrayKey = in.region;
     arrayKey.insert(arrayKey.end(), in.faceRing.begin(), in.faceRing.end());
     arrayKey.insert(arrayKey.end(), in.faceSector.begin(), in.faceSector.end());
@@ -202,7 +204,8 @@ int vtkGeometrySeamCarving::RequestData(
 
     const kerf::SeamCarvingResult& result = state.session->deform(handleMatrix(state.transform));
     vtkDataArray* regionArray = this->GetInputArrayToProcess(0, input);
-    writeCarving(result, in.region, regionArray && regionArray->GetName() ? regionArray->GetName() : "Region", output);
+    writeCarving(result, state.session->salientSegmentCount(), in.region,
+      regionArray && regionArray->GetName() ? regionArray->GetName() : "Region", output);
   });
 }
 
@@ -213,4 +216,5 @@ void vtkGeometrySeamCarving::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "StiffnessScale: " << this->StiffnessScale << "\n";
   os << indent << "StiffnessEpsilon: " << this->StiffnessEpsilon << "\n";
   os << indent << "Plastic: " << this->Plastic << "\n";
+  os << indent << "SalientThreshold: " << this->SalientThreshold << "\n";
 }

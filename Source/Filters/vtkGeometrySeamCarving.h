@@ -71,6 +71,15 @@ public:
   vtkBooleanMacro(Plastic, bool);
   ///@}
 
+  ///@{
+  /// A ring segment is not split or collapsed in its sector when one of its triangles has a
+  /// corner whose normal-cone angle, scaled to [0, 1] over the modeling region, exceeds this: a
+  /// ring that cannot go around a feature leaves it alone there. In [0, 1]; 1 executes every
+  /// segment. Default 0.5.
+  vtkSetClampMacro(SalientThreshold, double, 0.0, 1.0);
+  vtkGetMacro(SalientThreshold, double);
+  ///@}
+
   /// Includes the transform's modification time.
   vtkMTimeType GetMTime() override;
 
@@ -84,6 +93,7 @@ protected:
   double StiffnessScale = 10.0;
   double StiffnessEpsilon = 0.1;
   bool Plastic = true;
+  double SalientThreshold = 0.5;
 
 private:
   vtkGeometrySeamCarving(const vtkGeometrySeamCarving&) = delete;

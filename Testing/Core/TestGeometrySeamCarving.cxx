@@ -20,6 +20,20 @@ namespace kerf
 namespace
 {
 
+// The editing's input from a surface, its regions, its seams and its normal-cone angles.
+SeamCarvingInput carvingInput(const TriangleMesh& mesh, const std::vector<double>& region,
+  const GeometrySeamsResult& seams, const std::vector<double>& angle)
+{
+  SeamCarvingInput in;
+  in.mesh = &mesh;
+  in.region = region;
+  in.faceRing = seams.ring;
+  in.faceSector = seams.faceSector;
+  in.faceCost = seams.faceCost;
+  in.normalConeAngle = angle;
+  return in;
+}
+
 // Radius 1, height 4, 48 points around, 49 rings (spacing 1/12), six bumps around z = 2:
 // handle z <= 0.5, fixed z >= 3.5, so the modeling region is 36 rows, the bumps about 7 of them.
 struct BumpyCylinder
@@ -35,18 +49,67 @@ struct BumpyCylinder
     options.sectorCount = sectors;
     this->seams = computeGeometrySeams(this->mesh, this->region, this->angle, options);
   }
-  SeamCarvingInput input() const
-  {
-    SeamCarvingInput in;
-    in.mesh = &this->mesh;
-    in.region = this->region;
-    in.faceRing = this->seams.ring;
-    in.faceSector = this->seams.faceSector;
-    in.faceCost = this->seams.faceCost;
-    in.normalConeAngle = this->angle;
-    return in;
-  }
+  SeamCarvingInput input() const { return carvingInput(this->mesh, this->region, this->seams, this->angle); }
 };
+
+// A tube of makeFeatureTube with its regions, seams and feature points (the modeling region is
+// 3.4 high: z in (0.8, 4.2)).
+struct FeatureTube
+{
+  TriangleMesh mesh;
+  std::vector<double> region;
+  std::vector<double> angle;
+  GeometrySeamsResult seams;
+  std::vector<int> features;
+  FeatureTube(TubeFeature feature, int around, int rows, int rings)
+    : mesh(makeFeatureTube(feature, around, rows))
+    , region(heightBandRegions(mesh, 0.8, 4.2))
+    , angle(computeSurfaceDescriptors(mesh).normalConeAngle)
+    , features(featureTubePoints(mesh))
+  {
+    GeometrySeamsOptions options;
+    options.ringCount = rings;
+    this->seams = computeGeometrySeams(this->mesh, this->region, this->angle, options);
+  }
+  SeamCarvingInput input() const { return carvingInput(this->mesh, this->region, this->seams, this->angle); }
+};
+
+// The feature's shape error: the RMS of l' / l - 1 over the input edges between two feature
+// points, l' measured between the same input points in the result; `deleted` counts the feature
+// points the result lost (collapsed away).
+double featureChange(
+  const TriangleMesh& mesh, const std::vector<int>& features, const SeamCarvingResult& result, int& deleted)
+{
+  std::vector<int> outputOf(mesh.vertexCount(), -1);
+  for (std::size_t i = 0; i < result.pointOrigin.size(); ++i)
+  {
+    if (result.pointOrigin[i] >= 0)
+    {
+      outputOf[result.pointOrigin[i]] = static_cast<int>(i);
+    }
+  }
+  std::vector<char> isFeature(mesh.vertexCount(), 0);
+  deleted = 0;
+  for (int v : features)
+  {
+    isFeature[v] = 1;
+    deleted += outputOf[v] < 0 ? 1 : 0;
+  }
+  double sum = 0.0;
+  int count = 0;
+  for (int e = 0; e < mesh.edgeCount(); ++e)
+  {
+    const int a = mesh.edgeVertices(e)[0], b = mesh.edgeVertices(e)[1];
+    if (isFeature[a] && isFeature[b] && outputOf[a] >= 0 && outputOf[b] >= 0)
+    {
+      const double ratio =
+        (result.points[outputOf[a]] - result.points[outputOf[b]]).norm() / (mesh.point(a) - mesh.point(b)).norm();
+      sum += (ratio - 1.0) * (ratio - 1.0);
+      ++count;
+    }
+  }
+  return std::sqrt(sum / std::max(1, count));
+}
 
 Eigen::Matrix4d translation(double dz)
 {
@@ -175,6 +238,99 @@ TEST(GeometrySeamCarving, SquashKeepsTheBumps)
   expectValid(carved);
 }
 
+// Dekkers and Kobbelt 2014, abstract and section 5: plastic editing keeps features better than
+// elastic. On four tubes whose features a ring can go around, stretches and squashes of 10, 25 and
+// 40% of the modeling region's height (the handle moved in four steps): the feature's shape error
+// with seam carving is at most half of the elastic editing's (Plastic off, same stiffness), no
+// feature point is collapsed away and the surface stays valid. The one exception is measured and
+// asserted as it is: the row of cups squashed by 40% leaves too little feature-free tube beside the
+// cups (1.6 of 3.4) for the 1.36 to be removed there.
+TEST(GeometrySeamCarving, PlasticKeepsFeaturesBetterThanElastic)
+{
+  struct Case
+  {
+    const char* name;
+    TubeFeature feature;
+    int around, rows, rings;
+  };
+  const Case cases[] = { { "knob", TubeFeature::Knob, 64, 81, 30 }, { "groove", TubeFeature::Groove, 64, 81, 30 },
+    { "crease", TubeFeature::Crease, 64, 81, 30 }, { "cups", TubeFeature::Cups, 96, 121, 40 } };
+  for (const Case& c : cases)
+  {
+    const FeatureTube tube(c.feature, c.around, c.rows, c.rings);
+    ASSERT_GT(tube.features.size(), 90u) << c.name;
+    for (double fraction : { -0.4, -0.25, -0.1, 0.1, 0.25, 0.4 })
+    {
+      const double move = -fraction * 3.4; // down stretches, up squashes
+      double change[2];
+      int deleted[2];
+      SeamCarvingResult carved;
+      for (int plastic = 0; plastic < 2; ++plastic)
+      {
+        SeamCarvingOptions options;
+        options.plastic = plastic == 1;
+        GeometrySeamCarving session(tube.input(), options);
+        for (int step = 1; step <= 4; ++step)
+        {
+          carved = session.deform(translation(move * step / 4.0));
+        }
+        change[plastic] = featureChange(tube.mesh, tube.features, carved, deleted[plastic]);
+      }
+      std::printf("%-6s %s %2.0f%%: elastic %.4f, seam carving %.4f (ratio %.2f; %d split, %d collapsed)\n", c.name,
+        fraction > 0.0 ? "stretch" : "squash ", 100.0 * std::abs(fraction), change[0], change[1], change[1] / change[0],
+        carved.splitSegments, carved.collapsedSegments);
+      EXPECT_EQ(deleted[1], 0) << c.name << " " << fraction;
+      EXPECT_GT(carved.splitSegments + carved.collapsedSegments, 0) << c.name << " " << fraction;
+      const bool exception = c.feature == TubeFeature::Cups && fraction == -0.4;
+      EXPECT_LT(change[1], (exception ? 0.7 : 0.5) * change[0]) << c.name << " " << fraction;
+      expectValid(carved);
+    }
+  }
+}
+
+// Where a ring cannot go around a feature (a ridge from the handle to the fixed region), its
+// segment in the ridge's sector is left alone (Dekkers and Kobbelt 2014, 3.3.1): no ridge point
+// is collapsed away and the ridge is stretched no more than by elastic editing (it must stretch
+// with the tube). Executing every segment (threshold 1) cuts through the ridge.
+TEST(GeometrySeamCarving, SalientSegmentsAreLeftAlone)
+{
+  const FeatureTube tube(TubeFeature::Ridge, 64, 81, 15);
+  SeamCarvingOptions elastic, everySegment;
+  elastic.plastic = false;
+  everySegment.salientThreshold = 1.0;
+  GeometrySeamCarving session(tube.input(), SeamCarvingOptions());
+  EXPECT_EQ(GeometrySeamCarving(tube.input(), everySegment).salientSegmentCount(), 0);
+  // Each ring crosses the ridge in one sector, or in the two it borders.
+  EXPECT_GE(session.salientSegmentCount(), static_cast<int>(tube.seams.ringCost.size()));
+  EXPECT_LE(session.salientSegmentCount(), 2 * static_cast<int>(tube.seams.ringCost.size()));
+  for (double move : { -0.85, 0.85 })
+  {
+    double change[3];
+    int deleted[3];
+    const SeamCarvingOptions* options[3] = { &elastic, &everySegment, nullptr };
+    for (int k = 0; k < 3; ++k)
+    {
+      GeometrySeamCarving run(tube.input(), options[k] ? *options[k] : SeamCarvingOptions());
+      SeamCarvingResult result;
+      for (int step = 1; step <= 4; ++step)
+      {
+        result = run.deform(translation(move * step / 4.0));
+      }
+      change[k] = featureChange(tube.mesh, tube.features, result, deleted[k]);
+      if (k == 2)
+      {
+        EXPECT_GT(result.splitSegments + result.collapsedSegments, 0);
+        expectValid(result);
+      }
+    }
+    std::printf("ridge %s 25%%: elastic %.4f, every segment %.4f (%d ridge points lost), salient ones left %.4f\n",
+      move < 0.0 ? "stretch" : "squash ", change[0], change[1], deleted[1], change[2]);
+    EXPECT_EQ(deleted[2], 0);
+    EXPECT_LT(change[2], 1.1 * change[0]);
+    EXPECT_GT(change[1], 1.2 * change[2]);
+  }
+}
+
 TEST(GeometrySeamCarving, MovingBackToTheIdentityRestoresTheInput)
 {
   const BumpyCylinder setup;
@@ -248,6 +404,8 @@ TEST(GeometrySeamCarving, ExecutionOrderFollowsTheSegmentsError)
   GeometrySeamCarving carving(setup.input(), SeamCarvingOptions());
   ASSERT_EQ(carving.sectorCount(), 6);
   EXPECT_EQ(carving.ringCount(), static_cast<int>(setup.seams.ringCost.size()));
+  // Every ring once per sector, but the salient segments (none here: the rings go around the bumps).
+  EXPECT_EQ(carving.salientSegmentCount(), 0);
   for (const std::vector<int>& order : carving.executionOrder())
   {
     EXPECT_EQ(order.size(), setup.seams.ringCost.size());
@@ -300,6 +458,12 @@ TEST(GeometrySeamCarving, BadInputIsRefused)
   SeamCarvingOptions badStiffness;
   badStiffness.stiffnessEpsilon = 0.0;
   EXPECT_NE(message(setup.input(), badStiffness).find("stiffness"), std::string::npos);
+  for (double threshold : { -0.1, 1.5, std::nan("") })
+  {
+    SeamCarvingOptions badThreshold;
+    badThreshold.salientThreshold = threshold;
+    EXPECT_NE(message(setup.input(), badThreshold).find("salient threshold"), std::string::npos) << threshold;
+  }
 
   GeometrySeamCarving carving(setup.input(), SeamCarvingOptions());
   Eigen::Matrix4d singular = Eigen::Matrix4d::Identity();

@@ -20,7 +20,10 @@
 #include <vtkPolyData.h>
 #include <vtkTransform.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -69,6 +72,86 @@ bool sameAsCore(vtkPolyData* output, const kerf::SeamCarvingResult& core)
     }
   }
   return true;
+}
+// The knob and the ridge of the Core tests through both filters with their defaults: the knob,
+// which the rings go around, keeps its shape much better than with Plastic off (a stretch of 25%
+// of the modeling region's height in four moves); the ridge, which every ring crosses, has its
+// segments left alone (SalientSegments) and loses no point to a squash.
+bool testFeatureTubes()
+{
+  bool ok = true;
+  for (kerf::TubeFeature feature : { kerf::TubeFeature::Knob, kerf::TubeFeature::Ridge })
+  {
+    const kerf::TriangleMesh mesh = kerf::makeFeatureTube(feature, 64, 81);
+    const std::vector<int> features = kerf::featureTubePoints(mesh);
+    vtkNew<vtkGeometrySeams> seams;
+    seams->SetInputData(kerf::test::WithRegions(mesh, kerf::heightBandRegions(mesh, 0.8, 4.2)));
+    double change[2];
+    int lost = 0;
+    for (int plastic = 0; plastic < 2; ++plastic)
+    {
+      vtkNew<vtkGeometrySeamCarving> carving;
+      carving->SetInputConnection(seams->GetOutputPort());
+      carving->SetPlastic(plastic == 1);
+      vtkNew<vtkTransform> handle;
+      carving->SetHandleTransform(handle);
+      const double move = feature == kerf::TubeFeature::Knob ? -0.85 : 0.85;
+      for (int step = 1; step <= 4; ++step)
+      {
+        handle->Identity();
+        handle->Translate(0.0, 0.0, move * step / 4.0);
+        ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(carving).empty());
+      }
+      vtkPolyData* output = carving->GetOutput();
+      vtkDataArray* origin = output->GetPointData()->GetArray("OriginalPointId");
+      std::vector<vtkIdType> outputOf(static_cast<std::size_t>(mesh.vertexCount()), -1);
+      for (vtkIdType i = 0; origin && i < output->GetNumberOfPoints(); ++i)
+      {
+        const int v = static_cast<int>(origin->GetComponent(i, 0));
+        if (v >= 0)
+        {
+          outputOf[static_cast<std::size_t>(v)] = i;
+        }
+      }
+      std::vector<char> isFeature(static_cast<std::size_t>(mesh.vertexCount()), 0);
+      lost = 0;
+      for (int v : features)
+      {
+        isFeature[static_cast<std::size_t>(v)] = 1;
+        lost += outputOf[static_cast<std::size_t>(v)] < 0 ? 1 : 0;
+      }
+      double sum = 0.0;
+      int count = 0;
+      for (int e = 0; e < mesh.edgeCount(); ++e)
+      {
+        const auto& ends = mesh.edgeVertices(e);
+        const vtkIdType a = outputOf[static_cast<std::size_t>(ends[0])],
+                        b = outputOf[static_cast<std::size_t>(ends[1])];
+        if (isFeature[static_cast<std::size_t>(ends[0])] && isFeature[static_cast<std::size_t>(ends[1])] && a >= 0 &&
+          b >= 0)
+        {
+          double p[3], q[3];
+          output->GetPoint(a, p);
+          output->GetPoint(b, q);
+          const double ratio = (kerf::Vector3(p[0], p[1], p[2]) - kerf::Vector3(q[0], q[1], q[2])).norm() /
+            (mesh.point(ends[0]) - mesh.point(ends[1])).norm();
+          sum += (ratio - 1.0) * (ratio - 1.0);
+          ++count;
+        }
+      }
+      change[plastic] = std::sqrt(sum / std::max(1, count));
+      if (plastic == 1 && feature == kerf::TubeFeature::Ridge)
+      {
+        ok &= KERF_CHECK(fieldValue(output, "SalientSegments") >= 15.0);
+      }
+    }
+    const bool knob = feature == kerf::TubeFeature::Knob;
+    std::cout << (knob ? "knob stretched" : "ridge squashed") << " by 25%: feature change " << change[0] << " elastic, "
+              << change[1] << " seam carving" << std::endl;
+    ok &= KERF_CHECK(lost == 0);
+    ok &= KERF_CHECK(knob ? change[1] < 0.5 * change[0] : change[1] < 1.1 * change[0]);
+  }
+  return ok;
 }
 } // namespace
 
@@ -193,5 +276,12 @@ int TestGeometrySeamCarvingFilter(int, char*[])
   ok &= KERF_CHECK(error.find("stiffness") != std::string::npos);
   carving->SetStiffnessEpsilon(0.1);
   ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(carving).empty());
+  carving->SetSalientThreshold(NAN);
+  error = kerf::test::UpdateAndCaptureError(carving);
+  ok &= KERF_CHECK(error.find("salient threshold") != std::string::npos);
+  carving->SetSalientThreshold(0.5);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(carving).empty());
+  ok &= KERF_CHECK(fieldValue(carving->GetOutput(), "SalientSegments") == 0.0); // the rings go around the bumps
+  ok &= testFeatureTubes();
   return ok ? 0 : 1;
 }

@@ -33,6 +33,7 @@ class GeometrySeamCarvingTest(unittest.TestCase):
         self.assertEqual(carving.GetStiffnessScale(), 10.0)
         self.assertEqual(carving.GetStiffnessEpsilon(), 0.1)
         self.assertTrue(carving.GetPlastic())
+        self.assertEqual(carving.GetSalientThreshold(), 0.5)
         self.assertIsNone(carving.GetHandleTransform())
 
     def test_stretch_splits_rings_and_the_identity_undoes_them(self):

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <string>
@@ -92,6 +93,7 @@ struct GeometrySeamCarving::Implementation
   std::vector<double> sectorRestArea;
   std::vector<std::vector<double>> segmentArea; // [sector][ring]
   std::vector<std::vector<int>> order;          // per sector: rings by increasing Eq. 6 error
+  int salientSegments = 0;                      // segments left out of the orders as salient
 
   // The current state and what was built for it.
   std::vector<int> state; // per sector, signed count
@@ -778,6 +780,10 @@ GeometrySeamCarving::GeometrySeamCarving(const SeamCarvingInput& input, const Se
   {
     throw Error("the stiffness scale must be finite and non-negative and the stiffness epsilon positive");
   }
+  if (!(options.salientThreshold >= 0.0 && options.salientThreshold <= 1.0))
+  {
+    throw Error("the salient threshold must lie in [0, 1] (1 executes every segment)");
+  }
   d.options = options;
   d.mesh = &mesh;
   d.modelingFaces = checkSeamRegions(mesh, input.region);
@@ -816,11 +822,31 @@ GeometrySeamCarving::GeometrySeamCarving(const SeamCarvingInput& input, const Se
   d.buildBase(input);
   d.findRings(input);
 
-  // Per sector: rest area, each ring segment's area and its Eq. 6 error, the execution order.
+  // ang(v) scaled linearly to [0, 1] over the modeling region's points, as Eq. 3's saliency term.
+  double lowAngle = std::numeric_limits<double>::infinity(), highAngle = -lowAngle;
+  for (int f : d.modelingFaces)
+  {
+    for (int v : mesh.triangle(f))
+    {
+      lowAngle = std::min(lowAngle, input.normalConeAngle[v]);
+      highAngle = std::max(highAngle, input.normalConeAngle[v]);
+    }
+  }
+  // Angles that differ by less than 1e-3 rad over the whole region (a plain tube's, up to rounding)
+  // hold no feature: scaled, their rounding noise would fill [0, 1].
+  auto salient = [&](const Triangle& t) {
+    const double threshold = lowAngle + options.salientThreshold * (highAngle - lowAngle);
+    return options.salientThreshold < 1.0 && highAngle - lowAngle > 1e-3 &&
+      std::max({ input.normalConeAngle[t[0]], input.normalConeAngle[t[1]], input.normalConeAngle[t[2]] }) > threshold;
+  };
+
+  // Per sector: rest area, each ring segment's area, its Eq. 6 error and whether it is salient,
+  // the execution order.
   const int ringCount = static_cast<int>(d.rings.size());
   d.sectorRestArea.assign(d.sectors, 0.0);
   d.segmentArea.assign(d.sectors, std::vector<double>(ringCount, 0.0));
   std::vector<std::vector<double>> error(d.sectors, std::vector<double>(ringCount, 0.0));
+  std::vector<std::vector<char>> isSalient(d.sectors, std::vector<char>(ringCount, 0));
   for (int f : d.modelingFaces)
   {
     const Triangle& t = mesh.triangle(f);
@@ -833,6 +859,7 @@ GeometrySeamCarving::GeometrySeamCarving(const SeamCarvingInput& input, const Se
       d.segmentArea[j][k] += area;
       // Dekkers and Kobbelt 2014, Eq. 6, with each triangle's mean edge cost standing for its edges'.
       error[j][k] += std::max(0.0, input.faceCost[f]);
+      isSalient[j][k] |= salient(t) ? 1 : 0;
     }
   }
   d.order.assign(d.sectors, std::vector<int>());
@@ -840,7 +867,11 @@ GeometrySeamCarving::GeometrySeamCarving(const SeamCarvingInput& input, const Se
   {
     for (int k = 0; k < ringCount; ++k)
     {
-      if (d.segmentArea[j][k] > 0.0)
+      if (d.segmentArea[j][k] > 0.0 && isSalient[j][k])
+      {
+        ++d.salientSegments;
+      }
+      else if (d.segmentArea[j][k] > 0.0)
       {
         d.order[j].push_back(k);
       }
@@ -865,6 +896,11 @@ int GeometrySeamCarving::ringCount() const
 const std::vector<std::vector<int>>& GeometrySeamCarving::executionOrder() const
 {
   return this->Impl->order;
+}
+
+int GeometrySeamCarving::salientSegmentCount() const
+{
+  return this->Impl->salientSegments;
 }
 
 const SeamCarvingResult& GeometrySeamCarving::deform(const Eigen::Matrix4d& handleTransform)

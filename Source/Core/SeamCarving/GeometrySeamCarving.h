@@ -18,6 +18,11 @@ struct SeamCarvingOptions
   double stiffnessScale = 10.0;  ///< s of Eq. 7 (the paper's octopus and seahorse use 10)
   double stiffnessEpsilon = 0.1; ///< epsilon of Eq. 7, keeps flat vertices' springs positive
   bool plastic = true;           ///< execute ring seams; false gives the plain elastic result
+  /// A ring segment is not executed in its sector when one of its triangles has a corner whose
+  /// ang(v) (Eq. 4), scaled linearly to [0, 1] over the modeling region's points, exceeds this:
+  /// a ring forced across a feature leaves it alone there (Dekkers and Kobbelt 2014, 3.3.1).
+  /// In [0, 1]; 1 executes every segment.
+  double salientThreshold = 0.5;
 };
 
 /// The preprocessed surface the editing starts from: the rest mesh, the painted regions and what
@@ -75,8 +80,11 @@ public:
 
   int sectorCount() const;
   int ringCount() const;
-  /// Per sector, the rings in the order they are executed there (increasing Eq. 6 error).
+  /// Per sector, the rings in the order they are executed there (increasing Eq. 6 error); the
+  /// salient segments (SeamCarvingOptions::salientThreshold) are left out.
   const std::vector<std::vector<int>>& executionOrder() const;
+  /// Ring segments left out of the execution orders as salient, over all sectors.
+  int salientSegmentCount() const;
 
 private:
   struct Implementation;
