@@ -9,6 +9,7 @@
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCommand.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkExecutive.h>
 #include <vtkNew.h>
@@ -136,6 +137,46 @@ bool Check(bool condition, const char* what, const char* file, int line)
     std::cerr << file << ":" << line << ": check failed: " << what << std::endl;
   }
   return condition;
+}
+
+std::vector<vtkIdType> OutputPointOfInput(vtkPolyData* output, int inputPoints)
+{
+  std::vector<vtkIdType> outputOf(static_cast<std::size_t>(inputPoints), -1);
+  vtkDataArray* origin = output->GetPointData()->GetArray("OriginalPointId");
+  for (vtkIdType i = 0; origin && i < output->GetNumberOfPoints(); ++i)
+  {
+    const int v = static_cast<int>(origin->GetComponent(i, 0));
+    if (v >= 0 && v < inputPoints)
+    {
+      outputOf[static_cast<std::size_t>(v)] = i;
+    }
+  }
+  return outputOf;
+}
+
+int SeamCarvingPairImageTest(
+  int argc, char* argv[], vtkPolyData* left, const char* leftCaption, vtkPolyData* right, const char* rightCaption)
+{
+  kerf::SceneOptions options;
+  options.colorArray = "RingSeam";
+  options.colorMap = kerf::SceneOptions::ColorMap::Categorical;
+  options.legendTitle = "Ring";
+  options.width = 900;
+  options.height = 800;
+  options.azimuth = 0.0;
+  options.elevation = -90.0;
+  options.zoom = 0.95;
+  kerf::SceneOptions leftOptions = options, rightOptions = options;
+  leftOptions.caption = leftCaption;
+  rightOptions.caption = rightCaption;
+  std::string error;
+  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderPair(left, leftOptions, right, rightOptions, error);
+  if (!window)
+  {
+    std::cerr << "cannot render: " << error << std::endl;
+    return EXIT_FAILURE;
+  }
+  return vtkRegressionTestImage(window) == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
 }
 
 int CamelSegmentationImageTest(int argc, char* argv[], vtkPolyDataAlgorithm* segmentation)

@@ -44,6 +44,15 @@ CamelWithNeckStroke ReadCamelWithNeckStroke(int argc, char* argv[]);
 /// from one camera with categorical colours; returns the test's exit code.
 int CamelSegmentationImageTest(int argc, char* argv[], vtkPolyDataAlgorithm* segmentation);
 
+/// Per input point, the output point whose OriginalPointId names it (-1 if none: collapsed away),
+/// for the outputs of Geometry Seam Carving.
+std::vector<vtkIdType> OutputPointOfInput(vtkPolyData* output, int inputPoints);
+
+/// The regression image of two Geometry Seam Carving results side by side, coloured by ring seam
+/// from one camera looking at the tube's side; returns the test's exit code.
+int SeamCarvingPairImageTest(
+  int argc, char* argv[], vtkPolyData* left, const char* leftCaption, vtkPolyData* right, const char* rightCaption);
+
 /// The shared research data folder (../shared/data), or "" if absent.
 std::string SharedDataPath(const std::string& relative);
 

@@ -103,16 +103,7 @@ bool testFeatureTubes()
         ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(carving).empty());
       }
       vtkPolyData* output = carving->GetOutput();
-      vtkDataArray* origin = output->GetPointData()->GetArray("OriginalPointId");
-      std::vector<vtkIdType> outputOf(static_cast<std::size_t>(mesh.vertexCount()), -1);
-      for (vtkIdType i = 0; origin && i < output->GetNumberOfPoints(); ++i)
-      {
-        const int v = static_cast<int>(origin->GetComponent(i, 0));
-        if (v >= 0)
-        {
-          outputOf[static_cast<std::size_t>(v)] = i;
-        }
-      }
+      const std::vector<vtkIdType> outputOf = kerf::test::OutputPointOfInput(output, mesh.vertexCount());
       std::vector<char> isFeature(static_cast<std::size_t>(mesh.vertexCount()), 0);
       lost = 0;
       for (int v : features)

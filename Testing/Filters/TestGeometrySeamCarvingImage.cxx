@@ -46,24 +46,5 @@ int TestGeometrySeamCarvingImage(int argc, char* argv[])
     results[plastic] = carving->GetOutput();
   }
 
-  kerf::SceneOptions options;
-  options.colorArray = "RingSeam";
-  options.colorMap = kerf::SceneOptions::ColorMap::Categorical;
-  options.legendTitle = "Ring";
-  options.width = 900;
-  options.height = 800;
-  options.azimuth = 0.0;
-  options.elevation = -90.0;
-  options.zoom = 0.95;
-  kerf::SceneOptions left = options, right = options;
-  left.caption = "Laplace editing";
-  right.caption = "Seam carving";
-  std::string error;
-  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderPair(results[0], left, results[1], right, error);
-  if (!window)
-  {
-    std::cerr << "cannot render: " << error << std::endl;
-    return EXIT_FAILURE;
-  }
-  return vtkRegressionTestImage(window) == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+  return kerf::test::SeamCarvingPairImageTest(argc, argv, results[0], "Laplace editing", results[1], "Seam carving");
 }

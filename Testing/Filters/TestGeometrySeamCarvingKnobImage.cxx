@@ -24,16 +24,7 @@ namespace
 // The largest |l' / l - 1| over the input edges between two knob points.
 double largestKnobChange(const kerf::TriangleMesh& mesh, const std::vector<int>& knob, vtkPolyData* output)
 {
-  vtkDataArray* origin = output->GetPointData()->GetArray("OriginalPointId");
-  std::vector<vtkIdType> outputOf(static_cast<std::size_t>(mesh.vertexCount()), -1);
-  for (vtkIdType i = 0; origin && i < output->GetNumberOfPoints(); ++i)
-  {
-    const int v = static_cast<int>(origin->GetComponent(i, 0));
-    if (v >= 0)
-    {
-      outputOf[static_cast<std::size_t>(v)] = i;
-    }
-  }
+  const std::vector<vtkIdType> outputOf = kerf::test::OutputPointOfInput(output, mesh.vertexCount());
   std::vector<char> onKnob(static_cast<std::size_t>(mesh.vertexCount()), 0);
   for (int v : knob)
   {
@@ -96,24 +87,6 @@ int TestGeometrySeamCarvingKnobImage(int argc, char* argv[])
     return EXIT_FAILURE;
   }
 
-  kerf::SceneOptions options;
-  options.colorArray = "RingSeam";
-  options.colorMap = kerf::SceneOptions::ColorMap::Categorical;
-  options.legendTitle = "Ring";
-  options.width = 900;
-  options.height = 800;
-  options.azimuth = 0.0;
-  options.elevation = -90.0;
-  options.zoom = 0.95;
-  kerf::SceneOptions left = options, right = options;
-  left.caption = "Elastic (Plastic off)";
-  right.caption = "Seam carving";
-  std::string error;
-  vtkSmartPointer<vtkRenderWindow> window = kerf::RenderPair(results[0], left, results[1], right, error);
-  if (!window)
-  {
-    std::cerr << "cannot render: " << error << std::endl;
-    return EXIT_FAILURE;
-  }
-  return vtkRegressionTestImage(window) == vtkRegressionTester::FAILED ? EXIT_FAILURE : EXIT_SUCCESS;
+  return kerf::test::SeamCarvingPairImageTest(
+    argc, argv, results[0], "Elastic (Plastic off)", results[1], "Seam carving");
 }
