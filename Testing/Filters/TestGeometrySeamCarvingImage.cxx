@@ -1,17 +1,12 @@
 // Regression image: a bumpy cylinder stretched by half its modeling region, plain Laplace editing (left) beside
 // geometry seam carving (right), coloured by ring seam.
-#include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkGeometrySeamCarving.h"
 #include "vtkGeometrySeams.h"
 
-#include <vtkDoubleArray.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkRegressionTestImage.h>
-#include <vtkRenderWindow.h>
 #include <vtkTransform.h>
 
 #include <iostream>

@@ -1,18 +1,13 @@
 // Regression image: the tube with one knob (Geometry Seams with its defaults) stretched by a quarter of its modeling
 // region, elastic editing (Plastic off, left) beside geometry seam carving (right), coloured by ring seam; the
 // knob's edges change far less with seam carving (asserted).
-#include "KerfScene.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
 #include "vtkGeometrySeamCarving.h"
 #include "vtkGeometrySeams.h"
 
-#include <vtkDataArray.h>
 #include <vtkNew.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
-#include <vtkRegressionTestImage.h>
-#include <vtkRenderWindow.h>
 #include <vtkTransform.h>
 
 #include <cmath>
