@@ -3,7 +3,9 @@
 // Every benchmark runs on a generated cylinder with a ring of eight bumps in the middle
 // (kerf::makeBumpyCylinder, nearly square quads), the handle on the lower 35% of its height, the
 // fixed region on the upper 35% and the modeling region (30% of the triangles) between. Sizes:
-// about 10k and 100k triangles (the 100k one has a 30k-triangle modeling region). For each size:
+// about 10k and 100k triangles (the 100k one has a 30k-triangle modeling region), and
+// 100k-region: 125,200 triangles with the handle on the lower 10% and the fixed region on the
+// upper 10%, so that the modeling region holds 100k triangles. For each size:
 //   BM_GeometrySeamsFilter/<size>      vtkGeometrySeams, 15 rings, the whole RequestData path
 //                                      (conversion, validation, descriptors, Core, output arrays)
 //   BM_GeometrySeamsCore/<size>        kerf::computeGeometrySeams, 15 rings (global cut first)
@@ -55,10 +57,17 @@ struct CylinderSize
   int rings;
   double height;
   double minimumSeconds;
+  double handleFraction; // the handle below this fraction of the height, the fixed region above 1 - it
+  bool editingOnly;      // only the Geometry Seam Carving benchmarks
 };
 
-// 2 * 64 * 79 = 10,112 and 2 * 200 * 250 = 100,000 triangles; height keeps the quads square.
-const std::array<CylinderSize, 2> Sizes = { { { "10k", 64, 80, 7.85, 0.5 }, { "100k", 200, 251, 7.85, 2.0 } } };
+// 2 * 64 * 79 = 10,112, 2 * 200 * 250 = 100,000 and 2 * 200 * 313 = 125,200 triangles; the height
+// keeps the quads square.
+const std::array<CylinderSize, 3> Sizes = { {
+  { "10k", 64, 80, 7.85, 0.5, 0.35, false },
+  { "100k", 200, 251, 7.85, 2.0, 0.35, false },
+  { "100k-region", 200, 314, 9.83, 2.0, 0.1, true },
+} };
 
 struct SeamScene
 {
@@ -79,7 +88,8 @@ const SeamScene& sceneOfSize(const CylinderSize& size)
   {
     auto built = std::make_unique<SeamScene>();
     built->mesh = kerf::makeBumpyCylinder(1.0, size.height, size.around, size.rings, 8, 0.5 * size.height, 0.4, 0.2);
-    built->regions = kerf::heightBandRegions(built->mesh, 0.35 * size.height, 0.65 * size.height);
+    built->regions = kerf::heightBandRegions(
+      built->mesh, size.handleFraction * size.height, (1.0 - size.handleFraction) * size.height);
     built->normalConeAngle = kerf::computeSurfaceDescriptors(built->mesh).normalConeAngle;
     built->modelingTriangles = static_cast<int>(kerf::checkSeamRegions(built->mesh, built->regions).size());
     built->polyData = kerf::benchmarks::MakePolyData(built->mesh);
@@ -224,20 +234,25 @@ void RegisterGeometrySeamsBenchmarks(bool useSizeMinimumTimes)
   for (const CylinderSize& size : Sizes)
   {
     const std::string label = size.label;
-    std::vector<benchmark::internal::Benchmark*> registered = {
-      benchmark::RegisterBenchmark(("BM_GeometrySeamsFilter/" + label).c_str(), geometrySeamsFilter, size),
-      benchmark::RegisterBenchmark(("BM_GeometrySeamsCore/" + label).c_str(),
-        [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::GlobalCutFirst, 15); }),
-      benchmark::RegisterBenchmark(("BM_GeometrySeamsExhaustive/" + label).c_str(),
-        [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::Exhaustive, 1); }),
-      benchmark::RegisterBenchmark(("BM_SeamCarvingSurface/" + label).c_str(), seamCarvingSession, size),
-      benchmark::RegisterBenchmark(("BM_SeamCarvingUpdate/" + label).c_str(),
-        [size](benchmark::State& state) {
-          seamCarvingUpdate(state, size, 1.0, 1.0 + 1e-4 / (size.height / (size.rings - 1)));
-        }),
-      benchmark::RegisterBenchmark(("BM_SeamCarvingSeamStep/" + label).c_str(),
-        [size](benchmark::State& state) { seamCarvingUpdate(state, size, 0.0, 1.0); }),
-    };
+    std::vector<benchmark::internal::Benchmark*> registered;
+    if (!size.editingOnly)
+    {
+      registered = {
+        benchmark::RegisterBenchmark(("BM_GeometrySeamsFilter/" + label).c_str(), geometrySeamsFilter, size),
+        benchmark::RegisterBenchmark(("BM_GeometrySeamsCore/" + label).c_str(),
+          [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::GlobalCutFirst, 15); }),
+        benchmark::RegisterBenchmark(("BM_GeometrySeamsExhaustive/" + label).c_str(),
+          [size](benchmark::State& state) { geometrySeamsCore(state, size, RingCandidateSearch::Exhaustive, 1); }),
+      };
+    }
+    registered.push_back(
+      benchmark::RegisterBenchmark(("BM_SeamCarvingSurface/" + label).c_str(), seamCarvingSession, size));
+    registered.push_back(
+      benchmark::RegisterBenchmark(("BM_SeamCarvingUpdate/" + label).c_str(), [size](benchmark::State& state) {
+        seamCarvingUpdate(state, size, 1.0, 1.0 + 1e-4 / (size.height / (size.rings - 1)));
+      }));
+    registered.push_back(benchmark::RegisterBenchmark(("BM_SeamCarvingSeamStep/" + label).c_str(),
+      [size](benchmark::State& state) { seamCarvingUpdate(state, size, 0.0, 1.0); }));
     for (benchmark::internal::Benchmark* benchmark : registered)
     {
       benchmark->Unit(benchmark::kMillisecond)->UseRealTime();

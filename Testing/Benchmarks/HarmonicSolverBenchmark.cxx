@@ -43,6 +43,10 @@
 //                                            kerf, Kerf's supernodal kernels) or solveColumns()
 //                                            with one column (route cholmod, CHOLMOD's solve
 //                                            with the BLAS)
+//   BM_SolveThree/<size>/<matrix>/<route>    three right-hand sides (x, y and z, as Geometry Seam
+//                                            Carving solves them): solveBlock() (route kerf, one
+//                                            sweep with Kerf's kernels) or solveColumns() (route
+//                                            cholmod)
 //   BM_SupernodalFactorization/<size>/<matrix>/<route>
 //                                            the numeric factorization by CHOLMOD (route cholmod,
 //                                            with its BLAS) or by Kerf's driver with Eigen's
@@ -590,6 +594,28 @@ void solveOne(benchmark::State& state, SolverScene& scene, Matrix matrix, bool l
   }
 }
 
+void solveThree(benchmark::State& state, SolverScene& scene, Matrix matrix, bool library)
+{
+  const Cholesky& factor = factorOf(scene, matrix, Cholesky::Ordering::AMD);
+  const Eigen::Index n = static_cast<Eigen::Index>(factor.permutation().size());
+  Eigen::MatrixXd b(n, 3);
+  b.col(0) = Eigen::VectorXd::LinSpaced(n, -1.0, 1.0);
+  b.col(1) = Eigen::VectorXd::LinSpaced(n, 2.0, -3.0);
+  b.col(2) = b.col(0).cwiseProduct(b.col(1));
+  Eigen::MatrixXd x;
+  for (auto _ : state)
+  {
+    x = library ? factor.solveColumns(b) : factor.solveBlock(b);
+    benchmark::DoNotOptimize(x.data());
+  }
+  const Eigen::MatrixXd other = library ? factor.solveBlock(b) : factor.solveColumns(b);
+  const double difference = (x - other).norm() / other.norm();
+  if (!(difference < 1e-12))
+  {
+    Fail(state, "the two solves differ by " + std::to_string(difference));
+  }
+}
+
 void applyLowRank(benchmark::State& state, SolverScene& scene, Matrix matrix)
 {
   const Cholesky& factor = factorOf(scene, matrix, Cholesky::Ordering::AMD);
@@ -705,6 +731,9 @@ void RegisterHarmonicSolverBenchmarks()
       {
         add(std::string("BM_SolveOne") + label + "/" + matrixName(matrix) + (library ? "/cholmod" : "/kerf"), size,
           [matrix, library](benchmark::State& state, SolverScene& scene) { solveOne(state, scene, matrix, library); });
+        add(std::string("BM_SolveThree") + label + "/" + matrixName(matrix) + (library ? "/cholmod" : "/kerf"), size,
+          [matrix, library](
+            benchmark::State& state, SolverScene& scene) { solveThree(state, scene, matrix, library); });
       }
     }
   }

@@ -479,17 +479,22 @@ bool SparseCholesky::factorOrdered(
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 {
+  return this->solveBlock(b);
+}
+
+Eigen::MatrixXd SparseCholesky::solveBlock(const Eigen::MatrixXd& b) const
+{
   const Implementation& m = *this->Impl;
   if (!m.factor)
   {
     throw Error("no factorization to solve with");
   }
-  if (b.size() != static_cast<Eigen::Index>(m.factor->n))
+  if (b.rows() != static_cast<Eigen::Index>(m.factor->n))
   {
     throw Error("the right-hand side does not match the factored matrix");
   }
-  Eigen::VectorXd x(b.size());
-  SupernodalSolve::solve(*m.factor, b.data(), x.data(), m.solveWork);
+  Eigen::MatrixXd x(b.rows(), b.cols());
+  SupernodalSolve::solveColumns(*m.factor, b.data(), x.data(), static_cast<int>(b.cols()), m.solveWork);
   return x;
 }
 
@@ -1042,6 +1047,11 @@ Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
     throw Error("no factorization to solve with");
   }
   return this->Impl->solver.solve(b);
+}
+
+Eigen::MatrixXd SparseCholesky::solveBlock(const Eigen::MatrixXd& b) const
+{
+  return this->solveColumns(b);
 }
 
 SparseCholesky::LowRank SparseCholesky::prepare(const Eigen::SparseMatrix<double>& U, LowRankRoute) const

@@ -1,4 +1,5 @@
-// Triangular solves with one right-hand side on a CHOLMOD supernodal factor, with vector kernels chosen per processor.
+// Triangular solves with one or several right-hand sides on a CHOLMOD supernodal factor, with vector kernels chosen per
+// processor.
 #include "Numerics/SupernodalSolve.h"
 
 #ifdef KERF_HAVE_CHOLMOD
@@ -337,18 +338,54 @@ void SupernodalSolve::backward(const cholmod_factor& factor, double* y, std::vec
 
 void SupernodalSolve::solve(const cholmod_factor& factor, const double* b, double* x, std::vector<double>& workspace)
 {
+  solveColumns(factor, b, x, 1, workspace);
+}
+
+void SupernodalSolve::solveColumns(
+  const cholmod_factor& factor, const double* b, double* x, int columns, std::vector<double>& workspace)
+{
   const std::size_t n = factor.n;
   const int* perm = static_cast<const int*>(factor.Perm);
-  std::vector<double> y(n);
-  for (std::size_t k = 0; k < n; ++k)
+  const Supernodes s(factor);
+  const std::size_t width = static_cast<std::size_t>(s.largest());
+  workspace.resize(width * static_cast<std::size_t>(std::max(columns, 1)));
+  std::vector<double> y(n * static_cast<std::size_t>(std::max(columns, 0)));
+  for (int c = 0; c < columns; ++c)
   {
-    y[k] = b[perm ? perm[k] : static_cast<int>(k)];
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      y[c * n + k] = b[c * n + static_cast<std::size_t>(perm ? perm[k] : static_cast<int>(k))];
+    }
   }
-  forward(factor, y.data(), workspace);
-  backward(factor, y.data(), workspace);
-  for (std::size_t k = 0; k < n; ++k)
+  for (int node = 0; node < s.count; ++node)
   {
-    x[perm ? perm[k] : static_cast<int>(k)] = y[k] + 0.0;
+    for (int c = 0; c < columns; ++c)
+    {
+      double* v = workspace.data() + c * width;
+      double* yc = y.data() + c * n;
+      const Block block = s.gather(node, yc, v);
+      forwardBlock(s.values + s.px[node], block.nsr, block.nsc, v);
+      std::copy(v, v + block.nsc, yc + block.first);
+      Supernodes::scatterBelow(block, v, yc);
+    }
+  }
+  for (int node = s.count - 1; node >= 0; --node)
+  {
+    for (int c = 0; c < columns; ++c)
+    {
+      double* v = workspace.data() + c * width;
+      double* yc = y.data() + c * n;
+      const Block block = s.gather(node, yc, v);
+      backwardBlock(s.values + s.px[node], block.nsr, block.nsc, v);
+      std::copy(v, v + block.nsc, yc + block.first);
+    }
+  }
+  for (int c = 0; c < columns; ++c)
+  {
+    for (std::size_t k = 0; k < n; ++k)
+    {
+      x[c * n + static_cast<std::size_t>(perm ? perm[k] : static_cast<int>(k))] = y[c * n + k] + 0.0;
+    }
   }
 }
 

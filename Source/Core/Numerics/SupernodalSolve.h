@@ -1,4 +1,5 @@
-// Triangular solves with one right-hand side on a CHOLMOD supernodal factor, with vector kernels chosen per processor.
+// Triangular solves with one or several right-hand sides on a CHOLMOD supernodal factor, with vector kernels chosen per
+// processor.
 #pragma once
 
 #ifdef KERF_HAVE_CHOLMOD
@@ -31,6 +32,12 @@ public:
   static void backward(const cholmod_factor& factor, double* y, std::vector<double>& workspace);
   /// x = A^-1 b (b and x in A's row order; they may be the same array).
   static void solve(const cholmod_factor& factor, const double* b, double* x, std::vector<double>& workspace);
+  /// X = A^-1 B for `columns` right-hand sides (B and X column-major, n x columns; they may be
+  /// the same array) in one sweep over the factor: each supernode's block is read from memory
+  /// once and applied to every column while it is in the cache. Each column's arithmetic is
+  /// solve()'s, so the columns equal solve()'s bit for bit.
+  static void solveColumns(
+    const cholmod_factor& factor, const double* b, double* x, int columns, std::vector<double>& workspace);
 
   /// True if `factor` is one solveComplex takes: supernodal, complex (L L^H), double precision.
   static bool supportsComplex(const cholmod_factor& factor);

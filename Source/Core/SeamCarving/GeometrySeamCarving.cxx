@@ -11,7 +11,9 @@
 #include <Eigen/SparseCore>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -101,7 +103,8 @@ struct GeometrySeamCarving::Implementation
   bool ordered = false; // the base's ranks hold the rest state's elimination order
   std::vector<int> builtState;
   EditableMesh current;
-  std::vector<int> freeIndex; // per current vertex: unknown index, -1 if constrained
+  std::vector<std::array<int, 4>> corners; // per current face: its corners and its sector
+  std::vector<int> freeIndex;              // per current vertex: unknown index, -1 if constrained
   int unknowns = 0;
   SparseCholesky factor;
   Eigen::SparseMatrix<double> coupling; // unknowns x current vertices: weights to constrained points
@@ -614,6 +617,19 @@ void GeometrySeamCarving::Implementation::buildState()
       }
     }
   }
+  this->corners.clear();
+  this->corners.reserve(m.n_faces());
+  for (const FH f : m.faces())
+  {
+    std::array<int, 4> c{};
+    int k = 0;
+    for (const VH v : m.fv_range(f))
+    {
+      c[k++] = v.idx();
+    }
+    c[3] = m.property(this->faceSector, f);
+    this->corners.push_back(c);
+  }
   this->builtState = this->state;
   this->built = true;
   this->assemble();
@@ -636,45 +652,50 @@ void GeometrySeamCarving::Implementation::assemble()
       this->freeIndex[v.idx()] = this->unknowns++;
     }
   }
-  std::vector<Eigen::Triplet<double>> a, c;
-  this->restRhs.setZero(this->unknowns, 3);
-  for (const EH e : m.edges())
-  {
-    const HH h = m.halfedge_handle(e, 0);
-    const int i = m.from_vertex_handle(h).idx(), j = m.to_vertex_handle(h).idx();
-    const double w =
-      m.property(this->weight, e) * 0.5 * (m.property(this->stiffness, VH(i)) + m.property(this->stiffness, VH(j)));
-    const Vec3& r = m.property(this->rest, e).value; // x_j - x_i at rest
-    const int fi = this->freeIndex[i], fj = this->freeIndex[j];
-    if (fi >= 0)
-    {
-      a.emplace_back(fi, fi, w);
-      this->restRhs.row(fi) -= w * Eigen::RowVector3d(r[0], r[1], r[2]);
-      if (fj >= 0)
-      {
-        a.emplace_back(fi, fj, -w);
-      }
-      else
-      {
-        c.emplace_back(fi, j, w);
-      }
-    }
-    if (fj >= 0)
-    {
-      a.emplace_back(fj, fj, w);
-      this->restRhs.row(fj) += w * Eigen::RowVector3d(r[0], r[1], r[2]);
-      if (fi >= 0)
-      {
-        a.emplace_back(fj, fi, -w);
-      }
-      else
-      {
-        c.emplace_back(fj, i, w);
-      }
-    }
-  }
+  // Column by column, the free points in index order, the lower triangle only (SparseCholesky
+  // reads no more): one pass over each point's edges, without triplets to sort.
   Eigen::SparseMatrix<double> matrix(this->unknowns, this->unknowns);
-  matrix.setFromTriplets(a.begin(), a.end());
+  matrix.reserve(static_cast<Eigen::Index>(m.n_edges()) + this->unknowns);
+  std::vector<Eigen::Triplet<double>> c;
+  this->restRhs.setZero(this->unknowns, 3);
+  std::vector<std::pair<int, double>> below;
+  for (const VH v : m.vertices())
+  {
+    const int fi = this->freeIndex[v.idx()];
+    if (fi < 0)
+    {
+      continue;
+    }
+    matrix.startVec(fi);
+    const double stiffness = m.property(this->stiffness, v);
+    double diagonal = 0.0;
+    Vec3 rhs(0.0, 0.0, 0.0);
+    below.clear();
+    for (const HH h : m.voh_range(v))
+    {
+      const VH u = m.to_vertex_handle(h);
+      const double w = m.property(this->weight, m.edge_handle(h)) * 0.5 * (stiffness + m.property(this->stiffness, u));
+      diagonal += w;
+      rhs -= w * this->restVector(m, h); // the rest vector from v to u
+      const int fj = this->freeIndex[u.idx()];
+      if (fj > fi)
+      {
+        below.emplace_back(fj, -w);
+      }
+      else if (fj < 0)
+      {
+        c.emplace_back(fi, u.idx(), w);
+      }
+    }
+    std::sort(below.begin(), below.end());
+    matrix.insertBack(fi, fi) = diagonal;
+    for (const std::pair<int, double>& entry : below)
+    {
+      matrix.insertBack(entry.first, fi) = entry.second;
+    }
+    this->restRhs.row(fi) = Eigen::RowVector3d(rhs[0], rhs[1], rhs[2]);
+  }
+  matrix.finalize();
   this->coupling.resize(this->unknowns, static_cast<Eigen::Index>(m.n_vertices()));
   this->coupling.setFromTriplets(c.begin(), c.end());
   // The rest state is ordered by AMD; every other state reuses that order, extended by the split
@@ -683,14 +704,16 @@ void GeometrySeamCarving::Implementation::assemble()
   if (this->ordered)
   {
     std::vector<int> order(static_cast<std::size_t>(this->unknowns));
-    std::vector<std::pair<std::pair<int, int>, int>> keys;
+    std::vector<std::pair<std::uint64_t, int>> keys; // rank, then tie
     keys.reserve(order.size());
     for (const VH v : m.vertices())
     {
       const int i = this->freeIndex[v.idx()];
       if (i >= 0)
       {
-        keys.push_back({ { m.property(this->rank, v), m.property(this->tie, v) }, i });
+        const std::uint64_t key = static_cast<std::uint64_t>(m.property(this->rank, v)) << 32 |
+          static_cast<std::uint32_t>(m.property(this->tie, v));
+        keys.push_back({ key, i });
       }
     }
     std::sort(keys.begin(), keys.end());
@@ -745,7 +768,7 @@ void GeometrySeamCarving::Implementation::solve(const Eigen::Matrix4d& transform
     constrained.row(v.idx()) = q.transpose();
   }
   const Eigen::MatrixXd rhs = this->restRhs + this->coupling * constrained;
-  const Eigen::MatrixXd x = this->factor.solveColumns(rhs);
+  const Eigen::MatrixXd x = this->factor.solveBlock(rhs);
   for (const VH v : m.vertices())
   {
     const int i = this->freeIndex[v.idx()];
@@ -928,17 +951,11 @@ const SeamCarvingResult& GeometrySeamCarving::deform(const Eigen::Matrix4d& hand
     }
     d.solve(handleTransform, positions);
     ++out.solves;
-    const EditableMesh& m = d.current;
     std::fill(distortion.begin(), distortion.end(), 0.0);
-    for (const FH f : m.faces())
+    for (std::size_t f = 0; f < d.corners.size(); ++f)
     {
-      int corner[3], k = 0;
-      for (const VH v : m.fv_range(f))
-      {
-        corner[k++] = v.idx();
-      }
-      distortion[m.property(d.faceSector, f)] +=
-        triangleArea(positions[corner[0]], positions[corner[1]], positions[corner[2]]);
+      const std::array<int, 4>& c = d.corners[f];
+      distortion[c[3]] += triangleArea(positions[c[0]], positions[c[1]], positions[c[2]]);
     }
     bool changed = false;
     for (int j = 0; j < d.sectors; ++j)
