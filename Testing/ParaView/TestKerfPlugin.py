@@ -338,11 +338,14 @@ class KerfPluginTest(unittest.TestCase):
                          [["CELLS", "RingSeam"], ["CELLS", "Sector"], ["CELLS", "EdgeCost"]])
         self.assertEqual(carving.HandleTransform.GetXMLName(), "Transform3")
         self.assertEqual(list(carving.GetProperty("StiffnessScale")), [10.0])
+        self.assertEqual(list(carving.GetProperty("SalientThreshold")), [0.5])
         carving.HandleTransform.Translate = [0.0, 0.0, -1.0]
         carving.UpdatePipeline()
         stretched = servermanager.Fetch(carving)
         split = stretched.GetFieldData().GetArray("SplitSegments").GetValue(0)
         self.assertGreater(split, 0)
+        # A plain cylinder has no feature (its normal-cone angles span less than 1e-3 rad).
+        self.assertEqual(stretched.GetFieldData().GetArray("SalientSegments").GetValue(0), 0)
         self.assertGreater(stretched.GetNumberOfPoints(), around * rings)
         self.assertAlmostEqual(stretched.GetBounds()[4], -1.0, places=9)
         carving.HandleTransform.Translate = [0.0, 0.0, -0.5]
@@ -354,6 +357,20 @@ class KerfPluginTest(unittest.TestCase):
         self.assertEqual(back.GetNumberOfPoints(), around * rings)
         moved = vtk_to_numpy(back.GetPoints().GetData()) - vtk_to_numpy(cylinder.GetPoints().GetData())
         self.assertLess(abs(moved).max(), 1e-9)
+
+        # A knob on the modeling region: with Salient Threshold at 0 every segment with any
+        # curvature is salient, at the default 0.5 fewer: the property reaches the filter.
+        radius = 1.0 + 0.3 * numpy.exp(-((z - 2.0) ** 2 + numpy.angle(numpy.exp(1j * u)) ** 2) / 0.1)
+        points.SetData(numpy_to_vtk(numpy.column_stack([radius * numpy.cos(u), radius * numpy.sin(u), z]), deep=True))
+        cylinder.Modified()
+        carving.HandleTransform.Translate = [0.0, 0.0, -1.0]
+        salient = []
+        for threshold in (0.5, 0.0):
+            carving.SalientThreshold = threshold
+            carving.UpdatePipeline()
+            salient.append(servermanager.Fetch(carving).GetFieldData().GetArray("SalientSegments").GetValue(0))
+        self.assertGreater(salient[1], salient[0])
+        self.assertEqual(list(carving.GetProperty("SalientThreshold")), [0.0])
 
     def test_roi_scissor_selects_a_hoof(self):
         """One click on the camel's front hoof: the hoof, cut at the fetlock, as in the image test."""
