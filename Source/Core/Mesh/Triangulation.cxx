@@ -2,6 +2,7 @@
 #include "Mesh/Triangulation.h"
 
 #include "Error.h"
+#include "Mesh/Planar.h"
 
 #include <Eigen/Geometry>
 
@@ -12,15 +13,10 @@ namespace kerf
 
 namespace
 {
-double cross2(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
-{
-  return (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
-}
-
 bool insideTriangle(
   const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c)
 {
-  return cross2(a, b, p) >= 0.0 && cross2(b, c, p) >= 0.0 && cross2(c, a, p) >= 0.0;
+  return cross2(b - a, p - a) >= 0.0 && cross2(c - b, p - b) >= 0.0 && cross2(a - c, p - c) >= 0.0;
 }
 
 void fan(const std::vector<int>& corners, int polygon, Triangulation& out)
@@ -71,7 +67,7 @@ void earClip(const PolygonMesh& mesh, std::vector<int> corners, int polygon, Tri
       const int a = remaining[(i + m - 1) % m];
       const int b = remaining[i];
       const int c = remaining[(i + 1) % m];
-      if (cross2(uv[a], uv[b], uv[c]) <= 0.0)
+      if (cross2(uv[b] - uv[a], uv[c] - uv[a]) <= 0.0)
       {
         continue; // reflex or flat corner
       }

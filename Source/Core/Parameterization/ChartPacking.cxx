@@ -2,6 +2,7 @@
 #include "Parameterization/ChartPacking.h"
 
 #include "Error.h"
+#include "Mesh/Planar.h"
 
 #include <algorithm>
 #include <cmath>
@@ -13,11 +14,6 @@ namespace kerf
 {
 namespace
 {
-
-double cross2(const Vector2& a, const Vector2& b)
-{
-  return a.x() * b.y() - a.y() * b.x();
-}
 
 // Lays boxes on shelves in a square of side `side`; false if they do not fit.
 bool shelfPack(const std::vector<Vector2>& sizes, const std::vector<int>& order, double side, double gap,

@@ -4,6 +4,7 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
+#include "Mesh/Planar.h"
 #include "Numerics/LaplacianWeights.h"
 #include "Numerics/SerialOpenMP.h"
 #include "Numerics/SparseCholesky.h"
@@ -34,11 +35,6 @@ namespace kerf
 {
 namespace
 {
-
-double cross2(const Vector2& a, const Vector2& b)
-{
-  return a.x() * b.y() - a.y() * b.x();
-}
 
 // Calls edge(i, j, w) for each triangle's edge i-j with its share w = cot(angle opposite) / 2 of
 // the cotangent Laplacian's weight, the cotangents given per corner (cornerCotangents).
