@@ -124,4 +124,20 @@ TEST(ChartPacking, PackingScaleOfSimpleLayouts)
   EXPECT_THROW(packBoxes({ { std::nan(""), 1.0 } }, margin, scale), Error);
 }
 
+// Two triangles that share part of the square count as one pair when they belong to two charts,
+// none in one chart; a third chart apart from both adds nothing, and a clockwise triangle counts
+// as its counter-clockwise twin.
+TEST(ChartPacking, OverlapCountSeesOverlappingCharts)
+{
+  const std::vector<Vector2> uv = { { 0.1, 0.1 }, { 0.6, 0.1 }, { 0.1, 0.6 }, { 0.2, 0.2 }, { 0.9, 0.2 }, { 0.2, 0.9 },
+    { 0.7, 0.7 }, { 0.95, 0.7 }, { 0.7, 0.95 } };
+  const std::vector<Triangle> triangles = { { { 0, 1, 2 } }, { { 3, 4, 5 } }, { { 6, 7, 8 } } };
+  EXPECT_EQ(countChartOverlaps(uv, triangles, { 0, 1, 2 }, 64), 1);
+  EXPECT_EQ(countChartOverlaps(uv, triangles, { 0, 0, 2 }, 64), 0);
+  const std::vector<Triangle> clockwise = { { { 0, 2, 1 } }, { { 3, 4, 5 } }, { { 6, 7, 8 } } };
+  EXPECT_EQ(countChartOverlaps(uv, clockwise, { 0, 1, 2 }, 64), 1);
+  EXPECT_THROW(countChartOverlaps(uv, triangles, { 0, 1, 2 }, 0), Error);
+  EXPECT_THROW(countChartOverlaps(uv, triangles, { 0, 1, 2 }, 65537), Error);
+}
+
 } // namespace kerf

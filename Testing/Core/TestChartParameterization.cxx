@@ -266,15 +266,6 @@ TEST(ChartParameterization, MinimalBoxOfATurnedRectangle)
   EXPECT_NEAR(high.y() - low.y(), 0.9, 1e-12);
 }
 
-TEST(ChartParameterization, OverlapCountSeesOverlappingCharts)
-{
-  const std::vector<Vector2> uv = { { 0.1, 0.1 }, { 0.6, 0.1 }, { 0.1, 0.6 }, { 0.2, 0.2 }, { 0.9, 0.2 },
-    { 0.2, 0.9 } };
-  const std::vector<Triangle> triangles = { { { 0, 1, 2 } }, { { 3, 4, 5 } } };
-  EXPECT_EQ(countChartOverlaps(uv, triangles, { 0, 1 }, 64), 1);
-  EXPECT_EQ(countChartOverlaps(uv, triangles, { 0, 0 }, 64), 0);
-}
-
 TEST(ChartParameterization, PackedBoxesDoNotOverlap)
 {
   const std::vector<Vector2> sizes = { { 3, 1 }, { 1, 1 }, { 2, 2 }, { 0.5, 0.2 }, { 1, 0.7 } };

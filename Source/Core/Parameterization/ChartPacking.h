@@ -1,5 +1,7 @@
-// Laying charts out in the unit square: convex hull, minimal-area bounding box, shelf packing of boxes.
+// Laying charts out in the unit square: convex hull, minimal-area bounding box, shelf packing of boxes, overlap count.
 #pragma once
+
+#include "Mesh/TriangleMesh.h"
 
 #include <Eigen/Core>
 
@@ -25,5 +27,11 @@ double minimalBoundingBoxRotation(const std::vector<Vector2>& points);
 /// square. Throws kerf::Error for a margin outside [0, 0.25] or a box with a non-finite or
 /// negative size.
 std::vector<Vector2> packBoxes(const std::vector<Vector2>& sizes, double margin, double& scale);
+
+/// Number of pairs of charts (faceChart: each triangle's chart) whose triangles cover a common
+/// sample of a resolution x resolution grid over the unit square (a sample at each texel's
+/// centre, strictly inside a triangle). Throws kerf::Error for a resolution outside [1, 65536].
+int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangle>& triangles,
+  const std::vector<int>& faceChart, int resolution);
 
 } // namespace kerf

@@ -24,7 +24,6 @@
 #include <limits>
 #include <new>
 #include <numeric>
-#include <set>
 #include <utility>
 
 #ifdef KERF_HAVE_CHOLMOD
@@ -619,56 +618,6 @@ FaceDistortion faceDistortion(
     s2 > 0.0 ? std::sqrt(0.5 * (1.0 / (s1 * s1) + 1.0 / (s2 * s2))) : std::numeric_limits<double>::infinity();
   distortion.flipped = J.determinant() < 0.0;
   return distortion;
-}
-
-int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangle>& triangles,
-  const std::vector<int>& faceChart, int resolution)
-{
-  if (resolution < 1 || resolution > 65536)
-  {
-    throw Error("the overlap grid's resolution " + std::to_string(resolution) + " is outside [1, 65536]");
-  }
-  std::vector<int> owner(static_cast<std::size_t>(resolution) * static_cast<std::size_t>(resolution), -1);
-  std::set<std::pair<int, int>> pairs;
-  for (std::size_t f = 0; f < triangles.size(); ++f)
-  {
-    Vector2 t[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      t[k] = uv[static_cast<std::size_t>(triangles[f][static_cast<std::size_t>(k)])] * resolution;
-    }
-    if (signedArea(t[0], t[1], t[2]) < 0.0)
-    {
-      std::swap(t[1], t[2]);
-    }
-    const auto clampCell = [&](double value) {
-      return static_cast<int>(std::min(std::max(std::floor(value), 0.0), static_cast<double>(resolution - 1)));
-    };
-    const int x0 = clampCell(std::min({ t[0].x(), t[1].x(), t[2].x() }));
-    const int x1 = clampCell(std::max({ t[0].x(), t[1].x(), t[2].x() }));
-    const int y0 = clampCell(std::min({ t[0].y(), t[1].y(), t[2].y() }));
-    const int y1 = clampCell(std::max({ t[0].y(), t[1].y(), t[2].y() }));
-    const int chart = faceChart[f];
-    for (int y = y0; y <= y1; ++y)
-    {
-      for (int x = x0; x <= x1; ++x)
-      {
-        const Vector2 sample(x + 0.5, y + 0.5);
-        if (cross2(t[1] - t[0], sample - t[0]) > 0.0 && cross2(t[2] - t[1], sample - t[1]) > 0.0 &&
-          cross2(t[0] - t[2], sample - t[2]) > 0.0)
-        {
-          int& cell =
-            owner[static_cast<std::size_t>(y) * static_cast<std::size_t>(resolution) + static_cast<std::size_t>(x)];
-          if (cell >= 0 && cell != chart)
-          {
-            pairs.emplace(std::min(cell, chart), std::max(cell, chart));
-          }
-          cell = chart;
-        }
-      }
-    }
-  }
-  return static_cast<int>(pairs.size());
 }
 
 namespace

@@ -152,11 +152,6 @@ std::vector<Vector2> linearAngleBasedFlattening(
 FaceDistortion faceDistortion(
   const Vector3& p0, const Vector3& p1, const Vector3& p2, const Vector2& t0, const Vector2& t1, const Vector2& t2);
 
-/// Number of pairs of charts whose triangles cover a common sample of a resolution x resolution
-/// grid over the unit square (sample at each texel's centre, strictly inside a triangle).
-int countChartOverlaps(const std::vector<Vector2>& uv, const std::vector<Triangle>& triangles,
-  const std::vector<int>& faceChart, int resolution);
-
 /// Cuts the mesh open along the borders of faceLabels and at pinched vertices
 /// (splitAlongFaceLabels with LabelFans::Separate); each connected piece of a label is a chart
 /// (a label in several pieces gives several charts). Cuts the charts that are not disks but can
