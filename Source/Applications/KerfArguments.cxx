@@ -103,6 +103,10 @@ Arguments parseArguments(int argc, char* argv[], int first)
     {
       args.options["output"] = argv[++i];
     }
+    else if (word == "-k" && i + 1 < argc)
+    {
+      args.options["k"] = argv[++i]; // the number of segments
+    }
     else if (word == "-h")
     {
       args.options["help"] = "1";

@@ -23,6 +23,9 @@ int RunCut(const Arguments& args);
 int RunShowcase(const Arguments& args, const char* program);
 int RunBenchmark(const Arguments& args);
 int RunUnwrap(const Arguments& args);
+int RunSegment(const Arguments& args);
+/// The methods `kerf segment` takes, for its help and errors.
+std::string SegmentMethodNames();
 
 /// Updates an algorithm; its VTK error becomes a CommandError "<what>: <message>".
 void RunAlgorithm(vtkAlgorithm* algorithm, const std::string& what);

@@ -56,6 +56,11 @@ const Command Commands[] = {
   { "descriptors", "kerf descriptors MESH [-o OUT.vtp] [--png OUT.png] [render options]",
     "Computes the surface descriptors (normals, principal curvatures and directions, mean and\n"
     "Gaussian curvature, concavity, normal-cone angle) and writes them and/or a picture." },
+  { "segment", "kerf segment MESH [--method NAME] [-k N] [-o OUT.vtp] [--seg OUT.seg] [--png OUT.png] [render options]",
+    "Segments a mesh automatically into k parts (-k, default the filter's: 6 for the ensemble) and\n"
+    "writes the mesh with its Segment cell array (-o, any format convert writes), the labels as a\n"
+    ".seg file (one per triangle, the Princeton benchmark's format) and/or a picture. Methods (each\n"
+    "the filter of that name with its defaults; the first is the default):" },
   { "info", "kerf info MESH",
     "Prints the mesh size and whether Kerf's filters accept it (and if not, why). Exit code 1\n"
     "when the surface is refused." },
@@ -118,6 +123,10 @@ int main(int argc, char* argv[])
       if (args.has("help"))
       {
         std::cout << "Usage: " << c.usage << "\n\n" << c.help << "\n";
+        if (name == "segment")
+        {
+          std::cout << "  " << kerf::SegmentMethodNames() << "\n";
+        }
         if (name == "benchmark")
         {
           const std::vector<std::string> methods = vtkSegmentationBenchmark::GetMethodNames();
@@ -141,6 +150,10 @@ int main(int argc, char* argv[])
       if (name == "descriptors")
       {
         return kerf::RunDescriptors(args);
+      }
+      if (name == "segment")
+      {
+        return kerf::RunSegment(args);
       }
       if (name == "info")
       {

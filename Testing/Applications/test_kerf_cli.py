@@ -24,7 +24,8 @@ class CommandLine(unittest.TestCase):
     def test_help_lists_every_command(self):
         result = run("--help")
         self.assertEqual(result.returncode, 0)
-        for command in ("showcase", "cut", "unwrap", "descriptors", "info", "convert", "render", "benchmark"):
+        for command in ("showcase", "cut", "unwrap", "segment", "descriptors", "info", "convert", "render",
+                        "benchmark"):
             self.assertIn(command, result.stdout)
         self.assertEqual(run("descriptors", "--help").returncode, 0)
         self.assertEqual(run().returncode, 2)
@@ -248,6 +249,45 @@ class CommandLine(unittest.TestCase):
             self.assertEqual(info.returncode, 0, info.stdout + info.stderr)
             self.assertIn("points: 1197", info.stdout)
             self.assertIn("2390 polygons", info.stdout)
+
+    def test_segment_writes_labels_as_a_mesh_array_a_seg_file_and_a_picture(self):
+        camel = os.path.join(SOURCE, "Data", "camel.off")
+        surface, seg = os.path.join(self.folder, "camel.vtp"), os.path.join(self.folder, "camel.seg")
+        picture = os.path.join(self.folder, "camel.png")
+        result = run("segment", camel, "-k", "5", "-o", surface, "--seg", seg, "--png", picture)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("ensemble segmentation of " + camel + ": 5 segments over 19536 triangles", result.stdout)
+        with open(seg) as f:
+            labels = [int(line) for line in f]
+        self.assertEqual(len(labels), 19536)
+        self.assertEqual(sorted(set(labels)), [0, 1, 2, 3, 4])
+        reader = vtkXMLPolyDataReader()
+        reader.SetFileName(surface)
+        reader.Update()
+        segment = reader.GetOutput().GetCellData().GetArray("Segment")
+        self.assertEqual([int(segment.GetValue(c)) for c in range(segment.GetNumberOfTuples())], labels)
+        with open(picture, "rb") as png:
+            self.assertEqual(png.read(8), b"\x89PNG\r\n\x1a\n")
+        # Every other method reaches k on the camel.
+        for method in ("consensus-cuts", "spectral", "k-means", "face-clustering", "watershed", "convex-flooding"):
+            out = os.path.join(self.folder, method + ".seg")
+            result = run("segment", camel, "--method", method, "-k", "4", "--seg", out, "--quiet")
+            self.assertEqual(result.returncode, 0, method + ": " + result.stderr)
+            self.assertEqual(result.stdout, "")
+            with open(out) as f:
+                labels = [int(line) for line in f]
+            self.assertEqual(len(labels), 19536, method)
+            self.assertEqual(len(set(labels)), 4, method)
+        self.assertIn("  ensemble, consensus-cuts, spectral, k-means", run("segment", "--help").stdout)
+        result = run("segment", camel, "--method", "nope")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("unknown method 'nope' for segment (ensemble, consensus-cuts", result.stderr)
+        result = run("segment", camel, "-k", "0")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("expects a number from 1", result.stderr)
+        result = run("segment", os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"))
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("kerf: error: cannot read the mesh", result.stderr)
 
     def test_errors_exit_with_one_and_a_message(self):
         result = run("info", os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"))
