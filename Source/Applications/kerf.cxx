@@ -56,11 +56,16 @@ const Command Commands[] = {
   { "descriptors", "kerf descriptors MESH [-o OUT.vtp] [--png OUT.png] [render options]",
     "Computes the surface descriptors (normals, principal curvatures and directions, mean and\n"
     "Gaussian curvature, concavity, normal-cone angle) and writes them and/or a picture." },
-  { "segment", "kerf segment MESH [--method NAME] [-k N] [-o OUT.vtp] [--seg OUT.seg] [--png OUT.png] [render options]",
+  { "segment",
+    "kerf segment MESH [--method NAME] [-k N] [-o OUT.vtp] [--seg OUT.seg] [--png OUT.png] [render options]\n"
+    "       kerf segment FOLDER [--method NAME] [-k N] [-o OUT_FOLDER]",
     "Segments a mesh automatically into k parts (-k, default the filter's: 6 for the ensemble) and\n"
     "writes the mesh with its Segment cell array (-o, any format convert writes), the labels as a\n"
-    ".seg file (one per triangle, the Princeton benchmark's format) and/or a picture. Methods (each\n"
-    "the filter of that name with its defaults; the first is the default):" },
+    ".seg file (one per triangle, the Princeton benchmark's format) and/or a picture. Given a\n"
+    "folder, segments each mesh file in it (by name) into OUT_FOLDER/NAME.vtp and NAME.seg\n"
+    "(default folder kerf-segment), a progress line each; a mesh that fails is reported, the\n"
+    "others go on, and the exit code is 1. Methods (each the filter of that name with its\n"
+    "defaults; the first is the default):" },
   { "info", "kerf info MESH",
     "Prints the mesh size and whether Kerf's filters accept it (and if not, why). Exit code 1\n"
     "when the surface is refused." },

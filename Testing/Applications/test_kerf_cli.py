@@ -289,6 +289,28 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(result.returncode, 1)
         self.assertIn("kerf: error: cannot read the mesh", result.stderr)
 
+    def test_segment_a_folder_reports_each_mesh_and_goes_on_after_a_failure(self):
+        import shutil
+        folder, out = os.path.join(self.folder, "meshes"), os.path.join(self.folder, "segmented")
+        os.makedirs(folder)
+        for name in ("camel.off", "hand.off"):
+            shutil.copy(os.path.join(SOURCE, "Data", name), folder)
+        with open(os.path.join(folder, "notes.txt"), "w") as f:
+            f.write("not a mesh\n")
+        result = run("segment", folder, "--method", "k-means", "-k", "3", "-o", out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("[1/2] k-means segmentation of camel.off: 3 segments over 19536 triangles", result.stdout)
+        self.assertIn("[2/2] k-means segmentation of hand.off: 3 segments over 2390 triangles", result.stdout)
+        self.assertEqual(sorted(os.listdir(out)), ["camel.seg", "camel.vtp", "hand.seg", "hand.vtp"])
+        with open(os.path.join(out, "hand.seg")) as f:
+            self.assertEqual(len(f.readlines()), 2390)
+        shutil.copy(os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"), folder)
+        result = run("segment", folder, "--method", "k-means", "-k", "3", "-o", out)
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("[3/3] truncated.off failed: cannot read the mesh", result.stdout)
+        self.assertIn("kerf: error: 1 of 3 meshes failed; the first: truncated.off", result.stderr)
+        self.assertEqual(run("segment", folder, "--seg", "x.seg").returncode, 1)
+
     def test_errors_exit_with_one_and_a_message(self):
         result = run("info", os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"))
         self.assertEqual(result.returncode, 1)

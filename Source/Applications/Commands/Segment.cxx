@@ -17,10 +17,17 @@
 #include <vtkPolyDataAlgorithm.h>
 #include <vtkSmartPointer.h>
 
+#include <vtksys/Directory.hxx>
+#include <vtksys/SystemTools.hxx>
+
+#include <algorithm>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <set>
+#include <sstream>
+#include <string>
+#include <vector>
 
 namespace kerf
 {
@@ -83,48 +90,150 @@ vtkSmartPointer<vtkPolyDataAlgorithm> segmentationFilter(const std::string& name
 }
 } // namespace
 
+namespace
+{
+// What one mesh gave: the output surface, its labels and the time.
+struct Segmented
+{
+  vtkSmartPointer<vtkPolyData> surface;
+  std::vector<long long> labels;
+  std::size_t segments = 0;
+  double milliseconds = 0.0;
+};
+
+Segmented segmentFile(const std::string& file, const std::string& method, int k)
+{
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter = segmentationFilter(method, k);
+  filter->SetInputData(ReadMesh(file));
+  const auto start = std::chrono::steady_clock::now();
+  RunAlgorithm(filter, method + " segmentation");
+  Segmented out;
+  out.milliseconds = MillisecondsSince(start);
+  out.surface = filter->GetOutput();
+  vtkDataArray* segment = out.surface->GetCellData()->GetArray("Segment");
+  if (!segment || segment->GetNumberOfTuples() != out.surface->GetNumberOfCells())
+  {
+    throw CommandError{ method + " segmentation gave no Segment label per triangle" };
+  }
+  for (vtkIdType c = 0; c < segment->GetNumberOfTuples(); ++c)
+  {
+    out.labels.push_back(static_cast<long long>(segment->GetComponent(c, 0)));
+  }
+  out.segments = std::set<long long>(out.labels.begin(), out.labels.end()).size();
+  return out;
+}
+
+// The Princeton benchmark's format: one label per line, one line per triangle in order.
+void writeSeg(const std::vector<long long>& labels, const std::string& file)
+{
+  std::ofstream seg(file);
+  for (std::size_t c = 0; c < labels.size() && seg; ++c)
+  {
+    seg << labels[c] << "\n";
+  }
+  if (!seg)
+  {
+    throw CommandError{ "cannot write " + file };
+  }
+}
+
+std::string summary(const std::string& method, const std::string& file, const Segmented& result)
+{
+  std::ostringstream line;
+  line << method << " segmentation of " << file << ": " << result.segments << " segments over "
+       << result.surface->GetNumberOfCells() << " triangles in " << std::fixed << std::setprecision(1)
+       << result.milliseconds << " ms";
+  return line.str();
+}
+
+// Every mesh file of a folder (by extension, in name order) to OUT/NAME.vtp and OUT/NAME.seg;
+// a mesh that fails is reported and the others go on.
+int segmentFolder(const Arguments& args, const std::string& folder, const std::string& method, int k)
+{
+  if (args.has("png") || args.has("seg"))
+  {
+    throw CommandError{ "a folder is segmented into -o FOLDER (NAME.vtp and NAME.seg per mesh); --png and "
+                        "--seg take one mesh" };
+  }
+  std::vector<std::string> files;
+  vtksys::Directory directory;
+  directory.Load(folder);
+  for (unsigned long f = 0; f < directory.GetNumberOfFiles(); ++f)
+  {
+    const std::string name = directory.GetFile(f);
+    const std::string extension = vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(name));
+    const std::string path = folder + "/" + name;
+    if (!vtksys::SystemTools::FileIsDirectory(path) &&
+      (extension == ".off" || extension == ".ply" || extension == ".obj" || extension == ".stl" ||
+        extension == ".vtp" || extension == ".vtk"))
+    {
+      files.push_back(name);
+    }
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty())
+  {
+    throw CommandError{ folder + " holds no mesh files (.off .ply .obj .stl .vtp .vtk)" };
+  }
+  const std::string out = args.get("output", "kerf-segment");
+  if (!vtksys::SystemTools::MakeDirectory(out))
+  {
+    throw CommandError{ "cannot create the folder " + out };
+  }
+  std::vector<std::string> failures;
+  for (std::size_t i = 0; i < files.size(); ++i)
+  {
+    const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(files[i]);
+    std::ostringstream progress;
+    progress << "[" << std::setw(static_cast<int>(std::to_string(files.size()).size())) << i + 1 << "/" << files.size()
+             << "] ";
+    try
+    {
+      const Segmented result = segmentFile(folder + "/" + files[i], method, k);
+      WriteMesh(result.surface, out + "/" + stem + ".vtp");
+      writeSeg(result.labels, out + "/" + stem + ".seg");
+      if (!args.has("quiet"))
+      {
+        std::cout << progress.str() << summary(method, files[i], result) << std::endl;
+      }
+    }
+    catch (const CommandError& e)
+    {
+      failures.push_back(files[i] + ": " + e.message);
+      std::cout << progress.str() << files[i] << " failed: " << e.message << std::endl;
+    }
+  }
+  if (!failures.empty())
+  {
+    throw CommandError{ std::to_string(failures.size()) + " of " + std::to_string(files.size()) +
+      " meshes failed; the first: " + failures[0] };
+  }
+  return 0;
+}
+} // namespace
+
 int RunSegment(const Arguments& args)
 {
-  const std::string input = args.single("mesh file");
+  const std::string input = args.single("mesh file or folder");
   const std::string method = args.get("method", "ensemble");
   const int k = args.has("k") ? args.integer("k", 6, 1, 1000000) : 0;
-  vtkSmartPointer<vtkPolyDataAlgorithm> filter = segmentationFilter(method, k);
+  segmentationFilter(method, k); // an unknown method before any reading
+  if (vtksys::SystemTools::FileIsDirectory(input))
+  {
+    return segmentFolder(args, input, method, k);
+  }
   if (args.has("png"))
   {
     RequireDisplay(); // before the work, not after
   }
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(input);
-  filter->SetInputData(mesh);
-  const auto start = std::chrono::steady_clock::now();
-  RunAlgorithm(filter, method + " segmentation");
-  const double milliseconds = MillisecondsSince(start);
-  vtkPolyData* output = filter->GetOutput();
-  vtkDataArray* segment = output->GetCellData()->GetArray("Segment");
-  if (!segment || segment->GetNumberOfTuples() != output->GetNumberOfCells())
-  {
-    throw CommandError{ method + " segmentation gave no Segment label per triangle" };
-  }
-  std::set<long long> labels;
-  for (vtkIdType c = 0; c < segment->GetNumberOfTuples(); ++c)
-  {
-    labels.insert(static_cast<long long>(segment->GetComponent(c, 0)));
-  }
+  const Segmented result = segmentFile(input, method, k);
   if (args.has("output"))
   {
-    WriteMesh(output, args.get("output"));
+    WriteMesh(result.surface, args.get("output"));
   }
   if (args.has("seg"))
   {
-    // The Princeton benchmark's format: one label per line, one line per triangle in order.
-    std::ofstream seg(args.get("seg"));
-    for (vtkIdType c = 0; c < segment->GetNumberOfTuples() && seg; ++c)
-    {
-      seg << static_cast<long long>(segment->GetComponent(c, 0)) << "\n";
-    }
-    if (!seg)
-    {
-      throw CommandError{ "cannot write " + args.get("seg") };
-    }
+    writeSeg(result.labels, args.get("seg"));
   }
   if (args.has("png"))
   {
@@ -132,13 +241,11 @@ int RunSegment(const Arguments& args)
     options.colorArray = "Segment";
     options.colorMap = SceneOptions::ColorMap::Categorical;
     options.frameLongestAxis = true;
-    RenderPNG(output, options, args.get("png"));
+    RenderPNG(result.surface, options, args.get("png"));
   }
   if (!args.has("quiet"))
   {
-    std::cout << method << " segmentation of " << input << ": " << labels.size() << " segments over "
-              << output->GetNumberOfCells() << " triangles in " << std::fixed << std::setprecision(1) << milliseconds
-              << " ms\n";
+    std::cout << summary(method, input, result) << "\n";
   }
   return 0;
 }
