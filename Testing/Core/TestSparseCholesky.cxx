@@ -208,6 +208,8 @@ TEST(SparseCholesky, SolveColumnsMatchesOneColumnAtATime)
   {
     EXPECT_LT(relativeError(x.col(c), f.reference.solve(b.col(c))), 1e-9);
   }
+  EXPECT_THROW(cholesky.solveColumns(Eigen::MatrixXd::Ones(f.A.rows() + 1, 2)), Error);
+  EXPECT_THROW(cholesky.solve(Eigen::VectorXd::Ones(f.A.rows() - 1)), Error);
   SparseCholesky empty;
   EXPECT_THROW(empty.solveColumns(b), Error);
 }

@@ -505,6 +505,10 @@ Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
   {
     throw Error("no factorization to solve with");
   }
+  if (b.rows() != static_cast<Eigen::Index>(m.factor->n))
+  {
+    throw Error("the right-hand side does not match the factored matrix");
+  }
   cholmod_dense rhs = cholmodView(b.data(), static_cast<std::size_t>(b.rows()), static_cast<std::size_t>(b.cols()));
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, m.factor, &rhs, m.mutableCommon());
   if (!x)
@@ -1033,11 +1037,7 @@ bool SparseCholesky::factor(const Eigen::SparseMatrix<double>& A, Ordering)
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 {
-  if (!this->Impl->ready)
-  {
-    throw Error("no factorization to solve with");
-  }
-  return this->Impl->solver.solve(b);
+  return this->solveColumns(b);
 }
 
 Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
@@ -1045,6 +1045,10 @@ Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
   if (!this->Impl->ready)
   {
     throw Error("no factorization to solve with");
+  }
+  if (b.rows() != this->Impl->solver.rows())
+  {
+    throw Error("the right-hand side does not match the factored matrix");
   }
   return this->Impl->solver.solve(b);
 }
