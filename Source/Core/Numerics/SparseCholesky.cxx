@@ -288,6 +288,7 @@ struct SparseCholesky::Implementation
   // CHOLMOD's calls take a non-const common for its statistics and workspace; the const methods
   // share it (one thread at a time).
   cholmod_common* mutableCommon() const { return const_cast<cholmod_common*>(&this->common); }
+  const cholmod_factor& factorFor(Eigen::Index rows) const;
 
   const int* super() const { return static_cast<const int*>(this->factor->super); }
   const int* pi() const { return static_cast<const int*>(this->factor->pi); }
@@ -477,38 +478,41 @@ bool SparseCholesky::factorOrdered(
   return true;
 }
 
+// The factor a right-hand side of `rows` rows is solved with; throws kerf::Error without one or
+// for another number of rows.
+const cholmod_factor& SparseCholesky::Implementation::factorFor(Eigen::Index rows) const
+{
+  if (!this->factor)
+  {
+    throw Error("no factorization to solve with");
+  }
+  if (rows != static_cast<Eigen::Index>(this->factor->n))
+  {
+    throw Error("the right-hand side does not match the factored matrix");
+  }
+  return *this->factor;
+}
+
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const
 {
-  return this->solveBlock(b);
+  const cholmod_factor& factor = this->Impl->factorFor(b.size());
+  Eigen::VectorXd x(b.size());
+  SupernodalSolve::solve(factor, b.data(), x.data(), this->Impl->solveWork);
+  return x;
 }
 
 Eigen::MatrixXd SparseCholesky::solveBlock(const Eigen::MatrixXd& b) const
 {
-  const Implementation& m = *this->Impl;
-  if (!m.factor)
-  {
-    throw Error("no factorization to solve with");
-  }
-  if (b.rows() != static_cast<Eigen::Index>(m.factor->n))
-  {
-    throw Error("the right-hand side does not match the factored matrix");
-  }
+  const cholmod_factor& factor = this->Impl->factorFor(b.rows());
   Eigen::MatrixXd x(b.rows(), b.cols());
-  SupernodalSolve::solveColumns(*m.factor, b.data(), x.data(), static_cast<int>(b.cols()), m.solveWork);
+  SupernodalSolve::solveColumns(factor, b.data(), x.data(), static_cast<int>(b.cols()), this->Impl->solveWork);
   return x;
 }
 
 Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& b) const
 {
   const Implementation& m = *this->Impl;
-  if (!m.factor)
-  {
-    throw Error("no factorization to solve with");
-  }
-  if (b.rows() != static_cast<Eigen::Index>(m.factor->n))
-  {
-    throw Error("the right-hand side does not match the factored matrix");
-  }
+  m.factorFor(b.rows());
   cholmod_dense rhs = cholmodView(b.data(), static_cast<std::size_t>(b.rows()), static_cast<std::size_t>(b.cols()));
   cholmod_dense* x = cholmod_solve(CHOLMOD_A, m.factor, &rhs, m.mutableCommon());
   if (!x)

@@ -309,31 +309,50 @@ bool SupernodalSolve::supports(const cholmod_factor& factor)
     factor.itype == CHOLMOD_INT;
 }
 
+namespace
+{
+// L^-1 (Forward) or L^-T on `columns` vectors of n values (column c at y + c n, permuted row
+// order), supernode by supernode (from the last for L^-T), each supernode applied to every column
+// while its block is in the cache.
+template <bool Forward>
+void sweep(const Supernodes& s, std::size_t n, double* y, int columns, std::vector<double>& workspace)
+{
+  const std::size_t width = static_cast<std::size_t>(s.largest());
+  workspace.resize(width * static_cast<std::size_t>(std::max(columns, 1)));
+  for (int step = 0; step < s.count; ++step)
+  {
+    const int node = Forward ? step : s.count - 1 - step;
+    for (int c = 0; c < columns; ++c)
+    {
+      double* v = workspace.data() + c * width;
+      double* yc = y + c * n;
+      const Block block = s.gather(node, yc, v);
+      if (Forward)
+      {
+        forwardBlock(s.values + s.px[node], block.nsr, block.nsc, v);
+      }
+      else
+      {
+        backwardBlock(s.values + s.px[node], block.nsr, block.nsc, v);
+      }
+      std::copy(v, v + block.nsc, yc + block.first);
+      if (Forward)
+      {
+        Supernodes::scatterBelow(block, v, yc);
+      }
+    }
+  }
+}
+} // namespace
+
 void SupernodalSolve::forward(const cholmod_factor& factor, double* y, std::vector<double>& workspace)
 {
-  const Supernodes s(factor);
-  workspace.resize(static_cast<std::size_t>(s.largest()));
-  double* v = workspace.data();
-  for (int node = 0; node < s.count; ++node)
-  {
-    const Block b = s.gather(node, y, v);
-    forwardBlock(s.values + s.px[node], b.nsr, b.nsc, v);
-    std::copy(v, v + b.nsc, y + b.first);
-    Supernodes::scatterBelow(b, v, y);
-  }
+  sweep<true>(Supernodes(factor), factor.n, y, 1, workspace);
 }
 
 void SupernodalSolve::backward(const cholmod_factor& factor, double* y, std::vector<double>& workspace)
 {
-  const Supernodes s(factor);
-  workspace.resize(static_cast<std::size_t>(s.largest()));
-  double* v = workspace.data();
-  for (int node = s.count - 1; node >= 0; --node)
-  {
-    const Block b = s.gather(node, y, v);
-    backwardBlock(s.values + s.px[node], b.nsr, b.nsc, v);
-    std::copy(v, v + b.nsc, y + b.first);
-  }
+  sweep<false>(Supernodes(factor), factor.n, y, 1, workspace);
 }
 
 void SupernodalSolve::solve(const cholmod_factor& factor, const double* b, double* x, std::vector<double>& workspace)
@@ -347,8 +366,6 @@ void SupernodalSolve::solveColumns(
   const std::size_t n = factor.n;
   const int* perm = static_cast<const int*>(factor.Perm);
   const Supernodes s(factor);
-  const std::size_t width = static_cast<std::size_t>(s.largest());
-  workspace.resize(width * static_cast<std::size_t>(std::max(columns, 1)));
   std::vector<double> y(n * static_cast<std::size_t>(std::max(columns, 0)));
   for (int c = 0; c < columns; ++c)
   {
@@ -357,29 +374,8 @@ void SupernodalSolve::solveColumns(
       y[c * n + k] = b[c * n + static_cast<std::size_t>(perm ? perm[k] : static_cast<int>(k))];
     }
   }
-  for (int node = 0; node < s.count; ++node)
-  {
-    for (int c = 0; c < columns; ++c)
-    {
-      double* v = workspace.data() + c * width;
-      double* yc = y.data() + c * n;
-      const Block block = s.gather(node, yc, v);
-      forwardBlock(s.values + s.px[node], block.nsr, block.nsc, v);
-      std::copy(v, v + block.nsc, yc + block.first);
-      Supernodes::scatterBelow(block, v, yc);
-    }
-  }
-  for (int node = s.count - 1; node >= 0; --node)
-  {
-    for (int c = 0; c < columns; ++c)
-    {
-      double* v = workspace.data() + c * width;
-      double* yc = y.data() + c * n;
-      const Block block = s.gather(node, yc, v);
-      backwardBlock(s.values + s.px[node], block.nsr, block.nsc, v);
-      std::copy(v, v + block.nsc, yc + block.first);
-    }
-  }
+  sweep<true>(s, n, y.data(), columns, workspace);
+  sweep<false>(s, n, y.data(), columns, workspace);
   for (int c = 0; c < columns; ++c)
   {
     for (std::size_t k = 0; k < n; ++k)
