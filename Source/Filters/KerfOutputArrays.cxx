@@ -33,6 +33,18 @@ void WriteRelabelledSurface(const SurfaceInput& surface, vtkPolyData* input, vtk
   output->GetCellData()->SetActiveScalars(read.arrayName.c_str());
 }
 
+void WriteTriangleArray(
+  const SurfaceInput& surface, vtkPolyData* output, const char* name, const std::vector<int>& values)
+{
+  std::vector<int> perCell(static_cast<std::size_t>(output->GetNumberOfCells()), -1);
+  const std::vector<vtkIdType>& source = surface.SourceCells();
+  for (std::size_t t = 0; t < values.size(); ++t)
+  {
+    perCell[surface.Rebuilt() ? t : static_cast<std::size_t>(source[t])] = values[t];
+  }
+  output->GetCellData()->AddArray(MakeIntArray(name, perCell));
+}
+
 void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
   const char* arrayName, const MeshRequirements& requirements,
   const std::function<std::vector<int>(const Surface&, vtkFieldData*)>& segment)
@@ -49,13 +61,9 @@ void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData*
   {
     output->GetFieldData()->AddArray(figures->GetAbstractArray(a));
   }
-  std::vector<int> perCell(static_cast<std::size_t>(output->GetNumberOfCells()), -1);
-  const std::vector<vtkIdType>& source = surface.SourceCells();
-  for (std::size_t t = 0; t < labels.size(); ++t)
-  {
-    perCell[surface.Rebuilt() ? t : static_cast<std::size_t>(source[t])] = labels[t];
-  }
-  output->GetCellData()->AddArray(MakeIntArray(arrayName, perCell));
+  WriteTriangleArray(surface, output, arrayName, labels);
+  // Active, so that ParaView colours the new output by its segments.
+  output->GetCellData()->SetActiveScalars(arrayName);
   const int count = labels.empty() ? 0 : *std::max_element(labels.begin(), labels.end()) + 1;
   output->GetFieldData()->AddArray(MakeFieldValue("SegmentCount", count));
 }

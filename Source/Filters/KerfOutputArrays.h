@@ -39,10 +39,16 @@ vtkSmartPointer<vtkAbstractArray> MakeIntArray(const char* name, const std::vect
 /// Information panel shows of a segmentation, and what its tests read.
 void WriteSegmentSizes(const std::vector<int>& labels, vtkPolyData* output);
 
+/// One int per triangle of `surface` as the int cell array `name` of `output` (made by
+/// surface.MakeOutput): each value on the output cell its triangle came from; other cells get -1.
+void WriteTriangleArray(
+  const SurfaceInput& surface, vtkPolyData* output, const char* name, const std::vector<int>& values);
+
 /// The body of an automatic-segmentation filter: checks `arrayName`, loads `input` into `surface`
 /// (validated against `requirements`), copies it to `output` with its arrays, runs `segment` (which
 /// returns one label per triangle and may add its figures to the output's field data) and writes
-/// the labels as the int cell array `arrayName` and their count as the field value SegmentCount.
+/// the labels as the int cell array `arrayName` (the active cell scalars) and their count as the
+/// field value SegmentCount.
 void SegmentSurface(vtkAlgorithm* algorithm, SurfaceInput& surface, vtkPolyData* input, vtkPolyData* output,
   const char* arrayName, const MeshRequirements& requirements,
   const std::function<std::vector<int>(const Surface&, vtkFieldData*)>& segment);

@@ -46,6 +46,7 @@ int vtkEnsembleSegmentation::RequestData(
         options.kMeansWeight = kerf::Finite(this->KMeansWeight, "KMeansWeight");
         options.watershedWeight = kerf::Finite(this->WatershedWeight, "WatershedWeight");
         options.faceClusteringWeight = kerf::Finite(this->FaceClusteringWeight, "FaceClusteringWeight");
+        options.coreExtractionWeight = kerf::Finite(this->CoreExtractionWeight, "CoreExtractionWeight");
         options.areaWeighted = this->AreaWeighted;
         options.refinement.bandWidth = kerf::Finite(this->BoundaryBand, "BoundaryBand");
         options.refinement.convexWeight = kerf::Finite(this->ConvexWeight, "ConvexWeight");
@@ -67,6 +68,7 @@ void vtkEnsembleSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KMeansWeight: " << this->KMeansWeight << "\n";
   os << indent << "WatershedWeight: " << this->WatershedWeight << "\n";
   os << indent << "FaceClusteringWeight: " << this->FaceClusteringWeight << "\n";
+  os << indent << "CoreExtractionWeight: " << this->CoreExtractionWeight << "\n";
   os << indent << "AreaWeighted: " << this->AreaWeighted << "\n";
   os << indent << "BoundaryBand: " << this->BoundaryBand << "\n";
   os << indent << "ConvexWeight: " << this->ConvexWeight << "\n";

@@ -278,6 +278,16 @@ class CommandLine(unittest.TestCase):
                 labels = [int(line) for line in f]
             self.assertEqual(len(labels), 19536, method)
             self.assertEqual(len(set(labels)), 4, method)
+        # Core extraction chooses the number of parts itself: the camel's six; -k is refused.
+        out = os.path.join(self.folder, "core-extraction.seg")
+        result = run("segment", camel, "--method", "core-extraction", "--seg", out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("core-extraction segmentation of " + camel + ": 6 segments over 19536 triangles", result.stdout)
+        with open(out) as f:
+            self.assertEqual(sorted(set(int(line) for line in f)), list(range(6)))
+        result = run("segment", camel, "--method", "core-extraction", "-k", "4")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("core-extraction chooses the number of segments itself", result.stderr)
         self.assertIn("  ensemble, consensus-cuts, spectral, k-means", run("segment", "--help").stdout)
         result = run("segment", camel, "--method", "nope")
         self.assertEqual(result.returncode, 1)

@@ -20,12 +20,16 @@
 //                                    member and the reference its cost is quoted against
 //   BM_BoundaryBandCut/22k           kerf::refineSegmentBoundaries of the ensemble's labels
 //                                    without its band (computed once): the band's own cost
+//   BM_CoreExtraction/22k            kerf::segmentByCoreExtraction with its defaults (it chooses
+//                                    its own number of parts), beside the ensemble in the same run
+// and BM_CoreExtraction/100k, beside BM_FaceClusterHierarchy/100k, on the 99,372-triangle dumbbell.
 // The meshes are built once per size, outside the timed loops.
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
 
 #include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
+#include "Segmentation/CoreExtraction.h"
 #include "Segmentation/EnsembleSegmentation.h"
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
@@ -184,6 +188,24 @@ void bandCutBenchmark(benchmark::State& state)
     setCounters);
 }
 
+void coreExtractionBenchmark(benchmark::State& state, const ClusterSize& size)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      int segments = 0;
+      for (auto _ : st)
+      {
+        const kerf::CoreExtractionResult result =
+          kerf::segmentByCoreExtraction(*scene.graph, kerf::CoreExtractionOptions());
+        segments = result.segmentCount;
+        benchmark::DoNotOptimize(result.labels.data());
+      }
+      st.counters["segments"] = segments;
+    },
+    setCounters);
+}
+
 } // namespace
 
 namespace kerf
@@ -197,6 +219,8 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
          benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false),
          benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true),
          benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
+         benchmark::RegisterBenchmark("BM_CoreExtraction/22k", coreExtractionBenchmark, EnsembleSize),
+         benchmark::RegisterBenchmark("BM_CoreExtraction/100k", coreExtractionBenchmark, Sizes[0]),
        })
   {
     registered->Unit(benchmark::kMillisecond)->UseRealTime();

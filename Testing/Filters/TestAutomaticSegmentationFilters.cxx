@@ -1,12 +1,16 @@
 // The automatic-segmentation filters on surfaces with known parts (a dumbbell's two lobes, a cube's
-// six sides): segment counts, Rand index against the known labels, determinism, untouched input,
-// the cached merge tree and the errors.
+// six sides, a body with three fingers): segment counts, Rand index against the known labels, determinism, untouched
+// input, the cached merge tree and the errors.
 #include "Evaluation/SegmentationMetrics.h"
 #include "KerfTestUtilities.h"
 #include "Mesh/MeshGenerators.h"
+#include "Segmentation/CoreExtraction.h"
+#include "Segmentation/FaceGraph.h"
+#include "SegmentationShapes.h"
 #include "vtkBoundaryBandCut.h"
 #include "vtkConsensusCutSegmentation.h"
 #include "vtkConvexFlooding.h"
+#include "vtkCoreExtractionSegmentation.h"
 #include "vtkEnsembleSegmentation.h"
 #include "vtkHierarchicalFaceClustering.h"
 #include "vtkKMeansSegmentation.h"
@@ -204,6 +208,13 @@ Fixture StackedBoxes()
   return { "stacked boxes", surface, parts };
 }
 
+/// makeProtrusions' body with three fingers (5,120 triangles): part 0 the body, 1 to 3 the fingers.
+Fixture Fingers()
+{
+  const kerf::test::Fingers& shape = kerf::test::fingers();
+  return { "fingers", kerf::test::ToPolyData(shape.surface->mesh()), shape.parts };
+}
+
 /// 1 - Rand index of `labels` against the fixture's parts.
 double RandIndexError(const Fixture& fixture, const std::vector<int>& labels)
 {
@@ -339,6 +350,49 @@ int TestAutomaticSegmentationFilters(int, char*[])
     Maker<vtkSpectralSegmentation>([](vtkSpectralSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
   ok &= CheckSegmentation("Ensemble", cube,
     Maker<vtkEnsembleSegmentation>([](vtkEnsembleSegmentation* f) { f->SetSegmentCount(6); }), 6, 0.0);
+
+  // Core extraction finds the body and the three fingers without being told how many: the
+  // fingertips are feature points, the body the core (measured 0.068, as the Core test).
+  const Fixture fingers = Fingers();
+  ok &= CheckSegmentation(
+    "Core Extraction", fingers, Maker<vtkCoreExtractionSegmentation>([](vtkCoreExtractionSegmentation*) {}), 4, 0.075);
+  {
+    vtkNew<vtkCoreExtractionSegmentation> coreExtraction;
+    coreExtraction->SetInputData(fingers.surface);
+    coreExtraction->Update();
+    vtkPolyData* output = coreExtraction->GetOutput();
+    const kerf::CoreExtractionResult expected = kerf::segmentByCoreExtraction(
+      kerf::FaceGraph(kerf::test::fingers().surface->mesh()), kerf::CoreExtractionOptions());
+    ok &= KERF_CHECK(ReadLabels(output, "Segment") == expected.labels);
+    const std::vector<int> core = ReadLabels(output, "Core");
+    ok &= KERF_CHECK(core == std::vector<int>(expected.core.begin(), expected.core.end()));
+    ok &= KERF_CHECK(FieldValue(output, "FeaturePoints") == expected.featurePoints);
+    ok &= KERF_CHECK(FieldValue(output, "CoreExtensions") == expected.coreExtensions);
+    vtkDataArray* featureFaces = vtkDataArray::SafeDownCast(output->GetFieldData()->GetAbstractArray("FeatureFaces"));
+    ok &= KERF_CHECK(featureFaces && featureFaces->GetNumberOfTuples() == expected.featurePoints);
+    // The core holds most of the body and none of a fingertip.
+    int bodyInCore = 0, body = 0;
+    for (std::size_t f = 0; f < core.size(); ++f)
+    {
+      body += fingers.parts[f] == 0 ? 1 : 0;
+      bodyInCore += fingers.parts[f] == 0 && core[f] == 1 ? 1 : 0;
+    }
+    ok &= KERF_CHECK(bodyInCore > 0.9 * body);
+    // Without the minimum cuts, the coarse boundaries (measured 0.059).
+    coreExtraction->SetBandWidth(0.0);
+    coreExtraction->Update();
+    ok &= KERF_CHECK(RandIndexError(fingers, ReadLabels(coreExtraction->GetOutput(), "Segment")) <= 0.065);
+    // Refused parameters.
+    vtkNew<vtkCoreExtractionSegmentation> refused;
+    refused->SetCoarseSize(5);
+    ok &= CheckRefused(refused, fingers.surface, "coarse size");
+    refused->SetCoarseSize(300);
+    refused->SetFeatureRadius(std::nan(""));
+    ok &= CheckRefused(refused, fingers.surface, "FeatureRadius");
+    refused->SetFeatureRadius(0.15);
+    refused->SetMinimumSegmentArea(1.0);
+    ok &= CheckRefused(refused, fingers.surface, "minimum segment area");
+  }
 
   // The merge tree is built once: another count only relabels, and the tree is the output's.
   vtkNew<vtkHierarchicalFaceClustering> clustering;

@@ -248,6 +248,26 @@ class KerfPluginTest(unittest.TestCase):
             self.assertEqual(sorted(set(segments.tolist())), list(range(5)))
             simple.Delete(segmentation)
 
+    def test_core_extraction_proxy(self):
+        """Core Extraction Segmentation, by its label and with its defaults, finds the camel's six
+        parts itself (no segment count); its Core array marks the body; a larger Feature Radius
+        gives no more parts."""
+        camel = simple.OpenDataFile(CAMEL)
+        segmentation = simple.CoreExtractionSegmentation(Input=camel)
+        self.assertEqual(segmentation.FeatureRadius, 0.2)
+        segmentation.UpdatePipeline()
+        output = servermanager.Fetch(segmentation)
+        segments = vtk_to_numpy(output.GetCellData().GetArray("Segment"))
+        self.assertEqual(sorted(set(segments.tolist())), list(range(6)))
+        self.assertEqual(output.GetFieldData().GetArray("SegmentCount").GetValue(0), 6)
+        core = vtk_to_numpy(output.GetCellData().GetArray("Core"))
+        self.assertTrue(0 < int(core.sum()) < len(core))
+        segmentation.FeatureRadius = 0.5
+        segmentation.UpdatePipeline()
+        fewer = vtk_to_numpy(servermanager.Fetch(segmentation).GetCellData().GetArray("Segment"))
+        self.assertLessEqual(len(set(fewer.tolist())), 6)
+        simple.Delete(segmentation)
+
     def test_ensemble_segmentation_proxy(self):
         """Ensemble Segmentation with its defaults gives the camel the eight segments asked for,
         from five members' votes; with only the consensus cuts voting and no boundary band it gives

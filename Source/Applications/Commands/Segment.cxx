@@ -4,6 +4,7 @@
 
 #include "vtkConsensusCutSegmentation.h"
 #include "vtkConvexFlooding.h"
+#include "vtkCoreExtractionSegmentation.h"
 #include "vtkEnsembleSegmentation.h"
 #include "vtkHierarchicalFaceClustering.h"
 #include "vtkKMeansSegmentation.h"
@@ -46,6 +47,17 @@ vtkSmartPointer<vtkPolyDataAlgorithm> withCount(int k)
   return filter;
 }
 
+// A method that chooses its number of segments itself: -k is refused.
+template <typename Filter>
+vtkSmartPointer<vtkPolyDataAlgorithm> ownCount(int k)
+{
+  if (k > 0)
+  {
+    throw CommandError{ "core-extraction chooses the number of segments itself: leave out -k" };
+  }
+  return vtkSmartPointer<Filter>::New();
+}
+
 struct SegmentMethod
 {
   const char* name;
@@ -61,6 +73,7 @@ const SegmentMethod Methods[] = {
   { "face-clustering", withCount<vtkHierarchicalFaceClustering> },
   { "watershed", withCount<vtkWatershedSegmentation> },
   { "convex-flooding", withCount<vtkConvexFlooding> },
+  { "core-extraction", ownCount<vtkCoreExtractionSegmentation> },
 };
 
 } // namespace

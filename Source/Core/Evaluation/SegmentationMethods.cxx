@@ -8,6 +8,7 @@
 #include "Harmonic/HarmonicCutSession.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
+#include "Segmentation/CoreExtraction.h"
 #include "Segmentation/EasyMeshCut.h"
 #include "Segmentation/EnsembleSegmentation.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
@@ -93,6 +94,20 @@ MethodOutput segmentWithWatershed(const BenchmarkCase& c, const std::vector<int>
   return { segmentByWatershed(FaceGraph(c.surface->mesh()), options).labels, 0 };
 }
 
+// Core extraction chooses its own number of segments: the model's k is not read.
+MethodOutput segmentWithCoreExtraction(
+  const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
+{
+  CoreExtractionOptions options;
+  options.coarseSize = parameters.wholeNumber("coarse", options.coarseSize);
+  options.featureRadius = parameters.positive("radius", options.featureRadius);
+  options.hullTolerance = parameters.number("tolerance", options.hullTolerance);
+  options.extensionFactor = parameters.positive("extension", options.extensionFactor);
+  options.minimumSegmentArea = parameters.number("minimum-area", options.minimumSegmentArea);
+  options.refinement.bandWidth = parameters.number("band", options.refinement.bandWidth);
+  return { segmentByCoreExtraction(FaceGraph(c.surface->mesh()), options).labels, 0 };
+}
+
 MethodOutput segmentByFaceClustering(
   const BenchmarkCase& c, const std::vector<int>*, const MethodParameters& parameters)
 {
@@ -150,6 +165,7 @@ MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*
   options.kMeansWeight = parameters.number("k-means", options.kMeansWeight);
   options.watershedWeight = parameters.number("watershed", options.watershedWeight);
   options.faceClusteringWeight = parameters.number("clustering", options.faceClusteringWeight);
+  options.coreExtractionWeight = parameters.number("core-extraction", options.coreExtractionWeight);
   options.areaWeighted = parameters.number("area-weighted", options.areaWeighted ? 1.0 : 0.0) != 0.0;
   options.refinement.bandWidth = parameters.number("band", options.refinement.bandWidth);
   options.refinement.convexWeight = parameters.number("convex-weight", options.refinement.convexWeight);
@@ -321,6 +337,10 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       { "epsilon", "q" }, SegmentationMethod::Protocol::Automatic, segmentByFlooding },
     { "watershed", "edge watershed of 1 - cos(dihedral angle), basins merged by depth down to k", { "depth" },
       SegmentationMethod::Protocol::Automatic, segmentWithWatershed },
+    { "core-extraction",
+      "Katz, Leifman and Tal 2005's feature points and core extraction (the number of segments is its own, k unread)",
+      { "coarse", "radius", "tolerance", "extension", "minimum-area", "band" }, SegmentationMethod::Protocol::Automatic,
+      segmentWithCoreExtraction },
     { "face-clustering", "Garland et al. 2001's hierarchical face clustering cut at k clusters",
       { "a1", "a2", "exact", "block" }, SegmentationMethod::Protocol::Automatic, segmentByFaceClustering },
     { "k-means", "Shlafman et al. 2002's k-means face clustering on the dual graph", { "delta" },
@@ -334,8 +354,8 @@ const std::vector<SegmentationMethod>& segmentationMethods()
     { "ensemble",
       "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on "
       "most (evidence accumulation, Fred and Jain 2005)",
-      { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "area-weighted", "band", "convex-weight",
-        "walk-depth", "points" },
+      { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "core-extraction", "area-weighted",
+        "band", "convex-weight", "walk-depth", "points" },
       SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then "

@@ -123,6 +123,7 @@ EnsembleSegmentationResult segmentConnected(const Surface& surface, int k, const
   });
   vote(options.faceClusteringWeight,
     [&] { return cutHierarchyAtCount(faceClusterHierarchy(surface, options.faceClustering), k); });
+  vote(options.coreExtractionWeight, [&] { return segmentByCoreExtraction(graph, options.coreExtraction).labels; });
   const PartitionConsensus consensus = combinePartitions(graph, partitions, k, options.areaWeighted);
   EnsembleSegmentationResult result;
   result.labels = refineSegmentBoundaries(graph, consensus.labels, options.refinement).labels;
@@ -360,7 +361,7 @@ EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, cons
   const TriangleMesh& mesh = surface.mesh();
   checkSegmentCount(k, mesh.faceCount());
   const double weights[] = { options.consensusCutsWeight, options.spectralWeight, options.convexFloodingWeight,
-    options.kMeansWeight, options.watershedWeight, options.faceClusteringWeight };
+    options.kMeansWeight, options.watershedWeight, options.faceClusteringWeight, options.coreExtractionWeight };
   double total = 0.0;
   for (double weight : weights)
   {

@@ -4,6 +4,7 @@
 #include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/ConvexFlooding.h"
+#include "Segmentation/CoreExtraction.h"
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
 #include "Segmentation/KMeansSegmentation.h"
@@ -58,6 +59,9 @@ struct EnsembleSegmentationOptions
   double kMeansWeight = 1.0;
   double watershedWeight = 1.0;
   double faceClusteringWeight = 0.0;
+  /// Core extraction votes with its own number of parts (not k). Default 0: see
+  /// AutomaticSegmentation.md for what it did to the ensemble on the Princeton benchmark.
+  double coreExtractionWeight = 0.0;
   /// Faces weigh by their area in the linkage instead of once each. Default false.
   bool areaWeighted = false;
   /// The consensus's boundaries re-cut within a band (refineSegmentBoundaries, its defaults);
@@ -70,6 +74,7 @@ struct EnsembleSegmentationOptions
   KMeansSegmentationOptions kMeans;
   WatershedOptions watershed;
   HierarchicalClusteringOptions faceClustering;
+  CoreExtractionOptions coreExtraction;
 };
 
 struct EnsembleSegmentationResult
