@@ -282,13 +282,15 @@ struct ComponentResult
   int extensions = 0;
 };
 
-ComponentResult extractCore(const CoarseGraph& coarse, double componentArea, const CoreExtractionOptions& options)
+// A planar component, one of fewer than ten samples or with a flat embedding is one segment.
+ComponentResult extractCore(
+  const CoarseGraph& coarse, double componentArea, bool planar, const CoreExtractionOptions& options)
 {
   const int m = static_cast<int>(coarse.samples.size());
   ComponentResult result;
   result.sampleLabel.assign(m, 0);
   result.sampleCore.assign(m, 1);
-  if (m < 10)
+  if (m < 10 || planar)
   {
     return result;
   }
@@ -479,10 +481,7 @@ CoreExtractionResult segmentByCoreExtraction(const FaceGraph& graph, const CoreE
     }
     const CoarseGraph coarse = coarsen(graph, faces, options.coarseSize, distance, nearest);
     // A planar patch has nothing that protrudes: one segment.
-    const ComponentResult component = isPlanar(graph, faces)
-      ? ComponentResult{ std::vector<int>(coarse.samples.size(), 0), std::vector<char>(coarse.samples.size(), 1), {},
-          0 }
-      : extractCore(coarse, area, options);
+    const ComponentResult component = extractCore(coarse, area, isPlanar(graph, faces), options);
     int largest = 0;
     for (int f : faces)
     {
