@@ -2,11 +2,10 @@
 #include "Geodesic/VectorDijkstra.h"
 
 #include "Error.h"
+#include "Mesh/ShortestPaths.h"
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
-#include <queue>
 #include <string>
 #include <utility>
 
@@ -51,8 +50,7 @@ VectorDijkstraResult shortTermVectorDijkstra(const TriangleMesh& mesh, const Ani
   std::vector<Vector3> origin(n, Vector3::Zero()); // where a chain that reaches the source ends
   std::vector<char> settled(n, 0);
 
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  DistanceQueue queue;
   auto seed = [&](int v, const Vector3& from, const Eigen::Matrix3d& tensor) {
     const Vector3 d = mesh.point(v) - from;
     const double length = metric.isotropic ? d.norm() : std::sqrt(std::max(d.dot(tensor * d), 0.0));
@@ -115,62 +113,60 @@ VectorDijkstraResult shortTermVectorDijkstra(const TriangleMesh& mesh, const Ani
   double stop = infinity;
   double farthestTarget = 0.0;
 
-  while (!queue.empty())
-  {
-    const auto [d, v] = queue.top();
-    queue.pop();
-    if (settled[v] || d > result.distance[v])
-    {
-      continue;
-    }
-    if (d > stop)
-    {
-      break;
-    }
-    settled[v] = 1;
-    if (isTarget[v])
-    {
-      farthestTarget = std::max(farthestTarget, d);
-      if (--targetsLeft == 0)
+  // A vertex is settled when it leaves the queue; the search stops at the first distance past
+  // `stop`. Arcs to settled vertices are not relaxed, so a chain never runs through a later vertex.
+  searchShortestPaths(
+    queue, [&](int v) -> double& { return result.distance[v]; },
+    [&](int v, double, const auto& lower) {
+      const Vector3& pv = mesh.point(v);
+      for (int w : mesh.vertexNeighbors(v))
       {
-        stop = (1.0 + options.targetMargin) * farthestTarget + 3.0 * meanEdge * stretch;
-      }
-    }
-    const Vector3& pv = mesh.point(v);
-    for (int w : mesh.vertexNeighbors(v))
-    {
-      if (settled[w])
-      {
-        continue;
-      }
-      const Vector3& pw = mesh.point(w);
-      Vector3 chord = pw - pv;
-      int u = v;
-      double best = infinity;
-      for (int j = 0; j < options.depth; ++j)
-      {
-        const double candidate = result.distance[u] + metric.length(chord, u, w);
-        best = std::min(best, candidate);
-        const int previous = result.predecessor[u];
-        if (previous < 0)
+        if (settled[w])
         {
-          // The chain reaches the source: end it at the source point.
-          const Vector3 fromOrigin = chord + (mesh.point(u) - origin[u]);
-          const double direct = metric.length(fromOrigin, u, w);
-          best = std::min(best, direct);
-          break;
+          continue;
         }
-        chord += mesh.point(u) - mesh.point(previous);
-        u = previous;
+        const Vector3& pw = mesh.point(w);
+        Vector3 chord = pw - pv;
+        int u = v;
+        double best = infinity;
+        for (int j = 0; j < options.depth; ++j)
+        {
+          const double candidate = result.distance[u] + metric.length(chord, u, w);
+          best = std::min(best, candidate);
+          const int previous = result.predecessor[u];
+          if (previous < 0)
+          {
+            // The chain reaches the source: end it at the source point.
+            const Vector3 fromOrigin = chord + (mesh.point(u) - origin[u]);
+            const double direct = metric.length(fromOrigin, u, w);
+            best = std::min(best, direct);
+            break;
+          }
+          chord += mesh.point(u) - mesh.point(previous);
+          u = previous;
+        }
+        if (lower(w, best))
+        {
+          result.predecessor[w] = v;
+        }
       }
-      if (best < result.distance[w])
+    },
+    [&](int v, double d) {
+      if (d > stop)
       {
-        result.distance[w] = best;
-        result.predecessor[w] = v;
-        queue.emplace(best, w);
+        return true;
       }
-    }
-  }
+      settled[v] = 1;
+      if (isTarget[v])
+      {
+        farthestTarget = std::max(farthestTarget, d);
+        if (--targetsLeft == 0)
+        {
+          stop = (1.0 + options.targetMargin) * farthestTarget + 3.0 * meanEdge * stretch;
+        }
+      }
+      return false;
+    });
   for (int v = 0; v < n; ++v)
   {
     if (!settled[v])

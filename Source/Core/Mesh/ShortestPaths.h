@@ -1,9 +1,8 @@
 // Dijkstra's loop, once for the graphs Kerf searches: mesh edges (edge-graph distances, region
-// growing, curve export), face graphs (segment spines), patch graphs (spectral segmentation) and
-// the cut graph of CutToDisk. Three searches keep loops of their own because their rule differs:
-// Short-Term Vector Dijkstra (Geodesic/VectorDijkstra: settles each vertex once and measures
-// chains of predecessors), the two nearest labels of region growing (two values per vertex) and
-// the dual Dijkstra of Segmentation/FaceGraph (equal distances go to the smaller source).
+// growing, curve export, Short-Term Vector Dijkstra's chains), face graphs (segment spines, the
+// dual Dijkstra of the segmentations, with its tie rule in the arcs), patch graphs (spectral
+// segmentation) and the cut graph of CutToDisk. Region growing's two nearest labels keep a loop of
+// their own: their nodes are (vertex, label) pairs holding two distances per vertex.
 #pragma once
 
 #include <functional>

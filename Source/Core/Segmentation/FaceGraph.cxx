@@ -2,6 +2,7 @@
 #include "Segmentation/FaceGraph.h"
 
 #include "Error.h"
+#include "Mesh/ShortestPaths.h"
 #include "Mesh/UnionFind.h"
 #include "Surface/Surface.h"
 
@@ -132,8 +133,7 @@ DualDistances dualDijkstra(
   DualDistances result;
   result.distance.assign(graph.faceCount(), std::numeric_limits<double>::infinity());
   result.nearest.assign(graph.faceCount(), -1);
-  using Entry = std::pair<double, int>;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> heap;
+  DistanceQueue heap;
   for (std::size_t s = 0; s < sources.size(); ++s)
   {
     const int f = sources[s];
@@ -144,38 +144,29 @@ DualDistances dualDijkstra(
       heap.emplace(0.0, f);
     }
   }
-  while (!heap.empty())
-  {
-    const auto [d, f] = heap.top();
-    heap.pop();
-    if (d > result.distance[f])
-    {
-      continue;
-    }
-    for (int e : graph.faceEdges(f))
-    {
-      if (e < 0)
+  // A face reached at an equal distance from two sources goes to the smaller source, without
+  // being queued again.
+  searchShortestPaths(
+    heap, [&](int f) -> double& { return result.distance[f]; },
+    [&](int f, double d, const auto& lower) {
+      for (int e : graph.faceEdges(f))
       {
-        continue;
-      }
-      const int g = graph.opposite(e, f);
-      const double candidate = d + edgeLengths[e];
-      if (candidate > limit)
-      {
-        continue;
-      }
-      if (candidate < result.distance[g] || (candidate == result.distance[g] && result.nearest[f] < result.nearest[g]))
-      {
-        const bool shorter = candidate < result.distance[g];
-        result.distance[g] = candidate;
-        result.nearest[g] = result.nearest[f];
-        if (shorter)
+        if (e < 0)
         {
-          heap.emplace(candidate, g);
+          continue;
+        }
+        const int g = graph.opposite(e, f);
+        const double candidate = d + edgeLengths[e];
+        if (candidate > limit)
+        {
+          continue;
+        }
+        if (lower(g, candidate) || (candidate == result.distance[g] && result.nearest[f] < result.nearest[g]))
+        {
+          result.nearest[g] = result.nearest[f];
         }
       }
-    }
-  }
+    });
   return result;
 }
 
