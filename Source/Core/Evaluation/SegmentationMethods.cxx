@@ -237,8 +237,10 @@ MethodOutput segmentWithRegionGrowing(
   }
   if (snakes)
   {
+    // The labels are the growing from these strokes, so the snakes start from them (as
+    // easyMeshCut with refine would, after growing the same regions again).
     options.refine = true;
-    output.labels = easyMeshCut(c.surface, strokes, options).faceLabels;
+    output.labels = refineBoundaries(c.surface, output.labels, options).faceLabels;
   }
   output.inputs = static_cast<int>(strokes.size());
   // Boundary editing (Ji et al. 2006, section 5.2): `overrides` rounds in which the user draws
