@@ -2,7 +2,9 @@
 # Sets up, builds, and runs the whole test suite under a virtual X display (the filter tests that do
 # not render also under valgrind); then builds the Core tests again with AddressSanitizer and
 # UndefinedBehaviorSanitizer in a second tree (build-sanitize, or $KERF_SANITIZE_BUILD_DIR) and runs
-# them there. KERF_SANITIZE=OFF skips the second stage. Arguments go to both ctest runs.
+# them there; then builds and runs the Core tests once more without CHOLMOD in a third tree
+# (build-without-cholmod). KERF_SANITIZE=OFF and KERF_WITHOUT_CHOLMOD=OFF skip the second and third
+# stages. Arguments go to every ctest run.
 set -euo pipefail
 source_dir=$(cd "$(dirname "$0")/.." && pwd)
 build_dir=${KERF_BUILD_DIR:-$source_dir/build}
@@ -24,30 +26,49 @@ if [ -f "$build_dir/Testing/Temporary/CTestCostData.txt" ]; then
   awk 'NF == 3 { printf "  %8.1f  %s\n", $3, $1 }' "$build_dir/Testing/Temporary/CTestCostData.txt" | sort -rn | head -8
 fi
 
-if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
-  sanitize_dir=${KERF_SANITIZE_BUILD_DIR:-$source_dir/build-sanitize}
-  start=$(date +%s)
+# Configures a second tree once (its flags as arguments), builds the Core tests there and runs them.
+core_tests_in() {
+  local tree=$1
+  shift
   source "$source_dir/Utilities/compiler-cache.sh" "$source_dir"
-  if [ ! -f "$sanitize_dir/build.ninja" ]; then
-    mkdir -p "$sanitize_dir"
-    # -O1 with line tables: half the compile time of -O2 -g, and stacks still name the lines.
-    cmake -S "$source_dir" -B "$sanitize_dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-      -DKERF_SANITIZE=ON -DKERF_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 "${compiler_cache[@]}" \
-      >"$sanitize_dir/configure.log" 2>&1 || {
-      cat "$sanitize_dir/configure.log"
-      exit 1
+  if [ ! -f "$tree/build.ninja" ]; then
+    mkdir -p "$tree"
+    cmake -S "$source_dir" -B "$tree" -G Ninja -DKERF_BUILD_BENCHMARKS=OFF -DPython3_EXECUTABLE=/usr/bin/python3 \
+      "$@" "${compiler_cache[@]}" >"$tree/configure.log" 2>&1 || {
+      cat "$tree/configure.log"
+      return 1
     }
   fi
+  cmake --build "$tree" --target KerfCoreTests -- -j"$(nproc)" || return 1
+  (cd "$tree" && ctest --output-on-failure -j"$(nproc)" -R '^Core\.' "${ctest_arguments[@]}")
+}
+ctest_arguments=("$@")
+
+if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
+  start=$(date +%s)
   # The Core tests only: compiling the filters and the program with the sanitizers too would double
   # the stage (Documentation/robustness.md, *Sanitizers*). The first stage ran the filter tests that
-  # do not render under valgrind and the readers' fuzzing in the ordinary build.
-  cmake --build "$sanitize_dir" --target KerfCoreTests -- -j"$(nproc)"
-  # Leaks are reported except those of the OpenGL driver, listed in the suppression file.
-  export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1"
-  export LSAN_OPTIONS="suppressions=$source_dir/Testing/Sanitizers/lsan-suppressions.txt:print_suppressions=0"
-  export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-  (cd "$sanitize_dir" && ctest --output-on-failure -j"$(nproc)" -R '^Core\.' "$@") || status=$?
+  # do not render under valgrind and the readers' fuzzing in the ordinary build. -O1 with line
+  # tables: half the compile time of -O2 -g, and stacks still name the lines. Leaks are reported
+  # except those of the OpenGL driver, listed in the suppression file.
+  (
+    export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1"
+    export LSAN_OPTIONS="suppressions=$source_dir/Testing/Sanitizers/lsan-suppressions.txt:print_suppressions=0"
+    export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+    core_tests_in "${KERF_SANITIZE_BUILD_DIR:-$source_dir/build-sanitize}" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+      -DKERF_SANITIZE=ON
+  ) || status=$?
   echo "kerf test: the sanitizer stage took $(($(date +%s) - start)) s"
+fi
+
+# The route without any GPL module (README, *Licence*): Core built without CHOLMOD factors with
+# Eigen's SimplicialLDLT, and its tests run there too, at -O1 as the sanitizer stage.
+if [ "${KERF_WITHOUT_CHOLMOD:-ON}" != OFF ]; then
+  start=$(date +%s)
+  core_tests_in "${KERF_WITHOUT_CHOLMOD_BUILD_DIR:-$source_dir/build-without-cholmod}" -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
+    -DCMAKE_DISABLE_FIND_PACKAGE_CHOLMOD=ON || status=$?
+  echo "kerf test: the stage without CHOLMOD took $(($(date +%s) - start)) s"
 fi
 exit "$status"
