@@ -63,11 +63,12 @@ if [ "${KERF_SANITIZE:-ON}" != OFF ]; then
 fi
 
 # The route without any GPL module (README, *Licence*): Core built without CHOLMOD factors with
-# Eigen's SimplicialLDLT, and its tests run there too, at -O1 as the sanitizer stage.
+# Eigen's SimplicialLDLT, and its tests run there too. With the first tree's flags: only the files
+# that test KERF_HAVE_CHOLMOD compile differently (Source/Core/CMakeLists.txt), and the compiler
+# cache hands over the others' objects.
 if [ "${KERF_WITHOUT_CHOLMOD:-ON}" != OFF ]; then
   start=$(date +%s)
   core_tests_in "${KERF_WITHOUT_CHOLMOD_BUILD_DIR:-$source_dir/build-without-cholmod}" -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_FLAGS_RELEASE="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O1 -DNDEBUG" \
     -DCMAKE_DISABLE_FIND_PACKAGE_CHOLMOD=ON || status=$?
   echo "kerf test: the stage without CHOLMOD took $(($(date +%s) - start)) s"
 fi
