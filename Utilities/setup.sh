@@ -21,8 +21,9 @@ packages=(
   libeigen3-dev libopenmesh-dev libsuitesparse-dev libopenblas-dev libspectra-dev
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev xvfb xauth valgrind
-  # the code's format, checked by the tests (Utilities.Formatting, .clang-format)
-  clang-format
+  # the code's format, checked by the tests (Utilities.Formatting, .clang-format); Clang and its
+  # sanitizer runtimes build the sanitized Core tests (Utilities/test.sh)
+  clang-format clang libclang-rt-14-dev
   # CGAL's heat method, benchmarked beside Kerf's (header-only)
   libcgal-dev
 )

@@ -20,8 +20,7 @@ class Contingency
 {
 public:
   Contingency(int rows, int columns)
-    : Rows(rows)
-    , Columns(columns)
+    : Columns(columns)
     , Dense(static_cast<long long>(rows) * columns <= (1 << 22))
   {
     if (this->Dense)
@@ -84,7 +83,6 @@ private:
     double area = 0.0;
     long long count = 0;
   };
-  int Rows;
   int Columns;
   bool Dense;
   std::vector<double> Area;

@@ -8,7 +8,9 @@
 
 // Boost 1.74's edge iterators trip GCC 12's -Wmaybe-uninitialized inside the max-flow code.
 #pragma GCC diagnostic push
+#if !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/boykov_kolmogorov_max_flow.hpp>
 

@@ -132,7 +132,11 @@ typedef long LaneIndex __attribute__((vector_size(8 * sizeof(long))));
 
 KERF_INLINE Lane swapPairs(const Lane& a)
 {
+#if defined(__clang__)
+  return __builtin_shufflevector(a, a, 1, 0, 3, 2, 5, 4, 7, 6);
+#else
   return __builtin_shuffle(a, LaneIndex{ 1, 0, 3, 2, 5, 4, 7, 6 });
+#endif
 }
 
 KERF_INLINE Lane realLanes(double wr)

@@ -166,12 +166,10 @@ Eigen::MatrixXd spectralAffinity(const FaceGraph& graph, const std::vector<int>&
   }
   // Liu and Zhang 2004, section 3: angular distance eta (1 - cos alpha), eta = 1 where concave.
   std::vector<double> angular(graph.edgeCount());
-  double meanAngular = 0.0;
   for (int e = 0; e < graph.edgeCount(); ++e)
   {
     const DualEdge& d = graph.edge(e);
     angular[e] = (d.bend < 0.0 ? 1.0 : options.convexAngleWeight) * (1.0 - d.normalCosine);
-    meanAngular += angular[e];
   }
   // Patch boundaries: length, length-weighted angular distance and midpoint.
   struct Boundary
