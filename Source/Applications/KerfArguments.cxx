@@ -10,7 +10,7 @@ namespace kerf
 namespace
 {
 // Options that take no value.
-const char* const Flags[] = { "help", "quiet", "timings", "no-pictures", "refuse-non-disks" };
+const char* const Flags[] = { "help", "quiet", "timings", "no-pictures", "refuse-non-disks", "auto" };
 
 std::string range(double minimum, double maximum)
 {

@@ -30,8 +30,8 @@ struct Arguments
   std::string single(const char* what) const;
 };
 
-/// Parses argv[first..argc); --name=value, --name value, the flags --help, --quiet and
-/// --no-pictures, -o FILE (--output) and -h (--help).
+/// Parses argv[first..argc); --name=value, --name value, the flags --help, --quiet, --timings,
+/// --no-pictures, --refuse-non-disks and --auto, -o FILE (--output) and -h (--help).
 Arguments parseArguments(int argc, char* argv[], int first);
 
 } // namespace kerf

@@ -7,6 +7,7 @@
 #include "KerfSurfaceInput.h"
 #include "Segmentation/EnsembleSegmentation.h"
 
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -50,9 +51,15 @@ int vtkEnsembleSegmentation::RequestData(
         options.areaWeighted = this->AreaWeighted;
         options.refinement.bandWidth = kerf::Finite(this->BoundaryBand, "BoundaryBand");
         options.refinement.convexWeight = kerf::Finite(this->ConvexWeight, "ConvexWeight");
-        const kerf::EnsembleSegmentationResult result = kerf::segmentByEnsemble(surface, this->SegmentCount, options);
+        const kerf::EnsembleSegmentationResult result = this->ChooseSegmentCount
+          ? kerf::segmentByEnsembleChoosingCount(surface, this->MinimumSegmentCount, this->MaximumSegmentCount, options)
+          : kerf::segmentByEnsemble(surface, this->SegmentCount, options);
         fieldData->AddArray(kerf::MakeFieldValue("Members", result.members));
         fieldData->AddArray(kerf::MakeFieldValue("Atoms", result.atoms));
+        if (this->ChooseSegmentCount)
+        {
+          fieldData->AddArray(kerf::MakeArray("CountScores", result.countScores));
+        }
         return result.labels;
       });
   });
@@ -62,6 +69,9 @@ void vtkEnsembleSegmentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SegmentCount: " << this->SegmentCount << "\n";
+  os << indent << "ChooseSegmentCount: " << this->ChooseSegmentCount << "\n";
+  os << indent << "MinimumSegmentCount: " << this->MinimumSegmentCount << "\n";
+  os << indent << "MaximumSegmentCount: " << this->MaximumSegmentCount << "\n";
   os << indent << "ConsensusCutsWeight: " << this->ConsensusCutsWeight << "\n";
   os << indent << "SpectralWeight: " << this->SpectralWeight << "\n";
   os << indent << "ConvexFloodingWeight: " << this->ConvexFloodingWeight << "\n";

@@ -16,11 +16,14 @@
  * Output: the surface with the cell array "Segment" (name is a parameter), one label per
  * triangle numbered 0.. by first face, every segment one connected set of faces; field data
  * "SegmentCount" and the method's own figures ("Members": the segmentations that voted,
- * "Atoms": the groups of faces they all keep together).
+ * "Atoms": the groups of faces they all keep together); with ChooseSegmentCount also "CountScores",
+ * per count from MinimumSegmentCount up, the mean 1 - Rand index of the ensemble at that count
+ * against all the members (on a surface of one component; the smallest was chosen).
  *
  * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
  * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
- * orientation), a segment count below 1 or above the number of triangles, a negative or
+ * orientation), a segment count below 1 or above the number of triangles, with
+ * ChooseSegmentCount a minimum below 2 or a maximum below the minimum, a negative or
  * non-finite weight, all weights 0, a negative or non-finite BoundaryBand or ConvexWeight.
  * Documentation/filters/AutomaticSegmentation.md has the details.
  */
@@ -43,6 +46,24 @@ public:
   /// Number of segments k (at least 1, at most the number of faces). Default 6.
   vtkSetMacro(SegmentCount, int);
   vtkGetMacro(SegmentCount, int);
+  ///@}
+
+  ///@{
+  /// Choose the number of segments from the surface instead of SegmentCount: the ensemble runs at
+  /// every count from MinimumSegmentCount to MaximumSegmentCount and keeps the one nearest, in
+  /// mean 1 - Rand index, to all its members' segmentations at all those counts. Costs the
+  /// ensemble's time once per count. Default off.
+  vtkSetMacro(ChooseSegmentCount, bool);
+  vtkGetMacro(ChooseSegmentCount, bool);
+  vtkBooleanMacro(ChooseSegmentCount, bool);
+  ///@}
+
+  ///@{
+  /// The counts ChooseSegmentCount chooses among (2 <= minimum <= maximum). Defaults 5 and 11.
+  vtkSetMacro(MinimumSegmentCount, int);
+  vtkGetMacro(MinimumSegmentCount, int);
+  vtkSetMacro(MaximumSegmentCount, int);
+  vtkGetMacro(MaximumSegmentCount, int);
   ///@}
 
   ///@{
@@ -125,6 +146,9 @@ protected:
     vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) override;
 
   int SegmentCount = 6;
+  bool ChooseSegmentCount = false;
+  int MinimumSegmentCount = 5;
+  int MaximumSegmentCount = 11;
   double ConsensusCutsWeight = 1.0;
   double SpectralWeight = 1.0;
   double ConvexFloodingWeight = 1.0;

@@ -288,6 +288,26 @@ class CommandLine(unittest.TestCase):
         result = run("segment", camel, "--method", "core-extraction", "-k", "4")
         self.assertEqual(result.returncode, 1)
         self.assertIn("core-extraction chooses the number of segments itself", result.stderr)
+        # --auto: the ensemble chooses the count among 5 to 11 (the camel: 9, measured), and its labels are
+        # the ensemble's at that count; with -k or another method it is refused.
+        chosen = os.path.join(self.folder, "auto.seg")
+        result = run("segment", camel, "--auto", "--seg", chosen, "--quiet")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(chosen) as f:
+            labels = [int(line) for line in f]
+        count = len(set(labels))
+        self.assertEqual(sorted(set(labels)), list(range(count)))
+        self.assertTrue(5 <= count <= 11, count)
+        fixed = os.path.join(self.folder, "fixed.seg")
+        self.assertEqual(run("segment", camel, "-k", str(count), "--seg", fixed, "--quiet").returncode, 0)
+        with open(fixed) as f:
+            self.assertEqual([int(line) for line in f], labels)
+        result = run("segment", camel, "--auto", "-k", "4")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("one of them", result.stderr)
+        result = run("segment", camel, "--auto", "--method", "spectral")
+        self.assertEqual(result.returncode, 1)
+        self.assertIn("--auto is for the methods that can choose the number of segments: ensemble", result.stderr)
         self.assertIn("  ensemble, consensus-cuts, spectral, k-means", run("segment", "--help").stdout)
         result = run("segment", camel, "--method", "nope")
         self.assertEqual(result.returncode, 1)

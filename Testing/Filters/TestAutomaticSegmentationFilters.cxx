@@ -532,5 +532,29 @@ int TestAutomaticSegmentationFilters(int, char*[])
   ok &= KERF_CHECK(FieldValue(figures->GetOutput(), "Members") == 5.0);
   ok &= KERF_CHECK(FieldValue(figures->GetOutput(), "Atoms") == 50.0); // measured
   std::cout << "Ensemble on the dumbbell: " << FieldValue(figures->GetOutput(), "Atoms") << " atoms" << std::endl;
+  // Choosing the count among 2 and 3: the output is the ensemble at the chosen count, which has the
+  // smaller of the two CountScores, and SegmentCount says it; a minimum below 2 is refused.
+  vtkNew<vtkEnsembleSegmentation> choosing;
+  choosing->SetInputData(dumbbell.surface);
+  choosing->ChooseSegmentCountOn();
+  choosing->SetMinimumSegmentCount(2);
+  choosing->SetMaximumSegmentCount(3);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(choosing).empty());
+  vtkDataArray* scores = choosing->GetOutput()->GetFieldData()->GetArray("CountScores");
+  ok &= KERF_CHECK(scores != nullptr && scores->GetNumberOfTuples() == 2);
+  if (scores != nullptr && scores->GetNumberOfTuples() == 2)
+  {
+    const int chosen = FieldValue(choosing->GetOutput(), "SegmentCount") == 2.0 ? 2 : 3;
+    std::cout << "Ensemble choosing its count on the dumbbell: scores " << scores->GetTuple1(0) << ", "
+              << scores->GetTuple1(1) << "; chose " << chosen << std::endl;
+    ok &= KERF_CHECK(
+      chosen == 2 ? scores->GetTuple1(0) <= scores->GetTuple1(1) : scores->GetTuple1(1) < scores->GetTuple1(0));
+    ok &= KERF_CHECK(FieldValue(choosing->GetOutput(), "SegmentCount") == chosen);
+    figures->SetSegmentCount(chosen);
+    figures->Update();
+    ok &= KERF_CHECK(ReadLabels(choosing->GetOutput(), "Segment") == ReadLabels(figures->GetOutput(), "Segment"));
+  }
+  choosing->SetMinimumSegmentCount(1);
+  ok &= CheckRefused(choosing, dumbbell.surface, "minimum");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -305,7 +305,19 @@ class KerfPluginTest(unittest.TestCase):
         recut = simple.BoundaryBandCut(Input=unbanded)
         self.assertEqual(int((labels(recut) != segments).sum()), 0)
         self.assertGreater(servermanager.Fetch(recut).GetFieldData().GetArray("MovedFaces").GetValue(0), 0)
-        for proxy in (recut, unbanded, alone, refined, cuts, ensemble):
+        # Choose Segment Count, between 8 and 9: the count with the smaller of the two CountScores,
+        # and at 8 the labels asked for above.
+        chosen = simple.EnsembleSegmentation(Input=camel, ChooseSegmentCount=1, MinimumSegmentCount=8,
+                                             MaximumSegmentCount=9)
+        chosen.UpdatePipeline()
+        chosenOutput = servermanager.Fetch(chosen)
+        scores = vtk_to_numpy(chosenOutput.GetFieldData().GetArray("CountScores")).tolist()
+        self.assertEqual(len(scores), 2)
+        count = int(chosenOutput.GetFieldData().GetArray("SegmentCount").GetValue(0))
+        self.assertEqual(count, 8 if scores[0] <= scores[1] else 9)
+        if count == 8:
+            self.assertEqual(int((labels(chosen) != segments).sum()), 0)
+        for proxy in (chosen, recut, unbanded, alone, refined, cuts, ensemble):
             simple.Delete(proxy)
 
     def test_geodesic_distance_on_a_sphere(self):

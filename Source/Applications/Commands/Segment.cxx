@@ -35,10 +35,17 @@ namespace kerf
 namespace
 {
 
+// k of --auto: the method chooses the number of segments.
+constexpr int ChosenCount = -1;
+
 // The filter of a method (the benchmark runner's names) with k segments (0: the filter's default).
 template <typename Filter>
 vtkSmartPointer<vtkPolyDataAlgorithm> withCount(int k)
 {
+  if (k == ChosenCount)
+  {
+    throw CommandError{ "--auto is for the methods that can choose the number of segments: ensemble" };
+  }
   vtkSmartPointer<Filter> filter = vtkSmartPointer<Filter>::New();
   if (k > 0)
   {
@@ -47,7 +54,22 @@ vtkSmartPointer<vtkPolyDataAlgorithm> withCount(int k)
   return filter;
 }
 
-// A method that chooses its number of segments itself: -k is refused.
+// The ensemble with k segments, or choosing them (--auto: vtkEnsembleSegmentation's ChooseSegmentCount).
+vtkSmartPointer<vtkPolyDataAlgorithm> ensemble(int k)
+{
+  vtkSmartPointer<vtkEnsembleSegmentation> filter = vtkSmartPointer<vtkEnsembleSegmentation>::New();
+  if (k == ChosenCount)
+  {
+    filter->ChooseSegmentCountOn();
+  }
+  else if (k > 0)
+  {
+    filter->SetSegmentCount(k);
+  }
+  return filter;
+}
+
+// A method that chooses its number of segments itself: -k is refused (--auto is what it does).
 template <typename Filter>
 vtkSmartPointer<vtkPolyDataAlgorithm> ownCount(int k)
 {
@@ -66,7 +88,7 @@ struct SegmentMethod
 
 // The benchmark runner's names, the default first.
 const SegmentMethod Methods[] = {
-  { "ensemble", withCount<vtkEnsembleSegmentation> },
+  { "ensemble", ensemble },
   { "consensus-cuts", withCount<vtkConsensusCutSegmentation> },
   { "spectral", withCount<vtkSpectralSegmentation> },
   { "k-means", withCount<vtkKMeansSegmentation> },
@@ -229,7 +251,11 @@ int RunSegment(const Arguments& args)
 {
   const std::string input = args.single("mesh file or folder");
   const std::string method = args.get("method", "ensemble");
-  const int k = args.has("k") ? args.integer("k", 6, 1, 1000000) : 0;
+  if (args.has("k") && args.has("auto"))
+  {
+    throw CommandError{ "-k gives the number of segments and --auto lets the method choose it: one of them" };
+  }
+  const int k = args.has("auto") ? ChosenCount : args.has("k") ? args.integer("k", 6, 1, 1000000) : 0;
   segmentationFilter(method, k); // an unknown method before any reading
   if (vtksys::SystemTools::FileIsDirectory(input))
   {

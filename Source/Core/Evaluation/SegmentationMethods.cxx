@@ -172,6 +172,14 @@ MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*
   options.consensusCuts.walkDepth = parameters.number("walk-depth", options.consensusCuts.walkDepth);
   options.consensusCuts.maximumFeaturePoints =
     static_cast<int>(parameters.positive("points", options.consensusCuts.maximumFeaturePoints));
+  // choose-count=1: the method chooses k itself (nSeg-ByModel.txt is not read).
+  if (parameters.number("choose-count", 0.0) != 0.0)
+  {
+    return { segmentByEnsembleChoosingCount(*c.surface, parameters.wholeNumber("minimum-count", 5),
+               parameters.wholeNumber("maximum-count", 11), options)
+               .labels,
+      0 };
+  }
   return { segmentByEnsemble(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
@@ -357,7 +365,7 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on "
       "most (evidence accumulation, Fred and Jain 2005)",
       { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "core-extraction", "area-weighted",
-        "band", "convex-weight", "walk-depth", "points" },
+        "band", "convex-weight", "walk-depth", "points", "choose-count", "minimum-count", "maximum-count" },
       SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then "

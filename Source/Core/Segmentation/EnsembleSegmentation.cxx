@@ -3,10 +3,12 @@
 
 #include "Error.h"
 #include "Mesh/MeshValidation.h"
+#include "Segmentation/PartitionDistance.h"
 #include "Surface/Surface.h"
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <map>
 #include <queue>
 #include <tuple>
@@ -98,7 +100,9 @@ void eraseSorted(std::vector<int>& list, int value)
   }
 }
 
-EnsembleSegmentationResult segmentConnected(const Surface& surface, int k, const EnsembleSegmentationOptions& options)
+// The members' segmentations of a connected surface into k parts, those with a positive weight.
+std::vector<WeightedPartition> memberPartitions(
+  const Surface& surface, int k, const EnsembleSegmentationOptions& options)
 {
   const FaceGraph& graph = faceGraph(surface);
   std::vector<WeightedPartition> partitions;
@@ -124,12 +128,84 @@ EnsembleSegmentationResult segmentConnected(const Surface& surface, int k, const
   vote(options.faceClusteringWeight,
     [&] { return cutHierarchyAtCount(faceClusterHierarchy(surface, options.faceClustering), k); });
   vote(options.coreExtractionWeight, [&] { return segmentByCoreExtraction(graph, options.coreExtraction).labels; });
+  return partitions;
+}
+
+// The members' votes joined into k parts and the boundaries refined.
+EnsembleSegmentationResult joinMembers(const Surface& surface, int k, const std::vector<WeightedPartition>& partitions,
+  const EnsembleSegmentationOptions& options)
+{
+  const FaceGraph& graph = faceGraph(surface);
   const PartitionConsensus consensus = combinePartitions(graph, partitions, k, options.areaWeighted);
   EnsembleSegmentationResult result;
   result.labels = refineSegmentBoundaries(graph, consensus.labels, options.refinement).labels;
   result.members = static_cast<int>(partitions.size());
   result.atoms = consensus.atoms;
+  result.segmentCount = k;
   return result;
+}
+
+// The count of a connected surface chosen among [lowest, highest]: the ensemble at each count, and
+// the one whose partition is nearest, in mean 1 - Rand index, to every member's partition at every
+// count (a median partition of the members across counts; Fred and Jain 2005 pool partitions of
+// several counts in the same way). The smaller count wins a tie.
+EnsembleSegmentationResult segmentConnectedChoosingCount(
+  const Surface& surface, int lowest, int highest, const EnsembleSegmentationOptions& options)
+{
+  std::vector<WeightedPartition> pool;
+  std::vector<EnsembleSegmentationResult> candidates;
+  for (int k = lowest; k <= highest; ++k)
+  {
+    std::vector<WeightedPartition> partitions = memberPartitions(surface, k, options);
+    candidates.push_back(joinMembers(surface, k, partitions, options));
+    pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
+  }
+  double poolWeight = 0.0;
+  for (const WeightedPartition& partition : pool)
+  {
+    poolWeight += partition.weight;
+  }
+  std::size_t best = 0;
+  for (std::size_t c = 0; c < candidates.size(); ++c)
+  {
+    double score = 0.0;
+    for (const WeightedPartition& partition : pool)
+    {
+      score += partition.weight * randIndexError(candidates[c].labels, partition.labels);
+    }
+    candidates[c].countScore = score / poolWeight;
+    if (candidates[c].countScore < candidates[best].countScore)
+    {
+      best = c;
+    }
+  }
+  EnsembleSegmentationResult result = std::move(candidates[best]);
+  for (const EnsembleSegmentationResult& candidate : candidates)
+  {
+    result.countScores.push_back(candidate.countScore);
+  }
+  return result;
+}
+
+void checkEnsembleOptions(const TriangleMesh& mesh, const EnsembleSegmentationOptions& options)
+{
+  const double weights[] = { options.consensusCutsWeight, options.spectralWeight, options.convexFloodingWeight,
+    options.kMeansWeight, options.watershedWeight, options.faceClusteringWeight, options.coreExtractionWeight };
+  double total = 0.0;
+  for (double weight : weights)
+  {
+    if (!(weight >= 0.0) || !std::isfinite(weight))
+    {
+      throw Error("an ensemble member's weight is negative or not finite");
+    }
+    total += weight;
+  }
+  if (!(total > 0.0))
+  {
+    throw Error("an ensemble needs a member with a positive weight");
+  }
+  checkBoundaryRefinementOptions(options.refinement);
+  requireOrientedManifold(mesh, "ensemble segmentation");
 }
 
 } // namespace
@@ -360,30 +436,48 @@ EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, cons
 {
   const TriangleMesh& mesh = surface.mesh();
   checkSegmentCount(k, mesh.faceCount());
-  const double weights[] = { options.consensusCutsWeight, options.spectralWeight, options.convexFloodingWeight,
-    options.kMeansWeight, options.watershedWeight, options.faceClusteringWeight, options.coreExtractionWeight };
-  double total = 0.0;
-  for (double weight : weights)
-  {
-    if (!(weight >= 0.0) || !std::isfinite(weight))
-    {
-      throw Error("an ensemble member's weight is negative or not finite");
-    }
-    total += weight;
-  }
-  if (!(total > 0.0))
-  {
-    throw Error("an ensemble needs a member with a positive weight");
-  }
-  checkBoundaryRefinementOptions(options.refinement);
-  requireOrientedManifold(mesh, "ensemble segmentation");
+  checkEnsembleOptions(mesh, options);
   EnsembleSegmentationResult result;
   result.labels = segmentSurfaceComponents(surface, k, [&](const Surface& part, int partK) {
-    const EnsembleSegmentationResult partResult = segmentConnected(part, partK, options);
+    const EnsembleSegmentationResult partResult =
+      joinMembers(part, partK, memberPartitions(part, partK, options), options);
     result.members = partResult.members;
     result.atoms += partResult.atoms;
     return partResult.labels;
   });
+  result.segmentCount = 1 + *std::max_element(result.labels.begin(), result.labels.end());
+  return result;
+}
+
+EnsembleSegmentationResult segmentByEnsembleChoosingCount(
+  const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  if (minimumCount < 2 || maximumCount < minimumCount)
+  {
+    throw Error("choosing the segment count needs 2 <= minimum <= maximum, got " + std::to_string(minimumCount) +
+      " and " + std::to_string(maximumCount));
+  }
+  checkEnsembleOptions(mesh, options);
+  const int faces = mesh.faceCount();
+  const int components = faceGraph(surface).componentCount();
+  // The maximum is shared among components by area, as segmentByEnsemble shares k.
+  const int shared = std::min(std::max(maximumCount, components), faces);
+  EnsembleSegmentationResult result;
+  result.labels = segmentSurfaceComponents(surface, shared, [&](const Surface& part, int partK) {
+    const int highest = std::min(partK, part.mesh().faceCount());
+    const EnsembleSegmentationResult partResult =
+      segmentConnectedChoosingCount(part, std::min(minimumCount, highest), highest, options);
+    result.members = partResult.members;
+    result.atoms += partResult.atoms;
+    if (components == 1)
+    {
+      result.countScores = partResult.countScores;
+      result.countScore = partResult.countScore;
+    }
+    return partResult.labels;
+  });
+  result.segmentCount = 1 + *std::max_element(result.labels.begin(), result.labels.end());
   return result;
 }
 

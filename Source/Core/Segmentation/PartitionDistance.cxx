@@ -1,0 +1,79 @@
+// 1 - Rand index between two partitions from their contingency table.
+#include "Segmentation/PartitionDistance.h"
+
+#include "Error.h"
+
+#include <algorithm>
+#include <string>
+#include <unordered_map>
+
+namespace kerf
+{
+
+namespace
+{
+
+// Labels renumbered 0..m-1 in order of first appearance.
+std::vector<int> compact(const std::vector<int>& labels, int& count)
+{
+  std::unordered_map<int, int> dense;
+  std::vector<int> result(labels.size());
+  for (std::size_t f = 0; f < labels.size(); ++f)
+  {
+    if (labels[f] < 0)
+    {
+      throw Error("a partition has the negative label " + std::to_string(labels[f]) + " at face " + std::to_string(f));
+    }
+    result[f] = dense.emplace(labels[f], static_cast<int>(dense.size())).first->second;
+  }
+  count = static_cast<int>(dense.size());
+  return result;
+}
+
+double pairs(double n)
+{
+  return n * (n - 1.0) / 2.0;
+}
+
+} // namespace
+
+double randIndexError(const std::vector<int>& a, const std::vector<int>& b)
+{
+  if (a.size() != b.size())
+  {
+    throw Error("comparing partitions of " + std::to_string(a.size()) + " and " + std::to_string(b.size()) + " faces");
+  }
+  int rows = 0, columns = 0;
+  const std::vector<int> row = compact(a, rows);
+  const std::vector<int> column = compact(b, columns);
+  if (a.size() < 2)
+  {
+    return 0.0;
+  }
+  std::vector<double> rowSizes(rows, 0.0), columnSizes(columns, 0.0);
+  std::unordered_map<long long, double> cells;
+  for (std::size_t f = 0; f < a.size(); ++f)
+  {
+    rowSizes[row[f]] += 1.0;
+    columnSizes[column[f]] += 1.0;
+    cells[static_cast<long long>(row[f]) * columns + column[f]] += 1.0;
+  }
+  // Pairs together in a plus pairs together in b minus twice the pairs together in both: the pairs
+  // on which they disagree. Sums of whole numbers below 2^53: exact, whatever the order.
+  double disagreeing = 0.0;
+  for (double size : rowSizes)
+  {
+    disagreeing += pairs(size);
+  }
+  for (double size : columnSizes)
+  {
+    disagreeing += pairs(size);
+  }
+  for (const auto& cell : cells)
+  {
+    disagreeing -= 2.0 * pairs(cell.second);
+  }
+  return disagreeing / pairs(static_cast<double>(a.size()));
+}
+
+} // namespace kerf
