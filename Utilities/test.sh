@@ -45,7 +45,7 @@ if [ "${KERF_WITHOUT_CHOLMOD:-ON}" != OFF ]; then second_trees+=(without_cholmod
 
 # Configures a second tree (its flags as arguments; again from scratch when they changed, since
 # CMake keeps a tree's first compiler) and builds the Core tests there; the file kerf-built says it
-# succeeded.
+# succeeded. Its output goes to the log kerf-second-tree-NAME.log in the first tree.
 build_core_tests_in() {
   local tree=$1
   shift
@@ -65,19 +65,26 @@ build_core_tests_in() {
   fi
   cmake --build "$tree" --target KerfCoreTests -- -j"$(nproc)" && touch "$tree/kerf-built"
 }
-second_log=$build_dir/kerf-second-trees.log
+second_log() { echo "$build_dir/kerf-second-tree-$1.log"; }
 second_builds=
 if [ ${#second_trees[@]} -gt 0 ]; then
+  for name in "${second_trees[@]}"; do
+    tree_name="${name}_tree"
+    rm -f "${!tree_name}/kerf-built" "$(second_log "$name")"
+  done
+  # In a process group of its own (set -m), so that stopping this script stops the compilers too.
+  set -m
   (
     renice -n 19 -p "$BASHPID" >/dev/null
     source "$source_dir/Utilities/compiler-cache.sh" "$source_dir"
     for name in "${second_trees[@]}"; do
       tree_name="${name}_tree" arguments_name="${name}_arguments[@]"
-      build_core_tests_in "${!tree_name}" "${!arguments_name}" || true
+      build_core_tests_in "${!tree_name}" "${!arguments_name}" >"$(second_log "$name")" 2>&1 || true
     done
-  ) >"$second_log" 2>&1 &
+  ) </dev/null &
   second_builds=$!
-  trap '[ -n "$second_builds" ] && kill "$second_builds" 2>/dev/null || true' EXIT
+  set +m
+  trap '[ -n "$second_builds" ] && kill -- -"$second_builds" 2>/dev/null || true' EXIT
 fi
 
 # A 24-bit screen: on xvfb-run's default 8-bit one ParaView's render windows fail to open
@@ -98,10 +105,11 @@ fi
 
 # Runs a second tree's Core tests, or prints its build's log when the build failed.
 core_tests_in() {
-  local tree=$1
+  local name=$1 tree=$2
+  shift 2
   if [ ! -f "$tree/kerf-built" ]; then
     echo "kerf test: the Core tests in $tree did not build:"
-    cat "$second_log"
+    cat "$(second_log "$name")" 2>/dev/null || true
     return 1
   fi
   (cd "$tree" && ctest --output-on-failure -j"$(nproc)" -R '^Core\.' "$@")
@@ -113,12 +121,12 @@ for name in "${second_trees[@]}"; do
       export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:strict_init_order=1:detect_stack_use_after_return=1"
       export LSAN_OPTIONS="suppressions=$source_dir/Testing/Sanitizers/lsan-suppressions.txt:print_suppressions=0"
       export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
-      core_tests_in "$sanitize_tree" "$@"
+      core_tests_in sanitize "$sanitize_tree" "$@"
     ) || status=$?
     stage "the sanitizer stage's tests"
     ;;
   without_cholmod)
-    core_tests_in "$without_cholmod_tree" "$@" || status=$?
+    core_tests_in without_cholmod "$without_cholmod_tree" "$@" || status=$?
     stage "the tests without CHOLMOD"
     ;;
   esac

@@ -60,8 +60,8 @@ const Command Commands[] = {
     "kerf segment MESH [--method NAME] [-k N | --auto] [-o OUT.vtp] [--seg OUT.seg] [--png OUT.png] [render options]\n"
     "       kerf segment FOLDER [--method NAME] [-k N | --auto] [-o OUT_FOLDER]",
     "Segments a mesh automatically into k parts (-k, default the filter's: 6 for the ensemble; with\n"
-    "--auto the ensemble chooses k among 5 to 11, at about seven times the time) and writes the mesh with its Segment "
-    "cell array (-o, any format convert writes), the labels as a\n"
+    "--auto the ensemble chooses k among 5 to 11, at about seven times the time) and writes the\n"
+    "mesh with its Segment cell array (-o, any format convert writes), the labels as a\n"
     ".seg file (one per triangle, the Princeton benchmark's format) and/or a picture. Given a\n"
     "folder, segments each mesh file in it (by name) into OUT_FOLDER/NAME.vtp and NAME.seg\n"
     "(default folder kerf-segment), a progress line each; a mesh that fails is reported, the\n"

@@ -23,7 +23,8 @@
  * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
  * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
  * orientation), a segment count below 1 or above the number of triangles, with
- * ChooseSegmentCount a minimum below 2 or a maximum below the minimum, a negative or
+ * ChooseSegmentCount a minimum below 2, a maximum below the minimum or more than 40 counts (a
+ * range above the number of triangles is clipped to it), a negative or
  * non-finite weight, all weights 0, a negative or non-finite BoundaryBand or ConvexWeight.
  * Documentation/filters/AutomaticSegmentation.md has the details.
  */
@@ -59,7 +60,8 @@ public:
   ///@}
 
   ///@{
-  /// The counts ChooseSegmentCount chooses among (2 <= minimum <= maximum). Defaults 5 and 11.
+  /// The counts ChooseSegmentCount chooses among (2 <= minimum <= maximum, at most 40 counts;
+  /// each component of a surface with several chooses its own). Defaults 5 and 11.
   vtkSetMacro(MinimumSegmentCount, int);
   vtkGetMacro(MinimumSegmentCount, int);
   vtkSetMacro(MaximumSegmentCount, int);

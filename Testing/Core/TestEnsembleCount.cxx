@@ -83,10 +83,36 @@ TEST(EnsembleCount, ChoosesTheCountNearestToAllTheMembers)
   ASSERT_EQ(only.countScores.size(), 1u);
 }
 
-TEST(EnsembleCount, TwoComponentsShareTheMaximum)
+// A copy of a mesh's triangles from..to, its points numbered by first use (as segmentComponents
+// numbers a component's), moved along x.
+TriangleMesh copyOfFaces(const TriangleMesh& mesh, int from, int to, double shift)
 {
-  // Two copies of the fingers side by side: each component chooses within its share of the maximum.
+  std::vector<int> number(mesh.vertexCount(), -1);
+  std::vector<Vector3> points;
+  std::vector<Triangle> triangles;
+  for (int f = from; f < to; ++f)
+  {
+    Triangle t = mesh.triangle(f);
+    for (int& v : t)
+    {
+      if (number[v] < 0)
+      {
+        number[v] = static_cast<int>(points.size());
+        points.push_back(mesh.point(v) + Vector3(shift, 0.0, 0.0));
+      }
+      v = number[v];
+    }
+    triangles.push_back(t);
+  }
+  return TriangleMesh(std::move(points), std::move(triangles));
+}
+
+TEST(EnsembleCount, EachComponentChoosesItsOwnCount)
+{
+  // Two copies of the fingers side by side, the default range 5 to 11: each copy is segmented as
+  // it is alone (the count within the range for each), the labels numbered across both.
   const TriangleMesh& one = fingers().surface->mesh();
+  const int n = one.faceCount();
   std::vector<Vector3> points;
   std::vector<Triangle> triangles;
   for (int copy = 0; copy < 2; ++copy)
@@ -96,7 +122,7 @@ TEST(EnsembleCount, TwoComponentsShareTheMaximum)
     {
       points.push_back(one.point(v) + Vector3(5.0 * copy, 0.0, 0.0));
     }
-    for (int f = 0; f < one.faceCount(); ++f)
+    for (int f = 0; f < n; ++f)
     {
       Triangle t = one.triangle(f);
       for (int& v : t)
@@ -106,28 +132,24 @@ TEST(EnsembleCount, TwoComponentsShareTheMaximum)
       triangles.push_back(t);
     }
   }
-  const int half = static_cast<int>(triangles.size()) / 2;
-  const Surface second{ TriangleMesh(points, std::vector<Triangle>(triangles.begin() + half, triangles.end())) };
-  const Surface both{ TriangleMesh(std::move(points), std::move(triangles)) };
+  const TriangleMesh bothMesh(std::move(points), std::move(triangles));
+  const Surface both{ bothMesh };
   const EnsembleSegmentationOptions options;
-  const EnsembleSegmentationResult result = segmentByEnsembleChoosingCount(both, 2, 14, options);
+  const EnsembleSegmentationResult result = segmentByEnsembleChoosingCount(both, 5, 11, options);
   EXPECT_TRUE(result.countScores.empty());
-  // Each copy alone, its maximum 7 (its share of 14): the same count, moved or not.
-  const EnsembleSegmentationResult firstAlone = segmentByEnsembleChoosingCount(*fingers().surface, 2, 7, options);
-  const EnsembleSegmentationResult secondAlone = segmentByEnsembleChoosingCount(second, 2, 7, options);
-  // Each copy is segmented apart with a count of its own within its share, and the labels are
-  // numbered across both.
-  const std::vector<int> first(result.labels.begin(), result.labels.begin() + half);
-  const std::vector<int> rest(result.labels.begin() + half, result.labels.end());
-  const int firstCount = 1 + *std::max_element(first.begin(), first.end());
-  EXPECT_EQ(*std::min_element(rest.begin(), rest.end()), firstCount);
-  const int restCount = result.segmentCount - firstCount;
-  for (int count : { firstCount, restCount })
+  EXPECT_EQ(result.countScore, 0.0);
+  const Surface firstPart{ copyOfFaces(bothMesh, 0, n, 0.0) };
+  const Surface secondPart{ copyOfFaces(bothMesh, n, 2 * n, 0.0) };
+  const EnsembleSegmentationResult firstAlone = segmentByEnsembleChoosingCount(firstPart, 5, 11, options);
+  const EnsembleSegmentationResult secondAlone = segmentByEnsembleChoosingCount(secondPart, 5, 11, options);
+  EXPECT_EQ(result.segmentCount, firstAlone.segmentCount + secondAlone.segmentCount);
+  EXPECT_GE(firstAlone.segmentCount, 5);
+  EXPECT_LE(firstAlone.segmentCount, 11);
+  for (int f = 0; f < n; ++f)
   {
-    EXPECT_GE(count, FingerCount + 1);
-    EXPECT_LE(count, FingerCount + 2);
+    ASSERT_EQ(result.labels[f], firstAlone.labels[f]);
+    ASSERT_EQ(result.labels[n + f], firstAlone.segmentCount + secondAlone.labels[f]);
   }
-  EXPECT_EQ(secondAlone.segmentCount, firstAlone.segmentCount);
 }
 
 TEST(EnsembleCount, RefusesBadRanges)
@@ -135,6 +157,13 @@ TEST(EnsembleCount, RefusesBadRanges)
   const Surface& surface = *fingers().surface;
   EXPECT_THROW(segmentByEnsembleChoosingCount(surface, 1, 5, EnsembleSegmentationOptions()), Error);
   EXPECT_THROW(segmentByEnsembleChoosingCount(surface, 6, 5, EnsembleSegmentationOptions()), Error);
+  // At most MaximumCountsToChoose counts: 2 to 41 is allowed, 2 to 42 refused before any work.
+  EXPECT_THROW(
+    segmentByEnsembleChoosingCount(surface, 2, 2 + MaximumCountsToChoose, EnsembleSegmentationOptions()), Error);
+  EXPECT_THROW(segmentByEnsembleChoosingCount(surface, 2, 1000000, EnsembleSegmentationOptions()), Error);
+  // No faces.
+  const Surface empty{ TriangleMesh({}, {}) };
+  EXPECT_THROW(segmentByEnsembleChoosingCount(empty, 5, 11, EnsembleSegmentationOptions()), Error);
   EnsembleSegmentationOptions none;
   none.consensusCutsWeight = none.spectralWeight = none.convexFloodingWeight = none.kMeansWeight =
     none.watershedWeight = 0.0;

@@ -44,7 +44,8 @@ vtkSmartPointer<vtkPolyDataAlgorithm> withCount(int k)
 {
   if (k == ChosenCount)
   {
-    throw CommandError{ "--auto is for the methods that can choose the number of segments: ensemble" };
+    throw CommandError{ "--auto is for the methods that can choose the number of segments: ensemble (core-extraction "
+                        "always does)" };
   }
   vtkSmartPointer<Filter> filter = vtkSmartPointer<Filter>::New();
   if (k > 0)

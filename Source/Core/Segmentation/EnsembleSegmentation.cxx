@@ -453,30 +453,38 @@ EnsembleSegmentationResult segmentByEnsembleChoosingCount(
   const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options)
 {
   const TriangleMesh& mesh = surface.mesh();
+  checkSegmentCount(1, mesh.faceCount());
   if (minimumCount < 2 || maximumCount < minimumCount)
   {
     throw Error("choosing the segment count needs 2 <= minimum <= maximum, got " + std::to_string(minimumCount) +
       " and " + std::to_string(maximumCount));
   }
+  if (maximumCount - minimumCount >= MaximumCountsToChoose)
+  {
+    throw Error("choosing the segment count among " + std::to_string(maximumCount - minimumCount + 1) +
+      " counts: at most " + std::to_string(MaximumCountsToChoose) + " (the ensemble runs once per count)");
+  }
   checkEnsembleOptions(mesh, options);
-  const int faces = mesh.faceCount();
-  const int components = faceGraph(surface).componentCount();
-  // The maximum is shared among components by area, as segmentByEnsemble shares k.
-  const int shared = std::min(std::max(maximumCount, components), faces);
+  const FaceGraph& graph = faceGraph(surface);
+  const int components = graph.componentCount();
+  // Each component chooses its own count within the range (at most its faces): segmentSurfaceComponents
+  // is asked for as many segments as faces, so that only a component whose share of them is one
+  // (a component of a single face) is not segmented.
   EnsembleSegmentationResult result;
-  result.labels = segmentSurfaceComponents(surface, shared, [&](const Surface& part, int partK) {
-    const int highest = std::min(partK, part.mesh().faceCount());
-    const EnsembleSegmentationResult partResult =
-      segmentConnectedChoosingCount(part, std::min(minimumCount, highest), highest, options);
-    result.members = partResult.members;
-    result.atoms += partResult.atoms;
-    if (components == 1)
-    {
-      result.countScores = partResult.countScores;
-      result.countScore = partResult.countScore;
-    }
-    return partResult.labels;
-  });
+  result.labels =
+    segmentSurfaceComponents(surface, components == 1 ? maximumCount : mesh.faceCount(), [&](const Surface& part, int) {
+      const int highest = std::min(maximumCount, part.mesh().faceCount());
+      const EnsembleSegmentationResult partResult =
+        segmentConnectedChoosingCount(part, std::min(minimumCount, highest), highest, options);
+      result.members = partResult.members;
+      result.atoms += partResult.atoms;
+      if (components == 1)
+      {
+        result.countScores = partResult.countScores;
+        result.countScore = partResult.countScore;
+      }
+      return partResult.labels;
+    });
   result.segmentCount = 1 + *std::max_element(result.labels.begin(), result.labels.end());
   return result;
 }

@@ -83,11 +83,11 @@ struct EnsembleSegmentationResult
   int members = 0;         ///< segmentations that voted
   int atoms = 0;           ///< over all components
   int segmentCount = 0;    ///< segments in labels
-  /// segmentByEnsembleChoosingCount on a connected surface: per count from the minimum up, the
-  /// mean 1 - Rand index of the ensemble at that count against every member at every count (the
-  /// smallest was chosen); empty otherwise.
+  /// segmentByEnsembleChoosingCount on a connected surface: per count from the lowest scored (the
+  /// minimum, or the faces if fewer) up, the mean 1 - Rand index of the ensemble at that count
+  /// against every member at every count (the smallest was chosen); empty otherwise.
   std::vector<double> countScores;
-  double countScore = 0.0; ///< the chosen count's entry of countScores (0 when k was given)
+  double countScore = 0.0; ///< the chosen count's entry of countScores (0 when countScores is empty)
 };
 
 /// Ensemble segmentation: each member with a positive weight segments the surface into k parts
@@ -98,15 +98,20 @@ struct EnsembleSegmentationResult
 /// range, or whatever a member refuses.
 EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, const EnsembleSegmentationOptions& options);
 
+/// segmentByEnsembleChoosingCount chooses among at most this many counts.
+constexpr int MaximumCountsToChoose = 40;
+
 /// Ensemble segmentation that chooses the number of segments itself, among minimumCount to
 /// maximumCount: the ensemble is run at each count, and the count whose partition has the least
 /// mean 1 - Rand index against the members' partitions at all the counts wins (a median partition
-/// of every member at every count; the smaller count on a tie). A surface of several components
-/// shares maximumCount among them by area as segmentByEnsemble shares k, and each chooses within
-/// its share (a component whose share is 1 stays one segment). Defaults 5 and 11: on the Princeton
-/// benchmark's psb-dev models the choice scored best there and worse with 4 or 10
-/// (Documentation/filters/AutomaticSegmentation.md). Costs the ensemble's time once per count.
-/// Deterministic. Throws kerf::Error for minimumCount < 2, maximumCount < minimumCount, and what
+/// of every member at every count; the smaller count on a tie). The range is clipped to the faces
+/// of the surface (a connected surface of 3 faces with the range 5 to 11 is scored at 3 only).
+/// Each component of a surface with several chooses its own count in the range (a component of a
+/// single face stays one segment), so the surface can have up to components x maximumCount
+/// segments. Defaults 5 and 11: on the Princeton benchmark's psb-dev models the choice scored best
+/// there and worse with 4 or 10 (Documentation/filters/AutomaticSegmentation.md). Costs the
+/// ensemble's time once per count. Deterministic. Throws kerf::Error for a surface without faces,
+/// minimumCount < 2, maximumCount < minimumCount, more than MaximumCountsToChoose counts, and what
 /// segmentByEnsemble refuses.
 EnsembleSegmentationResult segmentByEnsembleChoosingCount(
   const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options);
