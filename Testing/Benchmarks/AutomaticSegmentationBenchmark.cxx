@@ -16,6 +16,8 @@
 // and, on the 22,188-triangle dumbbell (a psb-dev model's size; k = 6):
 //   BM_EnsembleSegmentation/22k      kerf::segmentByEnsemble with its defaults on a new Surface
 //                                    each time (nothing cached): the flagship's whole cost
+//   BM_EnsembleChoosingCount/22k     kerf::segmentByEnsembleChoosingCount with its defaults
+//                                    (counts 5 to 11), beside the ensemble at one count
 //   BM_ConsensusCutSegmentation/22k  kerf::segmentByConsensusCuts the same way, its costliest
 //                                    member and the reference its cost is quoted against
 //   BM_BoundaryBandCut/22k           kerf::refineSegmentBoundaries of the ensemble's labels
@@ -166,6 +168,25 @@ void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly)
     setCounters);
 }
 
+void choosingCountBenchmark(benchmark::State& state)
+{
+  kerf::benchmarks::RunOnScene(
+    state, []() -> const ClusterScene& { return sceneOfSize(EnsembleSize); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      int segments = 0;
+      for (auto _ : st)
+      {
+        const kerf::Surface surface(scene.mesh);
+        const kerf::EnsembleSegmentationResult result =
+          kerf::segmentByEnsembleChoosingCount(surface, 5, 11, kerf::EnsembleSegmentationOptions());
+        segments = result.segmentCount;
+        benchmark::DoNotOptimize(result.labels.data());
+      }
+      st.counters["segments"] = segments;
+    },
+    setCounters);
+}
+
 void bandCutBenchmark(benchmark::State& state)
 {
   kerf::benchmarks::RunOnScene(
@@ -217,6 +238,7 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
 {
   for (benchmark::internal::Benchmark* registered : {
          benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false),
+         benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark),
          benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true),
          benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
          benchmark::RegisterBenchmark("BM_CoreExtraction/22k", coreExtractionBenchmark, EnsembleSize),
