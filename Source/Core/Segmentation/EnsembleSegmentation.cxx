@@ -465,26 +465,22 @@ EnsembleSegmentationResult segmentByEnsembleChoosingCount(
       " counts: at most " + std::to_string(MaximumCountsToChoose) + " (the ensemble runs once per count)");
   }
   checkEnsembleOptions(mesh, options);
-  const FaceGraph& graph = faceGraph(surface);
-  const int components = graph.componentCount();
-  // Each component chooses its own count within the range (at most its faces): segmentSurfaceComponents
-  // is asked for as many segments as faces, so that only a component whose share of them is one
-  // (a component of a single face) is not segmented.
+  const int components = faceGraph(surface).componentCount();
+  // Each component chooses its own count within the range (at most its faces).
   EnsembleSegmentationResult result;
-  result.labels =
-    segmentSurfaceComponents(surface, components == 1 ? maximumCount : mesh.faceCount(), [&](const Surface& part, int) {
-      const int highest = std::min(maximumCount, part.mesh().faceCount());
-      const EnsembleSegmentationResult partResult =
-        segmentConnectedChoosingCount(part, std::min(minimumCount, highest), highest, options);
-      result.members = partResult.members;
-      result.atoms += partResult.atoms;
-      if (components == 1)
-      {
-        result.countScores = partResult.countScores;
-        result.countScore = partResult.countScore;
-      }
-      return partResult.labels;
-    });
+  result.labels = segmentEachSurfaceComponent(surface, [&](const Surface& part) {
+    const int highest = std::min(maximumCount, part.mesh().faceCount());
+    const EnsembleSegmentationResult partResult =
+      segmentConnectedChoosingCount(part, std::min(minimumCount, highest), highest, options);
+    result.members = partResult.members;
+    result.atoms += partResult.atoms;
+    if (components == 1)
+    {
+      result.countScores = partResult.countScores;
+      result.countScore = partResult.countScore;
+    }
+    return partResult.labels;
+  });
   result.segmentCount = 1 + *std::max_element(result.labels.begin(), result.labels.end());
   return result;
 }

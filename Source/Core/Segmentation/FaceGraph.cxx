@@ -485,16 +485,14 @@ std::vector<int> segmentsPerComponent(const FaceGraph& graph, int k)
   return share;
 }
 
-std::vector<int> segmentComponents(
-  const FaceGraph& graph, int k, const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent)
+namespace
+{
+// Each component as a mesh of its own, segmented by `segmentComponent` with its share (one
+// segment, without the call, where the share is 1), the labels joined and numbered by first face.
+std::vector<int> segmentComponentsWithShares(const FaceGraph& graph, const std::vector<int>& shares,
+  const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent)
 {
   const TriangleMesh& mesh = graph.mesh();
-  if (graph.componentCount() == 1)
-  {
-    return segmentComponent(mesh, k);
-  }
-  const std::vector<int> shares =
-    k >= graph.componentCount() ? segmentsPerComponent(graph, k) : std::vector<int>(graph.componentCount(), 1);
   std::vector<int> labels(graph.faceCount(), 0);
   int offset = 0;
   for (int c = 0; c < graph.componentCount(); ++c)
@@ -536,18 +534,59 @@ std::vector<int> segmentComponents(
   return numberByFirstFace(labels);
 }
 
-std::vector<int> segmentSurfaceComponents(
-  const Surface& surface, int k, const std::function<std::vector<int>(const Surface&, int)>& segmentComponent)
+// A Surface for each component's mesh (a connected surface is handed over itself).
+std::vector<int> segmentSurfaceComponentsWithShares(const Surface& surface, const std::vector<int>& shares,
+  const std::function<std::vector<int>(const Surface&, int)>& segmentComponent)
 {
   const FaceGraph& graph = faceGraph(surface);
   if (graph.componentCount() == 1)
   {
-    return segmentComponent(surface, k);
+    return segmentComponent(surface, shares[0]);
   }
-  return segmentComponents(graph, k, [&segmentComponent](const TriangleMesh& part, int partK) {
+  return segmentComponentsWithShares(graph, shares, [&segmentComponent](const TriangleMesh& part, int partK) {
     const Surface partSurface(part);
     return segmentComponent(partSurface, partK);
   });
+}
+
+// How many of k segments each component gets (segmentsPerComponent; one each when k is smaller
+// than the number of components).
+std::vector<int> sharesOf(const FaceGraph& graph, int k)
+{
+  return graph.componentCount() == 1 ? std::vector<int>{ k }
+    : k >= graph.componentCount()    ? segmentsPerComponent(graph, k)
+                                     : std::vector<int>(graph.componentCount(), 1);
+}
+} // namespace
+
+std::vector<int> segmentComponents(
+  const FaceGraph& graph, int k, const std::function<std::vector<int>(const TriangleMesh&, int)>& segmentComponent)
+{
+  if (graph.componentCount() == 1)
+  {
+    return segmentComponent(graph.mesh(), k);
+  }
+  return segmentComponentsWithShares(graph, sharesOf(graph, k), segmentComponent);
+}
+
+std::vector<int> segmentSurfaceComponents(
+  const Surface& surface, int k, const std::function<std::vector<int>(const Surface&, int)>& segmentComponent)
+{
+  return segmentSurfaceComponentsWithShares(surface, sharesOf(faceGraph(surface), k), segmentComponent);
+}
+
+std::vector<int> segmentEachSurfaceComponent(
+  const Surface& surface, const std::function<std::vector<int>(const Surface&)>& segmentComponent)
+{
+  // Each component's share is its face count, so only a single face is not handed over.
+  const FaceGraph& graph = faceGraph(surface);
+  std::vector<int> faces(graph.componentCount(), 0);
+  for (int f = 0; f < graph.faceCount(); ++f)
+  {
+    ++faces[graph.component(f)];
+  }
+  return segmentSurfaceComponentsWithShares(
+    surface, faces, [&segmentComponent](const Surface& part, int) { return segmentComponent(part); });
 }
 
 } // namespace kerf

@@ -175,4 +175,10 @@ std::vector<int> segmentComponents(
 std::vector<int> segmentSurfaceComponents(
   const Surface& surface, int k, const std::function<std::vector<int>(const Surface&, int)>& segmentComponent);
 
+/// Runs `segmentComponent` on every dual-graph component as a Surface of its own (a connected
+/// surface itself), each choosing its own number of segments (a component of one face stays one
+/// segment without the call), and joins the labels, numbered by first face.
+std::vector<int> segmentEachSurfaceComponent(
+  const Surface& surface, const std::function<std::vector<int>(const Surface&)>& segmentComponent);
+
 } // namespace kerf
