@@ -49,6 +49,7 @@ int vtkEnsembleSegmentation::RequestData(
         options.faceClusteringWeight = kerf::Finite(this->FaceClusteringWeight, "FaceClusteringWeight");
         options.coreExtractionWeight = kerf::Finite(this->CoreExtractionWeight, "CoreExtractionWeight");
         options.areaWeighted = this->AreaWeighted;
+        options.convexTolerance = this->ConvexTolerance;
         options.refinement.bandWidth = kerf::Finite(this->BoundaryBand, "BoundaryBand");
         options.refinement.convexWeight = kerf::Finite(this->ConvexWeight, "ConvexWeight");
         const kerf::EnsembleSegmentationResult result = this->ChooseSegmentCount
@@ -72,6 +73,7 @@ void vtkEnsembleSegmentation::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ChooseSegmentCount: " << this->ChooseSegmentCount << "\n";
   os << indent << "MinimumSegmentCount: " << this->MinimumSegmentCount << "\n";
   os << indent << "MaximumSegmentCount: " << this->MaximumSegmentCount << "\n";
+  os << indent << "ConvexTolerance: " << this->ConvexTolerance << "\n";
   os << indent << "ConsensusCutsWeight: " << this->ConsensusCutsWeight << "\n";
   os << indent << "SpectralWeight: " << this->SpectralWeight << "\n";
   os << indent << "ConvexFloodingWeight: " << this->ConvexFloodingWeight << "\n";

@@ -18,13 +18,14 @@
  * "SegmentCount" and the method's own figures ("Members": the segmentations that voted,
  * "Atoms": the groups of faces they all keep together); with ChooseSegmentCount also "CountScores",
  * per count from MinimumSegmentCount up, the mean 1 - Rand index of the ensemble at that count
- * against all the members (on a surface of one component; the smallest was chosen).
+ * against all the members (on a surface of one component; the smallest was chosen; empty where the
+ * surface is within ConvexTolerance of its convex hull and stays one segment).
  *
  * Errors (vtkErrorMacro, return 0; the output stays empty): surfaces refused by validation (NaN
  * coordinates, triangles repeating a point, non-manifold edges or vertices, inconsistent
  * orientation), a segment count below 1 or above the number of triangles, with
- * ChooseSegmentCount a minimum below 2, a maximum below the minimum or more than 40 counts (a
- * range above the number of triangles is clipped to it), a negative or
+ * ChooseSegmentCount a minimum below 2, a maximum below the minimum, above the number of
+ * triangles or more than 40 counts, a ConvexTolerance outside [0, 1), a negative or
  * non-finite weight, all weights 0, a negative or non-finite BoundaryBand or ConvexWeight.
  * Documentation/filters/AutomaticSegmentation.md has the details.
  */
@@ -66,6 +67,14 @@ public:
   vtkGetMacro(MinimumSegmentCount, int);
   vtkSetMacro(MaximumSegmentCount, int);
   vtkGetMacro(MaximumSegmentCount, int);
+  ///@}
+
+  ///@{
+  /// With ChooseSegmentCount: a component whose vertices all lie within this fraction of its
+  /// bounding box's diagonal from its convex hull has no parts and stays one segment (a sphere, a
+  /// planar patch). 0 gives every component a count in the range. Default 0.01.
+  vtkSetMacro(ConvexTolerance, double);
+  vtkGetMacro(ConvexTolerance, double);
   ///@}
 
   ///@{
@@ -151,6 +160,7 @@ protected:
   bool ChooseSegmentCount = false;
   int MinimumSegmentCount = 5;
   int MaximumSegmentCount = 11;
+  double ConvexTolerance = 0.01;
   double ConsensusCutsWeight = 1.0;
   double SpectralWeight = 1.0;
   double ConvexFloodingWeight = 1.0;

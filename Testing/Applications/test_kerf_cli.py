@@ -305,6 +305,31 @@ class CommandLine(unittest.TestCase):
         result = run("segment", camel, "--auto", "-k", "4")
         self.assertEqual(result.returncode, 1)
         self.assertIn("one of them", result.stderr)
+        # A convex surface has no parts: an icosahedron (20 faces) stays one segment with --auto.
+        golden = (1.0 + 5.0 ** 0.5) / 2.0
+        corners = [(0, s, t * golden) for s in (-1, 1) for t in (-1, 1)]
+        corners = [p for c in corners for p in (c, (c[1], c[2], c[0]), (c[2], c[0], c[1]))]
+        faces = []
+        for a in range(12):
+            for b in range(a + 1, 12):
+                for c in range(b + 1, 12):
+                    if all(abs(sum((corners[i][d] - corners[j][d]) ** 2 for d in range(3)) - 4.0) < 1e-9
+                           for i, j in ((a, b), (b, c), (a, c))):
+                        # Outward: the normal points away from the centre.
+                        u = [corners[b][d] - corners[a][d] for d in range(3)]
+                        v = [corners[c][d] - corners[a][d] for d in range(3)]
+                        n = (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+                        outward = sum(n[d] * corners[a][d] for d in range(3)) > 0
+                        faces.append((a, b, c) if outward else (a, c, b))
+        self.assertEqual(len(faces), 20)
+        icosahedron = os.path.join(self.folder, "icosahedron.off")
+        with open(icosahedron, "w") as f:
+            f.write("OFF\n12 20 0\n")
+            f.writelines("%r %r %r\n" % p for p in corners)
+            f.writelines("3 %d %d %d\n" % t for t in faces)
+        result = run("segment", icosahedron, "--auto", "-o", os.path.join(self.folder, "icosahedron.vtp"))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("ensemble segmentation of " + icosahedron + ": 1 segment over 20 triangles", result.stdout)
         result = run("segment", camel, "--auto", "--method", "spectral")
         self.assertEqual(result.returncode, 1)
         self.assertIn("--auto is for the methods that can choose the number of segments: ensemble", result.stderr)

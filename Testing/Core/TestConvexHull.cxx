@@ -78,5 +78,54 @@ TEST(ConvexHull, FlatAndBadInput)
   EXPECT_THROW(convexHull({ Vector3(0, 0, 0) }, -1.0), Error);
 }
 
+TEST(ConvexHull, LargestDepthAsAFractionOfTheDiagonal)
+{
+  // A unit cube's corners and its centre: the centre is 0.5 below every face, the diagonal sqrt(3).
+  std::vector<Vector3> cube;
+  for (int i = 0; i < 8; ++i)
+  {
+    cube.emplace_back(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  }
+  cube.emplace_back(0.5, 0.5, 0.5);
+  EXPECT_NEAR(largestHullDepthFraction(cube, 100), 0.5 / std::sqrt(3.0), 1e-12);
+  // A sphere's vertices are all on the hull; with 40 samples of its 642, still none inside.
+  const TriangleMesh sphere = makeIcosphere(2.0, 3);
+  EXPECT_LT(largestHullDepthFraction(sphere.points(), 100000), 1e-12);
+  EXPECT_LT(largestHullDepthFraction(sphere.points(), 40), 1e-12);
+  // Every s-th point stands for the set, the first included: the sphere's centre first, then its
+  // 642 vertices, at most 40 samples (s = 17): the centre and 38 vertices, whose hull lies inside
+  // the sphere (the centre at most the radius 2 deep) and holds most of it.
+  std::vector<Vector3> centred{ Vector3(0, 0, 0) };
+  centred.insert(centred.end(), sphere.points().begin(), sphere.points().end());
+  Vector3 lowest = centred[0], highest = centred[0];
+  for (const Vector3& p : centred)
+  {
+    lowest = lowest.cwiseMin(p);
+    highest = highest.cwiseMax(p);
+  }
+  const double diagonal = (highest - lowest).norm();
+  // All samples: the centre lies the hull's inradius deep (the flat faces' planes a little inside the sphere).
+  EXPECT_LE(largestHullDepthFraction(centred, 100000), 2.0 / diagonal);
+  EXPECT_GE(largestHullDepthFraction(centred, 100000), 0.98 * 2.0 / diagonal);
+  EXPECT_LE(largestHullDepthFraction(centred, 40), 2.0 / diagonal);
+  EXPECT_GE(largestHullDepthFraction(centred, 40), 0.7 * 2.0 / diagonal);
+  // A torus of radii 1 and 0.3: its inner equator (radius 0.7, z = 0) lies 0.3 below the hull's
+  // planes z = +-0.3, and the bounding box is 2.6 x 2.6 x 0.6.
+  const TriangleMesh torus = makeTorus(1.0, 0.3, 64, 32);
+  EXPECT_NEAR(largestHullDepthFraction(torus.points(), 100000), 0.3 / std::sqrt(2.6 * 2.6 * 2 + 0.6 * 0.6), 2e-3);
+  // A flat set, one point, none: 0.
+  std::vector<Vector3> plane;
+  for (int i = 0; i < 20; ++i)
+  {
+    plane.emplace_back(std::cos(i), std::sin(2.0 * i), 0.0);
+  }
+  EXPECT_EQ(largestHullDepthFraction(plane, 100), 0.0);
+  EXPECT_EQ(largestHullDepthFraction({ Vector3(1, 2, 3), Vector3(1, 2, 3) }, 100), 0.0);
+  EXPECT_EQ(largestHullDepthFraction({}, 100), 0.0);
+  EXPECT_THROW(largestHullDepthFraction(cube, 3), Error);
+  cube[2].y() = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(largestHullDepthFraction(cube, 100), Error);
+}
+
 } // namespace
 } // namespace kerf

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <iostream>
+#include <limits>
 #include <vector>
 
 using namespace kerf;
@@ -168,8 +169,86 @@ TEST(EnsembleCount, RefusesBadRanges)
   none.consensusCutsWeight = none.spectralWeight = none.convexFloodingWeight = none.kMeansWeight =
     none.watershedWeight = 0.0;
   EXPECT_THROW(segmentByEnsembleChoosingCount(surface, 2, 5, none), Error);
-  // A count above the faces is clipped to them: a 2-triangle square cannot have more than 2.
+  // A maximum above the faces is refused: a 2-triangle square cannot have 3 segments.
   const Surface square{ TriangleMesh(
     { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 }, { 0, 2, 3 } }) };
-  EXPECT_LE(segmentByEnsembleChoosingCount(square, 2, 11, EnsembleSegmentationOptions()).segmentCount, 2);
+  EXPECT_THROW(segmentByEnsembleChoosingCount(square, 2, 3, EnsembleSegmentationOptions()), Error);
+  EXPECT_EQ(segmentByEnsembleChoosingCount(square, 2, 2, EnsembleSegmentationOptions()).segmentCount, 1);
+  // The convex tolerance is a fraction of the diagonal, in [0, 1).
+  for (double tolerance : { -0.1, 1.0, std::numeric_limits<double>::quiet_NaN() })
+  {
+    EnsembleSegmentationOptions bad;
+    bad.convexTolerance = tolerance;
+    EXPECT_THROW(segmentByEnsembleChoosingCount(surface, 5, 11, bad), Error);
+  }
+}
+
+// A surface with no parts (Hoffman and Richards 1984's minima rule puts part boundaries at concavities,
+// and a convex surface has none) stays one segment when the count is chosen; with the convex
+// tolerance 0 it gets a count in the range like any other.
+TEST(EnsembleCount, ConvexSurfacesStayOneSegment)
+{
+  const EnsembleSegmentationOptions options;
+  const auto expectOneSegment = [&](const TriangleMesh& mesh, const char* what) {
+    const Surface surface{ mesh };
+    const EnsembleSegmentationResult result = segmentByEnsembleChoosingCount(surface, 5, 11, options);
+    EXPECT_EQ(result.segmentCount, 1) << what;
+    EXPECT_EQ(result.labels, std::vector<int>(mesh.faceCount(), 0)) << what;
+    EXPECT_TRUE(result.countScores.empty()) << what;
+  };
+  const TriangleMesh sphere = makeIcosphere(0.5, 4);
+  expectOneSegment(sphere, "sphere");
+  expectOneSegment(makeGrid(2.0, 1.0, 20, 10), "planar patch");
+  // A scanned sphere: every vertex moved along its radius by up to 0.4% of the radius (a fixed
+  // pattern), so that many of its edges are slightly concave.
+  std::vector<Vector3> noisy = sphere.points();
+  for (std::size_t v = 0; v < noisy.size(); ++v)
+  {
+    noisy[v] *= 1.0 + 0.004 * std::sin(12.9898 * static_cast<double>(v));
+  }
+  expectOneSegment(TriangleMesh(noisy, sphere.triangles()), "noisy sphere");
+  EnsembleSegmentationOptions everyComponent;
+  everyComponent.convexTolerance = 0.0;
+  const Surface sphereSurface{ sphere };
+  const EnsembleSegmentationResult forced = segmentByEnsembleChoosingCount(sphereSurface, 5, 11, everyComponent);
+  EXPECT_GE(forced.segmentCount, 5);
+  EXPECT_LE(forced.segmentCount, 11);
+  // The fingers (deep concavities between body and fingers) are not convex: their count is chosen.
+  EXPECT_GE(segmentByEnsembleChoosingCount(*fingers().surface, 5, 11, options).segmentCount, 5);
+}
+
+// A sphere beside the fingers: the sphere one segment, the fingers as they are alone.
+TEST(EnsembleCount, AConvexComponentBesideOneWithParts)
+{
+  const TriangleMesh& one = fingers().surface->mesh();
+  const TriangleMesh sphere = makeIcosphere(0.5, 3);
+  std::vector<Vector3> points = one.points();
+  std::vector<Triangle> triangles = one.triangles();
+  const int offset = static_cast<int>(points.size());
+  for (const Vector3& p : sphere.points())
+  {
+    points.push_back(p + Vector3(6.0, 0.0, 0.0));
+  }
+  for (Triangle t : sphere.triangles())
+  {
+    for (int& v : t)
+    {
+      v += offset;
+    }
+    triangles.push_back(t);
+  }
+  const Surface both{ TriangleMesh(std::move(points), std::move(triangles)) };
+  const EnsembleSegmentationOptions options;
+  const EnsembleSegmentationResult result = segmentByEnsembleChoosingCount(both, 5, 11, options);
+  const EnsembleSegmentationResult alone = segmentByEnsembleChoosingCount(*fingers().surface, 5, 11, options);
+  ASSERT_EQ(result.segmentCount, alone.segmentCount + 1);
+  const int n = one.faceCount();
+  for (int f = 0; f < n; ++f)
+  {
+    ASSERT_EQ(result.labels[f], alone.labels[f]);
+  }
+  for (int f = n; f < both.mesh().faceCount(); ++f)
+  {
+    ASSERT_EQ(result.labels[f], alone.segmentCount);
+  }
 }

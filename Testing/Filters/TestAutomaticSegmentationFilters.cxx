@@ -556,5 +556,25 @@ int TestAutomaticSegmentationFilters(int, char*[])
   }
   choosing->SetMinimumSegmentCount(1);
   ok &= CheckRefused(choosing, dumbbell.surface, "minimum");
+  // A sphere has no parts: choosing its count (the defaults 5 to 11) leaves it one segment, with no
+  // count scored; ConvexTolerance 0 chooses a count in the range; a tolerance of 1 is refused.
+  vtkSmartPointer<vtkPolyData> sphere = kerf::test::ToPolyData(kerf::makeIcosphere(0.5, 3));
+  vtkNew<vtkEnsembleSegmentation> convex;
+  convex->SetInputData(sphere);
+  convex->ChooseSegmentCountOn();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(convex).empty());
+  ok &= KERF_CHECK(FieldValue(convex->GetOutput(), "SegmentCount") == 1.0);
+  vtkDataArray* noScores = convex->GetOutput()->GetFieldData()->GetArray("CountScores");
+  ok &= KERF_CHECK(noScores != nullptr && noScores->GetNumberOfTuples() == 0);
+  convex->SetConvexTolerance(0.0);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(convex).empty());
+  ok &= KERF_CHECK(FieldValue(convex->GetOutput(), "SegmentCount") >= 5.0);
+  ok &= KERF_CHECK(FieldValue(convex->GetOutput(), "SegmentCount") <= 11.0);
+  convex->SetConvexTolerance(1.0);
+  ok &= CheckRefused(convex, sphere, "convex tolerance");
+  convex->SetConvexTolerance(0.01);
+  convex->SetMaximumSegmentCount(sphere->GetNumberOfCells() + 1);
+  convex->SetMinimumSegmentCount(sphere->GetNumberOfCells() - 30);
+  ok &= CheckRefused(convex, sphere, "at most the number of faces");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -317,7 +317,21 @@ class KerfPluginTest(unittest.TestCase):
         self.assertEqual(count, 8 if scores[0] <= scores[1] else 9)
         if count == 8:
             self.assertEqual(int((labels(chosen) != segments).sum()), 0)
-        for proxy in (chosen, recut, unbanded, alone, refined, cuts, ensemble):
+        # A sphere has no parts: with the count chosen it stays one segment, no count scored; with
+        # Convex Tolerance 0 it gets a count between the defaults 5 and 11.
+        ball = simple.Sphere(Radius=1.0, ThetaResolution=32, PhiResolution=32)
+        whole = simple.EnsembleSegmentation(Input=ball, ChooseSegmentCount=1)
+        whole.UpdatePipeline()
+        wholeOutput = servermanager.Fetch(whole)
+        self.assertEqual(int(wholeOutput.GetFieldData().GetArray("SegmentCount").GetValue(0)), 1)
+        self.assertEqual(wholeOutput.GetFieldData().GetArray("CountScores").GetNumberOfTuples(), 0)
+        self.assertEqual(int(labels(whole).max()), 0)
+        whole.ConvexTolerance = 0.0
+        whole.UpdatePipeline()
+        forced = int(servermanager.Fetch(whole).GetFieldData().GetArray("SegmentCount").GetValue(0))
+        self.assertGreaterEqual(forced, 5)
+        self.assertLessEqual(forced, 11)
+        for proxy in (whole, ball, chosen, recut, unbanded, alone, refined, cuts, ensemble):
             simple.Delete(proxy)
 
     def test_geodesic_distance_on_a_sphere(self):

@@ -167,6 +167,7 @@ MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*
   options.faceClusteringWeight = parameters.number("clustering", options.faceClusteringWeight);
   options.coreExtractionWeight = parameters.number("core-extraction", options.coreExtractionWeight);
   options.areaWeighted = parameters.number("area-weighted", options.areaWeighted ? 1.0 : 0.0) != 0.0;
+  options.convexTolerance = parameters.number("convex-tolerance", options.convexTolerance);
   options.refinement.bandWidth = parameters.number("band", options.refinement.bandWidth);
   options.refinement.convexWeight = parameters.number("convex-weight", options.refinement.convexWeight);
   options.consensusCuts.walkDepth = parameters.number("walk-depth", options.consensusCuts.walkDepth);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <string>
 #include <utility>
 
 namespace kerf
@@ -192,6 +193,44 @@ std::vector<double> hullDepths(const ConvexHull& hull, const std::vector<Vector3
     depths[i] = std::max(depth, 0.0);
   }
   return depths;
+}
+
+double largestHullDepthFraction(const std::vector<Vector3>& points, int maximumSamples)
+{
+  if (maximumSamples < 4)
+  {
+    throw Error("the hull depth needs at least 4 samples, got " + std::to_string(maximumSamples));
+  }
+  const std::size_t n = points.size();
+  const std::size_t stride = (n + maximumSamples - 1) / static_cast<std::size_t>(maximumSamples);
+  std::vector<Vector3> samples;
+  for (std::size_t i = 0; i < n; i += std::max<std::size_t>(stride, 1))
+  {
+    samples.push_back(points[i]);
+  }
+  if (samples.empty())
+  {
+    return 0.0;
+  }
+  Vector3 lowest = samples.front(), highest = samples.front();
+  for (const Vector3& p : samples)
+  {
+    if (!p.allFinite())
+    {
+      throw Error("the convex hull's points must be finite");
+    }
+    lowest = lowest.cwiseMin(p);
+    highest = highest.cwiseMax(p);
+  }
+  const double diagonal = (highest - lowest).norm();
+  if (diagonal == 0.0)
+  {
+    return 0.0;
+  }
+  // Points within 1e-9 of the diagonal of a hull plane count as on it (rounding, not geometry).
+  const ConvexHull hull = convexHull(samples, 1e-9 * diagonal);
+  const std::vector<double> depths = hullDepths(hull, samples);
+  return *std::max_element(depths.begin(), depths.end()) / diagonal;
 }
 
 } // namespace kerf

@@ -2,6 +2,7 @@
 #include "Segmentation/EnsembleSegmentation.h"
 
 #include "Error.h"
+#include "Geometry/ConvexHull.h"
 #include "Mesh/MeshValidation.h"
 #include "Segmentation/PartitionDistance.h"
 #include "Surface/Surface.h"
@@ -449,6 +450,35 @@ EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, cons
   return result;
 }
 
+namespace
+{
+// Vertices that stand for a component in its convex hull test: a hull of 2,000 points costs about a
+// millisecond, and a part deep enough to count reaches far below the hull over many vertices.
+constexpr int HullDepthSamples = 2000;
+
+// largestHullDepthFraction of the vertices that faces use (a mesh may hold points no face uses).
+double hullDepthOfFaces(const TriangleMesh& mesh)
+{
+  std::vector<char> used(mesh.vertexCount(), 0);
+  for (int f = 0; f < mesh.faceCount(); ++f)
+  {
+    for (int v : mesh.triangle(f))
+    {
+      used[v] = 1;
+    }
+  }
+  std::vector<Vector3> points;
+  for (int v = 0; v < mesh.vertexCount(); ++v)
+  {
+    if (used[v])
+    {
+      points.push_back(mesh.point(v));
+    }
+  }
+  return largestHullDepthFraction(points, HullDepthSamples);
+}
+} // namespace
+
 EnsembleSegmentationResult segmentByEnsembleChoosingCount(
   const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options)
 {
@@ -464,11 +494,24 @@ EnsembleSegmentationResult segmentByEnsembleChoosingCount(
     throw Error("choosing the segment count among " + std::to_string(maximumCount - minimumCount + 1) +
       " counts: at most " + std::to_string(MaximumCountsToChoose) + " (the ensemble runs once per count)");
   }
+  if (maximumCount > mesh.faceCount())
+  {
+    throw Error("choosing the segment count up to " + std::to_string(maximumCount) + " on a surface of " +
+      std::to_string(mesh.faceCount()) + " faces: the maximum count can be at most the number of faces");
+  }
+  if (!(options.convexTolerance >= 0.0 && options.convexTolerance < 1.0))
+  {
+    throw Error("the convex tolerance must be at least 0 and below 1, got " + std::to_string(options.convexTolerance));
+  }
   checkEnsembleOptions(mesh, options);
   const int components = faceGraph(surface).componentCount();
   // Each component chooses its own count within the range (at most its faces).
   EnsembleSegmentationResult result;
   result.labels = segmentEachSurfaceComponent(surface, [&](const Surface& part) {
+    if (options.convexTolerance > 0.0 && hullDepthOfFaces(part.mesh()) < options.convexTolerance)
+    {
+      return std::vector<int>(part.mesh().faceCount(), 0);
+    }
     const int highest = std::min(maximumCount, part.mesh().faceCount());
     const EnsembleSegmentationResult partResult =
       segmentConnectedChoosingCount(part, std::min(minimumCount, highest), highest, options);

@@ -62,6 +62,12 @@ struct EnsembleSegmentationOptions
   /// Core extraction votes with its own number of parts (not k). Default 0: see
   /// AutomaticSegmentation.md for what it did to the ensemble on the Princeton benchmark.
   double coreExtractionWeight = 0.0;
+  /// segmentByEnsembleChoosingCount only: a component whose vertices all lie within this fraction
+  /// of its bounding box's diagonal from its convex hull (largestHullDepthFraction) has no parts to
+  /// find and stays one segment: a sphere, a planar patch, a box. Default 0.01, a third of the
+  /// least of the Princeton benchmark's psb-dev models (0.032); 0 gives every component a count in
+  /// the range.
+  double convexTolerance = 0.01;
   /// Faces weigh by their area in the linkage instead of once each. Default false.
   bool areaWeighted = false;
   /// The consensus's boundaries re-cut within a band (refineSegmentBoundaries, its defaults);
@@ -104,15 +110,17 @@ constexpr int MaximumCountsToChoose = 40;
 /// Ensemble segmentation that chooses the number of segments itself, among minimumCount to
 /// maximumCount: the ensemble is run at each count, and the count whose partition has the least
 /// mean 1 - Rand index against the members' partitions at all the counts wins (a median partition
-/// of every member at every count; the smaller count on a tie). The range is clipped to the faces
-/// of the surface (a connected surface of 3 faces with the range 5 to 11 is scored at 3 only).
+/// of every member at every count; the smaller count on a tie). The range is clipped to each
+/// component's faces (a component of 3 faces with the range 5 to 11 is scored at 3 only).
 /// Each component of a surface with several chooses its own count in the range (a component of a
 /// single face stays one segment), so the surface can have up to components x maximumCount
-/// segments. Defaults 5 and 11: on the Princeton benchmark's psb-dev models the choice scored best
+/// segments. A component within options.convexTolerance of its convex hull is one segment and
+/// costs only that test. Defaults 5 and 11: on the Princeton benchmark's psb-dev models the choice scored best
 /// there and worse with 4 or 10 (Documentation/filters/AutomaticSegmentation.md). Costs the
 /// ensemble's time once per count. Deterministic. Throws kerf::Error for a surface without faces,
-/// minimumCount < 2, maximumCount < minimumCount, more than MaximumCountsToChoose counts, and what
-/// segmentByEnsemble refuses.
+/// minimumCount < 2, maximumCount < minimumCount, maximumCount above the surface's faces, more
+/// than MaximumCountsToChoose counts, a convexTolerance outside [0, 1), and what segmentByEnsemble
+/// refuses.
 EnsembleSegmentationResult segmentByEnsembleChoosingCount(
   const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options);
 
