@@ -44,8 +44,7 @@ int vtkSpectralSegmentation::RequestData(
         options.geodesicWeight = kerf::Finite(this->GeodesicWeight, "GeodesicWeight");
         options.convexAngleWeight = kerf::Finite(this->ConvexAngleWeight, "ConvexAngleWeight");
         options.patchCount = this->PatchCount;
-        const kerf::SpectralSegmentationResult result =
-          kerf::segmentSpectrally(kerf::faceGraph(surface), this->SegmentCount, options);
+        const kerf::SpectralSegmentationResult result = kerf::segmentSpectrally(surface, this->SegmentCount, options);
         fieldData->AddArray(kerf::MakeFieldValue("Patches", result.patches));
         return result.labels;
       });

@@ -1057,6 +1057,51 @@ TEST(AutomaticSegmentation, EnsembleOnTwoComponents)
 // The spectral embedding's partial eigensolver against Eigen's full one: the same eigenvalues and
 // the same invariant subspace on a random symmetric matrix, and an orthonormal basis of a
 // repeated eigenvalue's space.
+// The work that does not depend on k is kept on the surface: spectral clustering's patches and
+// affinity, the consensus cuts' ranked cuts (which depend on k through the feature-point count
+// only). A new k then computes nothing of it again, and the labels are those of a fresh start.
+TEST(AutomaticSegmentation, WorkThatDoesNotDependOnKIsKeptOnTheSurface)
+{
+  const TriangleMesh& mesh = fingers().surface->mesh();
+  ASSERT_GT(mesh.faceCount(), SpectralSegmentationOptions().patchCount); // patches are clusters
+  const Surface surface{ mesh };
+  const SpectralSegmentationOptions spectral;
+  (void)segmentSpectrally(surface, 2, spectral);
+  const int afterFirst = surface.computations();
+  for (int k = 2; k <= 8; ++k)
+  {
+    EXPECT_EQ(segmentSpectrally(surface, k, spectral).labels, segmentSpectrally(FaceGraph(mesh), k, spectral).labels)
+      << k;
+  }
+  EXPECT_EQ(surface.computations(), afterFirst);
+  // Other options are other items.
+  SpectralSegmentationOptions fewerPatches;
+  fewerPatches.patchCount = 200;
+  (void)segmentSpectrally(surface, 4, fewerPatches);
+  EXPECT_EQ(surface.computations(), afterFirst + 1);
+  EXPECT_EQ(
+    segmentSpectrally(surface, 4, fewerPatches).labels, segmentSpectrally(FaceGraph(mesh), 4, fewerPatches).labels);
+
+  // Consensus cuts: k = 8 and 9 both use min(16, k + 8) = 16 feature points.
+  const ConsensusCutOptions cuts;
+  (void)segmentByConsensusCuts(surface, 8, cuts);
+  const int afterCuts = surface.computations();
+  const ConsensusCutResult nine = segmentByConsensusCuts(surface, 9, cuts);
+  EXPECT_EQ(surface.computations(), afterCuts);
+  const Surface fresh{ mesh };
+  const ConsensusCutResult freshNine = segmentByConsensusCuts(fresh, 9, cuts);
+  EXPECT_EQ(nine.labels, freshNine.labels);
+  EXPECT_EQ(nine.consensusCuts, freshNine.consensusCuts);
+  EXPECT_EQ(nine.chosenCuts, freshNine.chosenCuts);
+  // k = 4 has 12 feature points: ranked anew.
+  (void)segmentByConsensusCuts(surface, 4, cuts);
+  EXPECT_EQ(surface.computations(), afterCuts + 1);
+  ConsensusCutOptions otherPeaks;
+  otherPeaks.peaksPerField = 2;
+  (void)segmentByConsensusCuts(surface, 9, otherPeaks);
+  EXPECT_EQ(surface.computations(), afterCuts + 2);
+}
+
 TEST(AutomaticSegmentation, LeadingEigenvectorsMatchTheFullDecomposition)
 {
   std::srand(7);

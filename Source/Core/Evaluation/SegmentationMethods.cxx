@@ -134,7 +134,7 @@ MethodOutput segmentWithSpectralClustering(
   options.geodesicWeight = parameters.positive("delta", options.geodesicWeight);
   options.convexAngleWeight = parameters.positive("eta", options.convexAngleWeight);
   options.patchCount = static_cast<int>(parameters.positive("patches", options.patchCount));
-  return { segmentSpectrally(FaceGraph(c.surface->mesh()), requestedSegments(c), options).labels, 0 };
+  return { segmentSpectrally(*c.surface, requestedSegments(c), options).labels, 0 };
 }
 
 MethodOutput segmentWithConsensusCuts(

@@ -1,6 +1,7 @@
 // Consensus cuts: feature points, unit-current harmonic fields, isoline candidates, grouping and greedy selection.
 #include "Segmentation/ConsensusCutSegmentation.h"
 
+#include "CacheKey.h"
 #include "Error.h"
 #include "Geodesic/GraphDistance.h"
 #include "Harmonic/Isolines.h"
@@ -17,6 +18,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <string>
 
 namespace kerf
 {
@@ -43,6 +45,16 @@ struct ConsensusCut
   double bestScore = 0.0;
   std::vector<int> fields; // distinct fields that found it
   double rank = 0.0;
+};
+
+// The grouped candidate cuts, best rank first: the side each splits off, and the counts reported.
+struct RankedCuts
+{
+  std::vector<Bits> sides;
+  int featurePoints = 0;
+  int fields = 0;
+  int candidates = 0;
+  int consensusCuts = 0;
 };
 
 double symmetricDifferenceArea(const Bits& a, const Bits& b, const std::vector<double>& area)
@@ -341,20 +353,17 @@ private:
   int VisitStamp = 0;
 };
 
-ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
+// Steps (1)-(4) for `pointCount` feature points: the candidate cuts of every pair's field,
+// grouped and ranked. They depend on k only through the feature-point count, so a surface keeps
+// them (Surface::derived) and the ensemble choosing its count computes them once for the counts
+// that share it.
+RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOptions& options)
 {
   const TriangleMesh& mesh = surface.mesh();
-  const FaceGraph graph(mesh);
-  const int n = graph.faceCount();
-  ConsensusCutResult result;
-  if (k == 1)
-  {
-    result.labels.assign(n, 0);
-    return result;
-  }
-  const int pointCount = std::min(options.maximumFeaturePoints, k + options.extraFeaturePoints);
+  const FaceGraph& graph = faceGraph(surface);
+  RankedCuts ranked;
   const std::vector<int> points = farthestPoints(mesh, std::max(2, pointCount));
-  result.featurePoints = static_cast<int>(points.size());
+  ranked.featurePoints = static_cast<int>(points.size());
   LaplacianWeightOptions weightOptions;
   weightOptions.weighting = options.weighting;
   const std::vector<std::vector<double>> potentials =
@@ -368,7 +377,7 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
   {
     for (std::size_t j = i + 1; j < points.size(); ++j)
     {
-      const int fieldIndex = result.fields++;
+      const int fieldIndex = ranked.fields++;
       const std::vector<double> field = clippedField(mesh, potentials[i], potentials[j], options.clipQuantile, sorted);
       const std::vector<double> gradient = faceGradientMagnitudes(mesh, field);
       const std::vector<IsovalueScore> scores = scoreIsovalues(mesh, field, gradient, options.isovaluesPerField);
@@ -405,7 +414,7 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
       }
     }
   }
-  result.candidates = static_cast<int>(candidates.size());
+  ranked.candidates = static_cast<int>(candidates.size());
 
   // Group candidates that split the surface alike, best score first.
   std::vector<int> order(candidates.size());
@@ -445,7 +454,46 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
   }
   std::stable_sort(
     cuts.begin(), cuts.end(), [](const ConsensusCut& a, const ConsensusCut& b) { return a.rank > b.rank; });
-  result.consensusCuts = static_cast<int>(cuts.size());
+  ranked.consensusCuts = static_cast<int>(cuts.size());
+  for (const ConsensusCut& cut : cuts)
+  {
+    ranked.sides.push_back(std::move(candidates[cut.representative].side));
+  }
+  return ranked;
+}
+
+const RankedCuts& rankedCuts(const Surface& surface, int pointCount, const ConsensusCutOptions& options)
+{
+  // Every option the ranking reads (the walk's and the selection's are applied after it).
+  const std::string key = "consensus-cuts:points=" + std::to_string(pointCount) +
+    " weighting=" + std::to_string(static_cast<int>(options.weighting)) +
+    " isovalues=" + std::to_string(options.isovaluesPerField) + " peaks=" + std::to_string(options.peaksPerField) +
+    " clip=" + cacheKey(options.clipQuantile) + " same=" + cacheKey(options.sameCutTolerance) +
+    " area=" + cacheKey(options.minimumSegmentArea) + " length=" + cacheKey(options.lengthExponent) +
+    " areaExponent=" + cacheKey(options.areaExponent) + " vote=" + cacheKey(options.voteExponent);
+  return surface.derived<RankedCuts>(key, [&] { return rankCuts(surface, pointCount, options); });
+}
+
+ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  const FaceGraph& graph = faceGraph(surface);
+  const int n = graph.faceCount();
+  ConsensusCutResult result;
+  if (k == 1)
+  {
+    result.labels.assign(n, 0);
+    return result;
+  }
+  const int pointCount = std::min(options.maximumFeaturePoints, k + options.extraFeaturePoints);
+  const RankedCuts& ranked = rankedCuts(surface, pointCount, options);
+  result.featurePoints = ranked.featurePoints;
+  result.fields = ranked.fields;
+  result.candidates = ranked.candidates;
+  result.consensusCuts = ranked.consensusCuts;
+  const double minimumArea = options.minimumSegmentArea * graph.totalArea();
+  LaplacianWeightOptions weightOptions;
+  weightOptions.weighting = options.weighting;
 
   // Greedy selection: each cut splits the current segments by its side; refused when a segment
   // would fall below the minimum area or the count would pass k.
@@ -453,13 +501,12 @@ ConsensusCutResult segmentConnected(const Surface& surface, int k, const Consens
   int segments = 1;
   std::vector<int> next(n);
   std::vector<double> segmentArea;
-  for (const ConsensusCut& cut : cuts)
+  for (const Bits& side : ranked.sides)
   {
     if (segments >= k)
     {
       break;
     }
-    const Bits& side = candidates[cut.representative].side;
     std::vector<int> map(static_cast<std::size_t>(segments) * 2, -1);
     int count = 0;
     segmentArea.clear();

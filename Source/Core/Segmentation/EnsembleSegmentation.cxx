@@ -114,7 +114,7 @@ std::vector<WeightedPartition> memberPartitions(
     }
   };
   vote(options.consensusCutsWeight, [&] { return segmentByConsensusCuts(surface, k, options.consensusCuts).labels; });
-  vote(options.spectralWeight, [&] { return segmentSpectrally(graph, k, options.spectral).labels; });
+  vote(options.spectralWeight, [&] { return segmentSpectrally(surface, k, options.spectral).labels; });
   vote(options.convexFloodingWeight, [&] {
     ConvexFloodingOptions flooding = options.convexFlooding;
     flooding.segmentCount = k;

@@ -1,9 +1,11 @@
 // Spectral face clustering on a patch graph: distances, affinity, leading eigenvectors, k-means in the embedding.
 #include "Segmentation/SpectralSegmentation.h"
 
+#include "CacheKey.h"
 #include "Error.h"
 #include "Mesh/ShortestPaths.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
+#include "Surface/Surface.h"
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -12,9 +14,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <string>
 
 namespace kerf
 {
@@ -96,20 +100,59 @@ std::vector<int> clusterEmbedding(
   return label;
 }
 
-SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
+// Patches: Garland et al.'s clusters of `tree` cut at options.patchCount, or the faces themselves on
+// meshes of at most that many.
+std::vector<int> patchesOf(
+  int n, const SpectralSegmentationOptions& options, const std::function<FaceClusterHierarchy()>& tree)
+{
+  std::vector<int> patch(n);
+  if (n > options.patchCount)
+  {
+    patch = cutHierarchyAtCount(tree(), options.patchCount);
+  }
+  else
+  {
+    std::iota(patch.begin(), patch.end(), 0);
+  }
+  return patch;
+}
+
+// What segmentConnected reads that does not depend on k: the patches, their affinity and areas.
+struct SpectralPreparation
+{
+  std::vector<int> patch;
+  Eigen::MatrixXd affinity; ///< empty with a single patch
+  std::vector<double> area;
+  int patches = 0;
+};
+
+SpectralPreparation prepare(
+  const FaceGraph& graph, const std::vector<int>& patch, const SpectralSegmentationOptions& options)
+{
+  SpectralPreparation prepared;
+  prepared.patch = patch;
+  prepared.patches = *std::max_element(patch.begin(), patch.end()) + 1;
+  if (prepared.patches > 1)
+  {
+    prepared.affinity = spectralAffinity(graph, patch, options, prepared.area);
+  }
+  return prepared;
+}
+
+SpectralSegmentationResult segmentConnected(const FaceGraph& graph, const SpectralPreparation& prepared, int k)
 {
   const int n = graph.faceCount();
   SpectralSegmentationResult result;
-  const std::vector<int> patch = spectralPatches(graph, options);
-  const int m = *std::max_element(patch.begin(), patch.end()) + 1;
+  const std::vector<int>& patch = prepared.patch;
+  const std::vector<double>& area = prepared.area;
+  const Eigen::MatrixXd& affinity = prepared.affinity;
+  const int m = prepared.patches;
   result.patches = m;
   if (k == 1 || m == 1)
   {
     result.labels.assign(n, 0);
     return result;
   }
-  std::vector<double> area;
-  const Eigen::MatrixXd affinity = spectralAffinity(graph, patch, options, area);
   const int dimensions = std::min(k, m);
   Eigen::VectorXd values;
   Eigen::MatrixXd embedding = leadingEigenvectors(affinity, dimensions, values);
@@ -134,18 +177,8 @@ SpectralSegmentationResult segmentConnected(const FaceGraph& graph, int k, const
 
 std::vector<int> spectralPatches(const FaceGraph& graph, const SpectralSegmentationOptions& options)
 {
-  const int n = graph.faceCount();
-  // Patches: Garland et al.'s clusters, or the faces themselves on small meshes.
-  std::vector<int> patch(n);
-  if (n > options.patchCount)
-  {
-    patch = cutHierarchyAtCount(buildFaceClusterHierarchy(graph, HierarchicalClusteringOptions()), options.patchCount);
-  }
-  else
-  {
-    std::iota(patch.begin(), patch.end(), 0);
-  }
-  return patch;
+  return patchesOf(graph.faceCount(), options,
+    [&graph]() { return buildFaceClusterHierarchy(graph, HierarchicalClusteringOptions()); });
 }
 
 Eigen::MatrixXd spectralAffinity(const FaceGraph& graph, const std::vector<int>& patch,
@@ -251,9 +284,11 @@ Eigen::MatrixXd spectralAffinity(const FaceGraph& graph, const std::vector<int>&
   return affinity;
 }
 
-SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
+namespace
 {
-  checkSegmentCount(k, graph.faceCount());
+void checkSpectralOptions(int k, int faces, const SpectralSegmentationOptions& options)
+{
+  checkSegmentCount(k, faces);
   if (!(options.geodesicWeight >= 0.0 && options.geodesicWeight <= 1.0) ||
     !(options.convexAngleWeight >= 0.0 && options.convexAngleWeight <= 1.0))
   {
@@ -263,17 +298,53 @@ SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, cons
   {
     throw Error("the spectral affinity needs at least 2 patches");
   }
+}
+
+SpectralSegmentationResult segmentGraph(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
+{
+  return segmentConnected(graph, prepare(graph, spectralPatches(graph, options), options), k);
+}
+} // namespace
+
+SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options)
+{
+  checkSpectralOptions(k, graph.faceCount(), options);
   if (graph.componentCount() == 1)
   {
-    return segmentConnected(graph, k, options);
+    return segmentGraph(graph, k, options);
   }
   SpectralSegmentationResult result;
   result.labels = segmentComponents(graph, k, [&](const TriangleMesh& part, int partK) {
-    const SpectralSegmentationResult partResult = segmentConnected(FaceGraph(part), partK, options);
+    const SpectralSegmentationResult partResult = segmentGraph(FaceGraph(part), partK, options);
     result.patches += partResult.patches;
     return partResult.labels;
   });
   return result;
+}
+
+SpectralSegmentationResult segmentSpectrally(const Surface& surface, int k, const SpectralSegmentationOptions& options)
+{
+  const FaceGraph& graph = faceGraph(surface);
+  checkSpectralOptions(k, graph.faceCount(), options);
+  if (graph.componentCount() > 1)
+  {
+    SpectralSegmentationResult result;
+    result.labels = segmentSurfaceComponents(surface, k, [&](const Surface& part, int partK) {
+      const SpectralSegmentationResult partResult = segmentSpectrally(part, partK, options);
+      result.patches += partResult.patches;
+      return partResult.labels;
+    });
+    return result;
+  }
+  // The patches come from the surface's cached face-cluster tree, the one spectralPatches builds.
+  const std::string key = "spectral-affinity:delta=" + cacheKey(options.geodesicWeight) +
+    " eta=" + cacheKey(options.convexAngleWeight) + " patches=" + std::to_string(options.patchCount);
+  const SpectralPreparation& prepared = surface.derived<SpectralPreparation>(key, [&] {
+    const std::vector<int> patch = patchesOf(graph.faceCount(), options,
+      [&surface]() { return faceClusterHierarchy(surface, HierarchicalClusteringOptions()); });
+    return prepare(graph, patch, options);
+  });
+  return segmentConnected(graph, prepared, k);
 }
 
 namespace

@@ -10,6 +10,8 @@
 namespace kerf
 {
 
+class Surface;
+
 struct SpectralSegmentationOptions
 {
   /// delta of Dist = delta Geod / avg(Geod) + (1 - delta) Ang / avg(Ang). Default 0.03 (the
@@ -43,6 +45,11 @@ struct SpectralSegmentationResult
 /// Each dual-graph component is segmented apart (segmentComponents). Throws kerf::Error for k < 1,
 /// k > faces, weights outside [0, 1] or a patch count below 2.
 SpectralSegmentationResult segmentSpectrally(const FaceGraph& graph, int k, const SpectralSegmentationOptions& options);
+
+/// segmentSpectrally on a surface, the same labels bit for bit; the patches and their affinity,
+/// which do not depend on k, are kept on the surface (Surface::derived), so that a new k costs
+/// only the eigenvectors and the k-means (the ensemble choosing its count asks for several).
+SpectralSegmentationResult segmentSpectrally(const Surface& surface, int k, const SpectralSegmentationOptions& options);
 
 /// The patches segmentSpectrally forms its affinity on: per face, its cluster of
 /// buildFaceClusterHierarchy cut at options.patchCount clusters, or the face itself on a mesh of
