@@ -1093,13 +1093,18 @@ TEST(AutomaticSegmentation, WorkThatDoesNotDependOnKIsKeptOnTheSurface)
   EXPECT_EQ(nine.labels, freshNine.labels);
   EXPECT_EQ(nine.consensusCuts, freshNine.consensusCuts);
   EXPECT_EQ(nine.chosenCuts, freshNine.chosenCuts);
-  // k = 4 has 12 feature points: ranked anew.
-  (void)segmentByConsensusCuts(surface, 4, cuts);
+  // k = 4 has 12 feature points, the first 12 of the 16: ranked anew from the pairs' candidates
+  // already found (one item more, the ranking).
+  const ConsensusCutResult four = segmentByConsensusCuts(surface, 4, cuts);
   EXPECT_EQ(surface.computations(), afterCuts + 1);
+  EXPECT_EQ(four.labels, segmentByConsensusCuts(Surface(mesh), 4, cuts).labels);
+  EXPECT_EQ(four.featurePoints, 12);
+  EXPECT_EQ(four.fields, 66);
+  // Other options: other candidates and another ranking.
   ConsensusCutOptions otherPeaks;
   otherPeaks.peaksPerField = 2;
   (void)segmentByConsensusCuts(surface, 9, otherPeaks);
-  EXPECT_EQ(surface.computations(), afterCuts + 2);
+  EXPECT_EQ(surface.computations(), afterCuts + 3);
 }
 
 TEST(AutomaticSegmentation, LeadingEigenvectorsMatchTheFullDecomposition)

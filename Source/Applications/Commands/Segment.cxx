@@ -176,9 +176,9 @@ void writeSeg(const std::vector<long long>& labels, const std::string& file)
 std::string summary(const std::string& method, const std::string& file, const Segmented& result)
 {
   std::ostringstream line;
-  line << method << " segmentation of " << file << ": " << result.segments << (result.segments == 1 ? " segment over " : " segments over ")
-       << result.surface->GetNumberOfCells() << " triangles in " << std::fixed << std::setprecision(1)
-       << result.milliseconds << " ms";
+  line << method << " segmentation of " << file << ": " << result.segments
+       << (result.segments == 1 ? " segment over " : " segments over ") << result.surface->GetNumberOfCells()
+       << " triangles in " << std::fixed << std::setprecision(1) << result.milliseconds << " ms";
   return line.str();
 }
 

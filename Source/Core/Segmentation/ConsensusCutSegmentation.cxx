@@ -353,64 +353,129 @@ private:
   int VisitStamp = 0;
 };
 
-// Steps (1)-(4) for `pointCount` feature points: the candidate cuts of every pair's field,
-// grouped and ranked. They depend on k only through the feature-point count, so a surface keeps
-// them (Surface::derived) and the ensemble choosing its count computes them once for the counts
-// that share it.
+// Steps (1)-(3): the feature points, their potentials and each pair's candidate cuts. A count of p
+// feature points takes the first p of the farthest-point sampling, which adds one point at a time,
+// so the sampling runs once for options.maximumFeaturePoints and every count shares the pairs
+// among its points; each pair's candidates are found when first asked for, then kept.
+class FieldCandidates
+{
+public:
+  FieldCandidates(const Surface& surface, const ConsensusCutOptions& options)
+    : Owner(&surface)
+    , Options(options)
+  {
+    const TriangleMesh& mesh = surface.mesh();
+    this->Points = farthestPoints(mesh, std::max(2, options.maximumFeaturePoints));
+    LaplacianWeightOptions weightOptions;
+    weightOptions.weighting = options.weighting;
+    this->Potentials = unitPotentials(mesh, surface.laplacianWeights(weightOptions).weights, this->Points);
+    const std::size_t p = this->Points.size();
+    this->Pairs.resize(p * p);
+    this->Found.assign(p * p, 0);
+  }
+
+  int pointCount() const { return static_cast<int>(this->Points.size()); }
+
+  /// The candidates of field f_ij (i < j), each with `field` -1 (the caller numbers the fields).
+  const std::vector<Candidate>& pair(int i, int j) const
+  {
+    const std::size_t slot = static_cast<std::size_t>(i) * this->Points.size() + static_cast<std::size_t>(j);
+    if (!this->Found[slot])
+    {
+      this->Pairs[slot] = this->find(i, j);
+      this->Found[slot] = 1;
+    }
+    return this->Pairs[slot];
+  }
+
+private:
+  std::vector<Candidate> find(int i, int j) const
+  {
+    const TriangleMesh& mesh = this->Owner->mesh();
+    const FaceGraph& graph = faceGraph(*this->Owner);
+    const ConsensusCutOptions& options = this->Options;
+    const double minimumArea = options.minimumSegmentArea * graph.totalArea();
+    std::vector<double> sorted;
+    SideFinder sides(graph);
+    std::vector<Candidate> candidates;
+    const std::vector<double> field =
+      clippedField(mesh, this->Potentials[i], this->Potentials[j], options.clipQuantile, sorted);
+    const std::vector<double> gradient = faceGradientMagnitudes(mesh, field);
+    const std::vector<IsovalueScore> scores = scoreIsovalues(mesh, field, gradient, options.isovaluesPerField);
+    sides.setField(field);
+    // The peaks of the score along the isovalues, the strongest first (score times length^gamma).
+    std::vector<std::pair<double, std::size_t>> peaks;
+    for (std::size_t s = 0; s < scores.size(); ++s)
+    {
+      const double left = s > 0 ? scores[s - 1].score : 0.0;
+      const double right = s + 1 < scores.size() ? scores[s + 1].score : 0.0;
+      if (scores[s].score > left && scores[s].score >= right)
+      {
+        peaks.push_back({ -scores[s].score * std::pow(scores[s].length, options.lengthExponent), s });
+      }
+    }
+    std::sort(peaks.begin(), peaks.end());
+    peaks.resize(std::min<std::size_t>(peaks.size(), static_cast<std::size_t>(options.peaksPerField)));
+    for (const auto& peak : peaks)
+    {
+      const std::size_t s = peak.second;
+      const std::vector<Isoline> isolines = extractIsolines(mesh, field, scores[s].value);
+      for (const Isoline& line : isolines)
+      {
+        Candidate candidate;
+        if (!sides.smallerSide(scores[s].value, line, candidate) || candidate.sideArea < minimumArea)
+        {
+          continue;
+        }
+        // Unit current: score x length is the cut's mean resistance per unit length.
+        candidate.score = isolineScore({ line }, gradient) * std::pow(line.length, options.lengthExponent);
+        candidates.push_back(std::move(candidate));
+      }
+    }
+    return candidates;
+  }
+
+  const Surface* Owner;
+  ConsensusCutOptions Options;
+  std::vector<int> Points;
+  std::vector<std::vector<double>> Potentials;
+  mutable std::vector<std::vector<Candidate>> Pairs;
+  mutable std::vector<char> Found;
+};
+
+// The key of every option the candidates and their ranking read (the walk's is applied after).
+std::string rankingKey(const ConsensusCutOptions& options)
+{
+  return "weighting=" + std::to_string(static_cast<int>(options.weighting)) +
+    " points=" + std::to_string(options.maximumFeaturePoints) +
+    " isovalues=" + std::to_string(options.isovaluesPerField) + " peaks=" + std::to_string(options.peaksPerField) +
+    " clip=" + cacheKey(options.clipQuantile) + " same=" + cacheKey(options.sameCutTolerance) +
+    " area=" + cacheKey(options.minimumSegmentArea) + " length=" + cacheKey(options.lengthExponent) +
+    " areaExponent=" + cacheKey(options.areaExponent) + " vote=" + cacheKey(options.voteExponent);
+}
+
+// Step (4) for `pointCount` feature points: the candidate cuts of every pair's field, grouped and
+// ranked. They depend on k only through the feature-point count, so a surface keeps them
+// (Surface::derived) and the ensemble choosing its count computes them once for the counts that
+// share it.
 RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOptions& options)
 {
-  const TriangleMesh& mesh = surface.mesh();
   const FaceGraph& graph = faceGraph(surface);
+  const FieldCandidates& found = surface.derived<FieldCandidates>(
+    "consensus-cut-candidates:" + rankingKey(options), [&] { return FieldCandidates(surface, options); });
   RankedCuts ranked;
-  const std::vector<int> points = farthestPoints(mesh, std::max(2, pointCount));
-  ranked.featurePoints = static_cast<int>(points.size());
-  LaplacianWeightOptions weightOptions;
-  weightOptions.weighting = options.weighting;
-  const std::vector<std::vector<double>> potentials =
-    unitPotentials(mesh, surface.laplacianWeights(weightOptions).weights, points);
-
-  const double minimumArea = options.minimumSegmentArea * graph.totalArea();
+  const int points = std::min(std::max(2, pointCount), found.pointCount());
+  ranked.featurePoints = points;
   std::vector<Candidate> candidates;
-  std::vector<double> sorted;
-  SideFinder sides(graph);
-  for (std::size_t i = 0; i < points.size(); ++i)
+  for (int i = 0; i < points; ++i)
   {
-    for (std::size_t j = i + 1; j < points.size(); ++j)
+    for (int j = i + 1; j < points; ++j)
     {
       const int fieldIndex = ranked.fields++;
-      const std::vector<double> field = clippedField(mesh, potentials[i], potentials[j], options.clipQuantile, sorted);
-      const std::vector<double> gradient = faceGradientMagnitudes(mesh, field);
-      const std::vector<IsovalueScore> scores = scoreIsovalues(mesh, field, gradient, options.isovaluesPerField);
-      sides.setField(field);
-      // The peaks of the score along the isovalues, the strongest first (score times length^gamma).
-      std::vector<std::pair<double, std::size_t>> peaks;
-      for (std::size_t s = 0; s < scores.size(); ++s)
+      for (const Candidate& candidate : found.pair(i, j))
       {
-        const double left = s > 0 ? scores[s - 1].score : 0.0;
-        const double right = s + 1 < scores.size() ? scores[s + 1].score : 0.0;
-        if (scores[s].score > left && scores[s].score >= right)
-        {
-          peaks.push_back({ -scores[s].score * std::pow(scores[s].length, options.lengthExponent), s });
-        }
-      }
-      std::sort(peaks.begin(), peaks.end());
-      peaks.resize(std::min<std::size_t>(peaks.size(), static_cast<std::size_t>(options.peaksPerField)));
-      for (const auto& peak : peaks)
-      {
-        const std::size_t s = peak.second;
-        const std::vector<Isoline> isolines = extractIsolines(mesh, field, scores[s].value);
-        for (const Isoline& line : isolines)
-        {
-          Candidate candidate;
-          if (!sides.smallerSide(scores[s].value, line, candidate) || candidate.sideArea < minimumArea)
-          {
-            continue;
-          }
-          // Unit current: score x length is the cut's mean resistance per unit length.
-          candidate.score = isolineScore({ line }, gradient) * std::pow(line.length, options.lengthExponent);
-          candidate.field = fieldIndex;
-          candidates.push_back(std::move(candidate));
-        }
+        candidates.push_back(candidate);
+        candidates.back().field = fieldIndex;
       }
     }
   }
@@ -464,14 +529,8 @@ RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOp
 
 const RankedCuts& rankedCuts(const Surface& surface, int pointCount, const ConsensusCutOptions& options)
 {
-  // Every option the ranking reads (the walk's and the selection's are applied after it).
-  const std::string key = "consensus-cuts:points=" + std::to_string(pointCount) +
-    " weighting=" + std::to_string(static_cast<int>(options.weighting)) +
-    " isovalues=" + std::to_string(options.isovaluesPerField) + " peaks=" + std::to_string(options.peaksPerField) +
-    " clip=" + cacheKey(options.clipQuantile) + " same=" + cacheKey(options.sameCutTolerance) +
-    " area=" + cacheKey(options.minimumSegmentArea) + " length=" + cacheKey(options.lengthExponent) +
-    " areaExponent=" + cacheKey(options.areaExponent) + " vote=" + cacheKey(options.voteExponent);
-  return surface.derived<RankedCuts>(key, [&] { return rankCuts(surface, pointCount, options); });
+  return surface.derived<RankedCuts>("consensus-cuts:count=" + std::to_string(pointCount) + " " + rankingKey(options),
+    [&] { return rankCuts(surface, pointCount, options); });
 }
 
 ConsensusCutResult segmentConnected(const Surface& surface, int k, const ConsensusCutOptions& options)
