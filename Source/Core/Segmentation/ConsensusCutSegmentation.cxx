@@ -35,7 +35,6 @@ struct Candidate
   Vector3 centroid = Vector3::Zero(); ///< of the side, area-weighted
   double extent = 0.0;                ///< the side's bounding-box diagonal
   double score = 0.0;
-  int field = -1;
 };
 
 // A group of candidates that split the surface the same way.
@@ -363,6 +362,7 @@ public:
   FieldCandidates(const Surface& surface, const ConsensusCutOptions& options)
     : Owner(&surface)
     , Options(options)
+    , Sides(faceGraph(surface))
   {
     const TriangleMesh& mesh = surface.mesh();
     this->Points = farthestPoints(mesh, std::max(2, options.maximumFeaturePoints));
@@ -376,7 +376,7 @@ public:
 
   int pointCount() const { return static_cast<int>(this->Points.size()); }
 
-  /// The candidates of field f_ij (i < j), each with `field` -1 (the caller numbers the fields).
+  /// The candidates of field f_ij (i < j).
   const std::vector<Candidate>& pair(int i, int j) const
   {
     const std::size_t slot = static_cast<std::size_t>(i) * this->Points.size() + static_cast<std::size_t>(j);
@@ -395,11 +395,10 @@ private:
     const FaceGraph& graph = faceGraph(*this->Owner);
     const ConsensusCutOptions& options = this->Options;
     const double minimumArea = options.minimumSegmentArea * graph.totalArea();
-    std::vector<double> sorted;
-    SideFinder sides(graph);
+    SideFinder& sides = this->Sides;
     std::vector<Candidate> candidates;
     const std::vector<double> field =
-      clippedField(mesh, this->Potentials[i], this->Potentials[j], options.clipQuantile, sorted);
+      clippedField(mesh, this->Potentials[i], this->Potentials[j], options.clipQuantile, this->Sorted);
     const std::vector<double> gradient = faceGradientMagnitudes(mesh, field);
     const std::vector<IsovalueScore> scores = scoreIsovalues(mesh, field, gradient, options.isovaluesPerField);
     sides.setField(field);
@@ -441,6 +440,8 @@ private:
   std::vector<std::vector<double>> Potentials;
   mutable std::vector<std::vector<Candidate>> Pairs;
   mutable std::vector<char> Found;
+  mutable SideFinder Sides;           // scratch of the floods, shared by the pairs
+  mutable std::vector<double> Sorted; // scratch of the quantiles
 };
 
 // The key of every option the candidates and their ranking read (the walk's is applied after).
@@ -466,7 +467,9 @@ RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOp
   RankedCuts ranked;
   const int points = std::min(std::max(2, pointCount), found.pointCount());
   ranked.featurePoints = points;
-  std::vector<Candidate> candidates;
+  // The candidates stay where they were found; fieldOf numbers the fields of this count.
+  std::vector<const Candidate*> candidates;
+  std::vector<int> fieldOf;
   for (int i = 0; i < points; ++i)
   {
     for (int j = i + 1; j < points; ++j)
@@ -474,8 +477,8 @@ RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOp
       const int fieldIndex = ranked.fields++;
       for (const Candidate& candidate : found.pair(i, j))
       {
-        candidates.push_back(candidate);
-        candidates.back().field = fieldIndex;
+        candidates.push_back(&candidate);
+        fieldOf.push_back(fieldIndex);
       }
     }
   }
@@ -484,15 +487,16 @@ RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOp
   // Group candidates that split the surface alike, best score first.
   std::vector<int> order(candidates.size());
   std::iota(order.begin(), order.end(), 0);
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return candidates[a].score > candidates[b].score; });
+  std::stable_sort(
+    order.begin(), order.end(), [&](int a, int b) { return candidates[a]->score > candidates[b]->score; });
   std::vector<ConsensusCut> cuts;
   for (int c : order)
   {
-    const Candidate& candidate = candidates[c];
+    const Candidate& candidate = *candidates[c];
     ConsensusCut* home = nullptr;
     for (ConsensusCut& cut : cuts)
     {
-      const Candidate& r = candidates[cut.representative];
+      const Candidate& r = *candidates[cut.representative];
       const double tolerance = options.sameCutTolerance * std::min(r.sideArea, candidate.sideArea);
       if (std::abs(r.sideArea - candidate.sideArea) <= tolerance &&
         (r.centroid - candidate.centroid).norm() <= options.sameCutTolerance * std::max(r.extent, candidate.extent) &&
@@ -507,22 +511,22 @@ RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOp
       cuts.push_back({ c, candidate.score, {}, 0.0 });
       home = &cuts.back();
     }
-    if (std::find(home->fields.begin(), home->fields.end(), candidate.field) == home->fields.end())
+    if (std::find(home->fields.begin(), home->fields.end(), fieldOf[c]) == home->fields.end())
     {
-      home->fields.push_back(candidate.field);
+      home->fields.push_back(fieldOf[c]);
     }
   }
   for (ConsensusCut& cut : cuts)
   {
     cut.rank = cut.bestScore * std::pow(static_cast<double>(cut.fields.size()), options.voteExponent) *
-      std::pow(candidates[cut.representative].sideArea / graph.totalArea(), options.areaExponent);
+      std::pow(candidates[cut.representative]->sideArea / graph.totalArea(), options.areaExponent);
   }
   std::stable_sort(
     cuts.begin(), cuts.end(), [](const ConsensusCut& a, const ConsensusCut& b) { return a.rank > b.rank; });
   ranked.consensusCuts = static_cast<int>(cuts.size());
   for (const ConsensusCut& cut : cuts)
   {
-    ranked.sides.push_back(std::move(candidates[cut.representative].side));
+    ranked.sides.push_back(candidates[cut.representative]->side);
   }
   return ranked;
 }

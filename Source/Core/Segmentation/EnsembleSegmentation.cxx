@@ -459,18 +459,10 @@ constexpr int HullDepthSamples = 2000;
 // largestHullDepthFraction of the vertices that faces use (a mesh may hold points no face uses).
 double hullDepthOfFaces(const TriangleMesh& mesh)
 {
-  std::vector<char> used(mesh.vertexCount(), 0);
-  for (int f = 0; f < mesh.faceCount(); ++f)
-  {
-    for (int v : mesh.triangle(f))
-    {
-      used[v] = 1;
-    }
-  }
   std::vector<Vector3> points;
   for (int v = 0; v < mesh.vertexCount(); ++v)
   {
-    if (used[v])
+    if (!mesh.vertexFaces(v).empty())
     {
       points.push_back(mesh.point(v));
     }
