@@ -36,6 +36,14 @@
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory>
+#include <vector>
+
+class vtkFieldData;
+namespace kerf
+{
+class Surface;
+struct EnsembleSegmentationOptions;
+}
 
 class KERFFILTERS_EXPORT vtkEnsembleSegmentation : public vtkPolyDataAlgorithm
 {
@@ -58,6 +66,21 @@ public:
   vtkSetMacro(ChooseSegmentCount, bool);
   vtkGetMacro(ChooseSegmentCount, bool);
   vtkBooleanMacro(ChooseSegmentCount, bool);
+  ///@}
+
+  ///@{
+  /// Build one merge tree for every count instead of an ensemble at SegmentCount: each member runs
+  /// at every count from MinimumSegmentCount to MaximumSegmentCount and all those segmentations vote
+  /// in one co-association, whose average-linkage tree is cut at SegmentCount. The tree is kept, so
+  /// a new SegmentCount (or ChooseSegmentCount, which then takes the cut nearest to all the
+  /// members) only re-labels: field data "Work" says "hierarchy" or "relabel". The output also
+  /// carries the tree: "MergeFirst", "MergeSecond" (the atoms naming the two groups of each merge,
+  /// the second joining the first; the atoms are the segments at SegmentCount = Atoms with
+  /// BoundaryBand 0) and "MergeLinkage" (each merge's mean co-association), and "CountScores".
+  /// SegmentCount above the atoms gives the atoms. Default off.
+  vtkSetMacro(UseHierarchy, bool);
+  vtkGetMacro(UseHierarchy, bool);
+  vtkBooleanMacro(UseHierarchy, bool);
   ///@}
 
   ///@{
@@ -158,6 +181,7 @@ protected:
 
   int SegmentCount = 6;
   bool ChooseSegmentCount = false;
+  bool UseHierarchy = false;
   int MinimumSegmentCount = 5;
   int MaximumSegmentCount = 11;
   double ConvexTolerance = 0.01;
@@ -176,6 +200,9 @@ protected:
 private:
   vtkEnsembleSegmentation(const vtkEnsembleSegmentation&) = delete;
   void operator=(const vtkEnsembleSegmentation&) = delete;
+
+  std::vector<int> CutHierarchy(
+    const kerf::Surface& surface, const kerf::EnsembleSegmentationOptions& options, vtkFieldData* fieldData);
 
   struct Internals;
   std::unique_ptr<Internals> State;

@@ -18,13 +18,22 @@
 //                                    each time (nothing cached): the flagship's whole cost
 //   BM_EnsembleChoosingCount/22k     kerf::segmentByEnsembleChoosingCount with its defaults
 //                                    (counts 5 to 11), beside the ensemble at one count
+//   BM_EnsembleHierarchy/22k         kerf::ensembleHierarchy with its defaults (counts 5 to 11) and
+//                                    the cut at the count it chooses: the slider's set-up, beside
+//                                    the ensemble choosing its count
 //   BM_ConsensusCutSegmentation/22k  kerf::segmentByConsensusCuts the same way, its costliest
 //                                    member and the reference its cost is quoted against
 //   BM_BoundaryBandCut/22k           kerf::refineSegmentBoundaries of the ensemble's labels
 //                                    without its band (computed once): the band's own cost
 //   BM_CoreExtraction/22k            kerf::segmentByCoreExtraction with its defaults (it chooses
 //                                    its own number of parts), beside the ensemble in the same run
-// and BM_CoreExtraction/100k, beside BM_FaceClusterHierarchy/100k, on the 99,372-triangle dumbbell.
+// and BM_CoreExtraction/100k, beside BM_FaceClusterHierarchy/100k, on the 99,372-triangle dumbbell,
+// where also
+//   BM_EnsembleHierarchySlide/100k   a new count on the built ensemble hierarchy (counts 5 to 11,
+//                                    built once): kerf::cutEnsembleHierarchy at k = 12, 13, .., 20 in
+//                                    turn, one per iteration, with the boundary refinement
+//   BM_EnsembleHierarchySlideKept/100k  the same at k = 5, .., 11, whose refined cuts the build kept
+//   BM_EnsembleHierarchyCut/100k     k = 12, .., 20 without the refinement (band 0): the tree's cut
 // The meshes are built once per size, outside the timed loops.
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
@@ -187,6 +196,74 @@ void choosingCountBenchmark(benchmark::State& state)
     setCounters);
 }
 
+void hierarchyBenchmark(benchmark::State& state)
+{
+  kerf::benchmarks::RunOnScene(
+    state, []() -> const ClusterScene& { return sceneOfSize(EnsembleSize); },
+    [](benchmark::State& st, const ClusterScene& scene) {
+      int segments = 0;
+      const kerf::EnsembleSegmentationOptions options;
+      for (auto _ : st)
+      {
+        const kerf::Surface surface(scene.mesh);
+        const kerf::EnsembleHierarchy hierarchy = kerf::ensembleHierarchy(surface, 5, 11, options);
+        const kerf::EnsembleSegmentationResult result =
+          kerf::cutEnsembleHierarchy(surface, hierarchy, hierarchy.chosenCount, options.refinement);
+        segments = result.segmentCount;
+        benchmark::DoNotOptimize(result.labels.data());
+      }
+      st.counters["segments"] = segments;
+    },
+    setCounters);
+}
+
+// The ensemble hierarchy of a scene, built once per size.
+const kerf::EnsembleHierarchy& hierarchyOf(const ClusterSize& size, const kerf::Surface& surface)
+{
+  static std::map<std::string, kerf::EnsembleHierarchy> built;
+  const auto at = built.find(size.label);
+  if (at != built.end())
+  {
+    return at->second;
+  }
+  return built[size.label] = kerf::ensembleHierarchy(surface, 5, 11, kerf::EnsembleSegmentationOptions());
+}
+
+void hierarchySlideBenchmark(benchmark::State& state, const ClusterSize& size, bool refined, int lowest, int highest)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [&]() -> const ClusterScene& { return sceneOfSize(size); },
+    [&size, refined, lowest, highest](benchmark::State& st, const ClusterScene& scene) {
+      static std::map<std::string, std::unique_ptr<kerf::Surface>> surfaces;
+      std::unique_ptr<kerf::Surface>& surface = surfaces[size.label];
+      if (!surface)
+      {
+        surface = std::make_unique<kerf::Surface>(scene.mesh);
+      }
+      const kerf::EnsembleHierarchy& hierarchy = hierarchyOf(size, *surface);
+      kerf::BoundaryRefinementOptions refinement;
+      if (!refined)
+      {
+        refinement.bandWidth = 0.0;
+      }
+      int k = lowest;
+      int wrong = 0;
+      for (auto _ : st)
+      {
+        const kerf::EnsembleSegmentationResult result = kerf::cutEnsembleHierarchy(*surface, hierarchy, k, refinement);
+        wrong += result.segmentCount != k ? 1 : 0;
+        benchmark::DoNotOptimize(result.labels.data());
+        k = k == highest ? lowest : k + 1;
+      }
+      st.counters["atoms"] = hierarchy.consensus.atoms;
+      if (wrong > 0)
+      {
+        kerf::benchmarks::Fail(st, std::to_string(wrong) + " cuts gave another number of segments than asked");
+      }
+    },
+    setCounters);
+}
+
 void bandCutBenchmark(benchmark::State& state)
 {
   kerf::benchmarks::RunOnScene(
@@ -236,14 +313,20 @@ namespace benchmarks
 
 void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
 {
-  for (benchmark::internal::Benchmark* registered : {
-         benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false),
-         benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark),
-         benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true),
-         benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
-         benchmark::RegisterBenchmark("BM_CoreExtraction/22k", coreExtractionBenchmark, EnsembleSize),
-         benchmark::RegisterBenchmark("BM_CoreExtraction/100k", coreExtractionBenchmark, Sizes[0]),
-       })
+  for (benchmark::internal::Benchmark* registered :
+    {
+      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false),
+      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark),
+      benchmark::RegisterBenchmark("BM_EnsembleHierarchy/22k", hierarchyBenchmark),
+      benchmark::RegisterBenchmark("BM_EnsembleHierarchySlide/100k", hierarchySlideBenchmark, Sizes[0], true, 12, 20),
+      benchmark::RegisterBenchmark(
+        "BM_EnsembleHierarchySlideKept/100k", hierarchySlideBenchmark, Sizes[0], true, 5, 11),
+      benchmark::RegisterBenchmark("BM_EnsembleHierarchyCut/100k", hierarchySlideBenchmark, Sizes[0], false, 12, 20),
+      benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true),
+      benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
+      benchmark::RegisterBenchmark("BM_CoreExtraction/22k", coreExtractionBenchmark, EnsembleSize),
+      benchmark::RegisterBenchmark("BM_CoreExtraction/100k", coreExtractionBenchmark, Sizes[0]),
+    })
   {
     registered->Unit(benchmark::kMillisecond)->UseRealTime();
     if (useSizeMinimumTimes)

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace kerf
@@ -62,6 +63,24 @@ struct Fingers
     }
   }
 };
+
+/// A mesh and a copy of it moved by `offset`, as one mesh of two components (the copy's vertices and
+/// faces after the original's).
+inline TriangleMesh withMovedCopy(const TriangleMesh& one, const Vector3& offset)
+{
+  std::vector<Vector3> points = one.points();
+  std::vector<Triangle> triangles = one.triangles();
+  for (const Vector3& p : one.points())
+  {
+    points.push_back(p + offset);
+  }
+  const int first = one.vertexCount();
+  for (const Triangle& t : one.triangles())
+  {
+    triangles.push_back({ { t[0] + first, t[1] + first, t[2] + first } });
+  }
+  return TriangleMesh(std::move(points), std::move(triangles));
+}
 
 inline const Fingers& fingers()
 {

@@ -1026,18 +1026,7 @@ TEST(AutomaticSegmentation, CombinedPartitionsAndTheEnsembleRefuseBadInput)
 TEST(AutomaticSegmentation, EnsembleOnTwoComponents)
 {
   const TriangleMesh& one = lobes().surface->mesh();
-  std::vector<Vector3> points = one.points();
-  std::vector<Triangle> triangles = one.triangles();
-  for (const Vector3& p : one.points())
-  {
-    points.push_back(p + Vector3(5.0, 0.0, 0.0));
-  }
-  const int offset = one.vertexCount();
-  for (const Triangle& t : one.triangles())
-  {
-    triangles.push_back({ { t[0] + offset, t[1] + offset, t[2] + offset } });
-  }
-  const Surface both{ TriangleMesh(points, triangles) };
+  const Surface both{ test::withMovedCopy(one, Vector3(5.0, 0.0, 0.0)) };
   const EnsembleSegmentationResult result = segmentByEnsemble(both, 4, EnsembleSegmentationOptions());
   std::vector<int> parts = lobes().parts;
   for (int part : lobes().parts)

@@ -576,5 +576,67 @@ int TestAutomaticSegmentationFilters(int, char*[])
   convex->SetMaximumSegmentCount(sphere->GetNumberOfCells() + 1);
   convex->SetMinimumSegmentCount(sphere->GetNumberOfCells() - 30);
   ok &= CheckRefused(convex, sphere, "at most the number of faces");
+
+  // The hierarchy: built once (Work "hierarchy"), then a new SegmentCount or ChooseSegmentCount
+  // only re-labels; the tree is in the field data (Atoms - 1 merges on one component), the chosen
+  // count has the least of the three CountScores, and a new weight builds it again.
+  vtkNew<vtkEnsembleSegmentation> tree;
+  tree->SetInputData(dumbbell.surface);
+  tree->UseHierarchyOn();
+  tree->SetMinimumSegmentCount(2);
+  tree->SetMaximumSegmentCount(4);
+  tree->SetSegmentCount(2);
+  const auto treeWork = [&tree]() {
+    vtkStringArray* array = vtkStringArray::SafeDownCast(tree->GetOutput()->GetFieldData()->GetAbstractArray("Work"));
+    return array != nullptr ? array->GetValue(0) : std::string("(none)");
+  };
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(tree).empty());
+  ok &= KERF_CHECK(treeWork() == "hierarchy");
+  ok &= KERF_CHECK(FieldValue(tree->GetOutput(), "SegmentCount") == 2.0);
+  ok &= KERF_CHECK(FieldValue(tree->GetOutput(), "Members") == 15.0);
+  const std::vector<int> two = ReadLabels(tree->GetOutput(), "Segment");
+  const double treeError = RandIndexError(dumbbell, two);
+  std::cout << "Ensemble hierarchy on the dumbbell at 2: 1 - Rand index " << treeError << ", "
+            << FieldValue(tree->GetOutput(), "Atoms") << " atoms" << std::endl;
+  ok &= KERF_CHECK(treeError < 0.05);
+  vtkFieldData* treeData = tree->GetOutput()->GetFieldData();
+  for (const char* name : { "MergeFirst", "MergeSecond", "MergeLinkage" })
+  {
+    vtkDataArray* merges = treeData->GetArray(name);
+    ok &= KERF_CHECK(merges != nullptr && merges->GetNumberOfTuples() == FieldValue(tree->GetOutput(), "Atoms") - 1);
+  }
+  vtkDataArray* scoresArray = treeData->GetArray("CountScores");
+  std::vector<double> treeScores;
+  for (vtkIdType c = 0; scoresArray != nullptr && c < scoresArray->GetNumberOfTuples(); ++c)
+  {
+    treeScores.push_back(scoresArray->GetTuple1(c));
+  }
+  ok &= KERF_CHECK(treeScores.size() == 3);
+  tree->SetSegmentCount(3);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(tree).empty());
+  ok &= KERF_CHECK(treeWork() == "relabel");
+  ok &= KERF_CHECK(FieldValue(tree->GetOutput(), "SegmentCount") == 3.0);
+  tree->ChooseSegmentCountOn();
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(tree).empty());
+  ok &= KERF_CHECK(treeWork() == "relabel");
+  if (treeScores.size() == 3)
+  {
+    const auto best = std::min_element(treeScores.begin(), treeScores.end()) - treeScores.begin();
+    ok &= KERF_CHECK(FieldValue(tree->GetOutput(), "SegmentCount") == 2.0 + static_cast<double>(best));
+  }
+  tree->ChooseSegmentCountOff();
+  tree->SetSegmentCount(2);
+  tree->Update();
+  ok &= KERF_CHECK(treeWork() == "relabel");
+  ok &= KERF_CHECK(ReadLabels(tree->GetOutput(), "Segment") == two);
+  tree->SetWatershedWeight(0.0);
+  ok &= KERF_CHECK(kerf::test::UpdateAndCaptureError(tree).empty());
+  ok &= KERF_CHECK(treeWork() == "hierarchy");
+  ok &= KERF_CHECK(FieldValue(tree->GetOutput(), "Members") == 12.0);
+  tree->SetSegmentCount(0);
+  ok &= CheckRefused(tree, dumbbell.surface, "at least 1");
+  tree->SetSegmentCount(2);
+  tree->SetMinimumSegmentCount(5);
+  ok &= CheckRefused(tree, dumbbell.surface, "minimum");
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

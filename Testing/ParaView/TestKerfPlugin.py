@@ -331,7 +331,24 @@ class KerfPluginTest(unittest.TestCase):
         forced = int(servermanager.Fetch(whole).GetFieldData().GetArray("SegmentCount").GetValue(0))
         self.assertGreaterEqual(forced, 5)
         self.assertLessEqual(forced, 11)
-        for proxy in (whole, ball, chosen, recut, unbanded, alone, refined, cuts, ensemble):
+        # Hierarchy over the counts 8 to 9: built once, then the Segment Count slider re-labels
+        # (Work), every cut has the count asked for, and the tree is in the field data.
+        tree = simple.EnsembleSegmentation(Input=camel, UseHierarchy=1, MinimumSegmentCount=8,
+                                           MaximumSegmentCount=9, SegmentCount=8)
+        tree.UpdatePipeline()
+        treeData = servermanager.Fetch(tree).GetFieldData()
+        self.assertEqual(treeData.GetAbstractArray("Work").GetValue(0), "hierarchy")
+        atoms = int(treeData.GetArray("Atoms").GetValue(0))
+        self.assertEqual(treeData.GetArray("MergeFirst").GetNumberOfTuples(), atoms - 1)
+        self.assertEqual(treeData.GetArray("CountScores").GetNumberOfTuples(), 2)
+        self.assertEqual(int(labels(tree).max()) + 1, 8)
+        for k in (2, 5, 12):
+            tree.SegmentCount = k
+            tree.UpdatePipeline()
+            treeData = servermanager.Fetch(tree).GetFieldData()
+            self.assertEqual(treeData.GetAbstractArray("Work").GetValue(0), "relabel")
+            self.assertEqual(int(treeData.GetArray("SegmentCount").GetValue(0)), k)
+        for proxy in (tree, whole, ball, chosen, recut, unbanded, alone, refined, cuts, ensemble):
             simple.Delete(proxy)
 
     def test_geodesic_distance_on_a_sphere(self):

@@ -173,6 +173,18 @@ MethodOutput segmentWithEnsemble(const BenchmarkCase& c, const std::vector<int>*
   options.consensusCuts.walkDepth = parameters.number("walk-depth", options.consensusCuts.walkDepth);
   options.consensusCuts.maximumFeaturePoints =
     static_cast<int>(parameters.positive("points", options.consensusCuts.maximumFeaturePoints));
+  // hierarchy=1: one tree from the members at every count of the range, cut at the model's k (or,
+  // with choose-count=1, at the count the tree chooses).
+  if (parameters.number("hierarchy", 0.0) != 0.0)
+  {
+    const EnsembleHierarchy hierarchy = ensembleHierarchy(
+      *c.surface, parameters.wholeNumber("minimum-count", 5), parameters.wholeNumber("maximum-count", 11), options);
+    const bool choose = parameters.number("choose-count", 0.0) != 0.0;
+    return { cutEnsembleHierarchy(
+               *c.surface, hierarchy, choose ? hierarchy.chosenCount : requestedSegments(c), options.refinement)
+               .labels,
+      0 };
+  }
   // choose-count=1: the method chooses k itself (nSeg-ByModel.txt is not read).
   if (parameters.number("choose-count", 0.0) != 0.0)
   {
@@ -366,7 +378,8 @@ const std::vector<SegmentationMethod>& segmentationMethods()
       "the partition that consensus cuts, spectral clustering, convex flooding, k-means and the watershed agree on "
       "most (evidence accumulation, Fred and Jain 2005)",
       { "cuts", "spectral", "flooding", "k-means", "watershed", "clustering", "core-extraction", "area-weighted",
-        "band", "convex-weight", "walk-depth", "points", "choose-count", "minimum-count", "maximum-count" },
+        "band", "convex-weight", "walk-depth", "points", "choose-count", "minimum-count", "maximum-count",
+        "convex-tolerance", "hierarchy" },
       SegmentationMethod::Protocol::Automatic, segmentWithEnsemble },
     { "region-growing",
       "Easy Mesh Cutting's region growing from one simulated stroke per segment along its innermost faces, then "

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -42,8 +44,6 @@ BoundaryRefinementResult refineSegmentBoundaries(
   {
     return result;
   }
-  // At most as many segments as the input has labels (they need not be contiguous).
-  const int k = static_cast<int>(std::set<int>(labels.begin(), labels.end()).size());
 
   // Katz and Tal 2003: a dual edge's angular distance, eta (1 - cos alpha), eta < 1 where convex;
   // the cut's capacity falls with it, so boundaries take concave creases.
@@ -77,32 +77,70 @@ BoundaryRefinementResult refineSegmentBoundaries(
 
   std::vector<int>& current = result.labels;
   const double infinite = std::numeric_limits<double>::max() / 4.0;
-  std::vector<double> lengths(static_cast<std::size_t>(edgeCount));
+  // Each label's faces in face order, kept as the cuts move faces, so that a pair's work is
+  // proportional to its two segments rather than to the surface; an edge's length is finite only
+  // while both its faces are in the pair at hand.
+  std::map<int, std::vector<int>> facesOf;
+  std::vector<int>* facesOfLabel = &facesOf[labels[0]];
+  for (int f = 0; f < n; ++f)
+  {
+    if (labels[f] != labels[f > 0 ? f - 1 : 0])
+    {
+      facesOfLabel = &facesOf[labels[f]]; // labels come in runs: a map lookup per run
+    }
+    facesOfLabel->push_back(f);
+  }
+  // At most as many segments as the input has labels (they need not be contiguous).
+  const int k = static_cast<int>(facesOf.size());
+  std::vector<double> lengths(static_cast<std::size_t>(edgeCount), std::numeric_limits<double>::infinity());
   std::vector<int> node(static_cast<std::size_t>(n), -1);
+  std::vector<int> pairFaces, insideEdges;
   for (const auto& [a, b] : pairs)
   {
     const auto inPair = [&current, a = a, b = b](int f) { return current[f] == a || current[f] == b; };
+    std::vector<int>& facesA = facesOf[a];
+    std::vector<int>& facesB = facesOf[b];
+    pairFaces.clear();
+    std::merge(facesA.begin(), facesA.end(), facesB.begin(), facesB.end(), std::back_inserter(pairFaces));
     // The two segments' areas and the faces on their shared boundary, as earlier cuts left them.
     double areaA = 0.0, areaB = 0.0;
-    for (int f = 0; f < n; ++f)
+    for (int f : facesA)
     {
-      areaA += current[f] == a ? graph.area(f) : 0.0;
-      areaB += current[f] == b ? graph.area(f) : 0.0;
+      areaA += graph.area(f);
+    }
+    for (int f : facesB)
+    {
+      areaB += graph.area(f);
     }
     std::vector<int> boundary;
-    for (int e = 0; e < edgeCount; ++e)
+    insideEdges.clear();
+    for (int f : pairFaces)
     {
-      const DualEdge& edge = graph.edge(e);
-      const bool inside = inPair(edge.faces[0]) && inPair(edge.faces[1]);
-      lengths[e] = inside ? edge.centroidPath : std::numeric_limits<double>::infinity();
-      if (inside && current[edge.faces[0]] != current[edge.faces[1]])
+      for (int e : graph.faceEdges(f))
       {
-        boundary.push_back(edge.faces[0]);
-        boundary.push_back(edge.faces[1]);
+        const int g = e >= 0 ? graph.opposite(e, f) : -1;
+        if (g < f || !inPair(g))
+        {
+          continue; // each inside edge once, from its smaller face
+        }
+        lengths[e] = graph.edge(e).centroidPath;
+        insideEdges.push_back(e);
+        if (current[f] != current[g])
+        {
+          boundary.push_back(f);
+          boundary.push_back(g);
+        }
       }
     }
+    const auto resetLengths = [&lengths, &insideEdges]() {
+      for (int e : insideEdges)
+      {
+        lengths[e] = std::numeric_limits<double>::infinity();
+      }
+    };
     if (boundary.empty())
     {
+      resetLengths();
       continue; // an earlier cut took their contact away
     }
     std::sort(boundary.begin(), boundary.end());
@@ -113,9 +151,9 @@ BoundaryRefinementResult refineSegmentBoundaries(
     // Freed faces (within the band) are the cut's nodes; faces of the pair just outside it hold
     // the cut to their side.
     std::vector<int> nodes;
-    for (int f = 0; f < n; ++f)
+    for (int f : pairFaces)
     {
-      if (inPair(f) && distance[f] <= width)
+      if (distance[f] <= width)
       {
         node[f] = static_cast<int>(nodes.size());
         nodes.push_back(f);
@@ -170,6 +208,13 @@ BoundaryRefinementResult refineSegmentBoundaries(
     for (int f : nodes)
     {
       node[f] = -1;
+    }
+    resetLengths();
+    facesA.clear();
+    facesB.clear();
+    for (int f : pairFaces)
+    {
+      (current[f] == a ? facesA : facesB).push_back(f);
     }
   }
   result.labels = finalizeSegments(graph, current, k);

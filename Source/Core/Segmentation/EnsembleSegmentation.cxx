@@ -9,9 +9,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <iterator>
 #include <map>
 #include <queue>
+#include <string>
 #include <tuple>
 #include <utility>
 
@@ -101,34 +103,64 @@ void eraseSorted(std::vector<int>& list, int value)
   }
 }
 
+// A member of the ensemble: its vote and its segmentation of a connected surface into k parts.
+struct Member
+{
+  double weight;
+  std::function<std::vector<int>(const Surface&, int)> segment;
+};
+
+// A member's options with the count it segments into (the members that read it from their options).
+template <typename Options>
+Options withSegmentCount(Options options, int k)
+{
+  options.segmentCount = k;
+  return options;
+}
+
+// The members, in a fixed order (the order of their votes in the co-association).
+std::vector<Member> ensembleMembers(const EnsembleSegmentationOptions& options)
+{
+  return {
+    { options.consensusCutsWeight,
+      [&options](
+        const Surface& surface, int k) { return segmentByConsensusCuts(surface, k, options.consensusCuts).labels; } },
+    { options.spectralWeight,
+      [&options](const Surface& surface, int k) { return segmentSpectrally(surface, k, options.spectral).labels; } },
+    { options.convexFloodingWeight,
+      [&options](const Surface& surface, int k) {
+        return segmentByConvexFlooding(faceGraph(surface), withSegmentCount(options.convexFlooding, k)).labels;
+      } },
+    { options.kMeansWeight,
+      [&options](
+        const Surface& surface, int k) { return segmentByKMeans(faceGraph(surface), k, options.kMeans).labels; } },
+    { options.watershedWeight,
+      [&options](const Surface& surface, int k) {
+        return segmentByWatershed(faceGraph(surface), withSegmentCount(options.watershed, k)).labels;
+      } },
+    { options.faceClusteringWeight,
+      [&options](const Surface& surface, int k) {
+        return cutHierarchyAtCount(faceClusterHierarchy(surface, options.faceClustering), k);
+      } },
+    { options.coreExtractionWeight,
+      [&options](const Surface& surface, int) {
+        return segmentByCoreExtraction(faceGraph(surface), options.coreExtraction).labels;
+      } },
+  };
+}
+
 // The members' segmentations of a connected surface into k parts, those with a positive weight.
 std::vector<WeightedPartition> memberPartitions(
   const Surface& surface, int k, const EnsembleSegmentationOptions& options)
 {
-  const FaceGraph& graph = faceGraph(surface);
   std::vector<WeightedPartition> partitions;
-  auto vote = [&partitions](double weight, auto segment) {
-    if (weight > 0.0)
+  for (const Member& member : ensembleMembers(options))
+  {
+    if (member.weight > 0.0)
     {
-      partitions.push_back({ segment(), weight });
+      partitions.push_back({ member.segment(surface, k), member.weight });
     }
-  };
-  vote(options.consensusCutsWeight, [&] { return segmentByConsensusCuts(surface, k, options.consensusCuts).labels; });
-  vote(options.spectralWeight, [&] { return segmentSpectrally(surface, k, options.spectral).labels; });
-  vote(options.convexFloodingWeight, [&] {
-    ConvexFloodingOptions flooding = options.convexFlooding;
-    flooding.segmentCount = k;
-    return segmentByConvexFlooding(graph, flooding).labels;
-  });
-  vote(options.kMeansWeight, [&] { return segmentByKMeans(graph, k, options.kMeans).labels; });
-  vote(options.watershedWeight, [&] {
-    WatershedOptions watershed = options.watershed;
-    watershed.segmentCount = k;
-    return segmentByWatershed(graph, watershed).labels;
-  });
-  vote(options.faceClusteringWeight,
-    [&] { return cutHierarchyAtCount(faceClusterHierarchy(surface, options.faceClustering), k); });
-  vote(options.coreExtractionWeight, [&] { return segmentByCoreExtraction(graph, options.coreExtraction).labels; });
+  }
   return partitions;
 }
 
@@ -146,6 +178,18 @@ EnsembleSegmentationResult joinMembers(const Surface& surface, int k, const std:
   return result;
 }
 
+// The weighted mean 1 - Rand index of `labels` against the pooled partitions.
+double meanDistanceToPool(const std::vector<int>& labels, const std::vector<WeightedPartition>& pool)
+{
+  double score = 0.0, weight = 0.0;
+  for (const WeightedPartition& partition : pool)
+  {
+    score += partition.weight * randIndexError(labels, partition.labels);
+    weight += partition.weight;
+  }
+  return score / weight;
+}
+
 // The count of a connected surface chosen among [lowest, highest]: the ensemble at each count, and
 // the one whose partition is nearest, in mean 1 - Rand index, to every member's partition at every
 // count (a median partition of the members across counts; Fred and Jain 2005 pool partitions of
@@ -161,20 +205,10 @@ EnsembleSegmentationResult segmentConnectedChoosingCount(
     candidates.push_back(joinMembers(surface, k, partitions, options));
     pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
   }
-  double poolWeight = 0.0;
-  for (const WeightedPartition& partition : pool)
-  {
-    poolWeight += partition.weight;
-  }
   std::size_t best = 0;
   for (std::size_t c = 0; c < candidates.size(); ++c)
   {
-    double score = 0.0;
-    for (const WeightedPartition& partition : pool)
-    {
-      score += partition.weight * randIndexError(candidates[c].labels, partition.labels);
-    }
-    candidates[c].countScore = score / poolWeight;
+    candidates[c].countScore = meanDistanceToPool(candidates[c].labels, pool);
     if (candidates[c].countScore < candidates[best].countScore)
     {
       best = c;
@@ -211,11 +245,11 @@ void checkEnsembleOptions(const TriangleMesh& mesh, const EnsembleSegmentationOp
 
 } // namespace
 
-PartitionConsensus combinePartitions(
-  const FaceGraph& graph, const std::vector<WeightedPartition>& partitions, int k, bool areaWeighted)
+ConsensusHierarchy consensusHierarchy(
+  const FaceGraph& graph, const std::vector<WeightedPartition>& partitions, bool areaWeighted, int lowestCount)
 {
   const int n = graph.faceCount();
-  checkSegmentCount(k, n);
+  checkSegmentCount(lowestCount, n);
   if (partitions.empty())
   {
     throw Error("combining partitions needs at least one partition");
@@ -317,7 +351,8 @@ PartitionConsensus combinePartitions(
       insertSorted(groups[b].neighbours, a);
     }
   }
-  PartitionConsensus result;
+  ConsensusHierarchy result;
+  result.atomOfFace = atom;
   result.atoms = static_cast<int>(groups.size());
   if (areaWeighted)
   {
@@ -370,13 +405,8 @@ PartitionConsensus combinePartitions(
       }
     }
   }
-  std::vector<int> joined(groups.size());
-  for (std::size_t g = 0; g < groups.size(); ++g)
-  {
-    joined[g] = static_cast<int>(g);
-  }
   int live = static_cast<int>(groups.size());
-  while (live > k && !heap.empty())
+  while (live > lowestCount && !heap.empty())
   {
     const auto [linkage, smaller, minusA, minusB, versionA, versionB] = heap.top();
     heap.pop();
@@ -392,7 +422,8 @@ PartitionConsensus combinePartitions(
     kept.weight += gone.weight;
     ++kept.version;
     gone.alive = false;
-    joined[b] = a;
+    result.merges.push_back({ a, b });
+    result.linkages.push_back(linkage);
     for (int c : gone.neighbours)
     {
       if (c != a)
@@ -410,9 +441,37 @@ PartitionConsensus combinePartitions(
       push(a, c);
     }
     --live;
-    ++result.merges;
   }
-  // Each face takes the group its atom ended in (merged groups point at the group that kept them).
+  return result;
+}
+
+PartitionConsensus cutConsensusHierarchy(const FaceGraph& graph, const ConsensusHierarchy& hierarchy, int k)
+{
+  const int n = graph.faceCount();
+  checkSegmentCount(k, n);
+  if (static_cast<int>(hierarchy.atomOfFace.size()) != n)
+  {
+    throw Error("a consensus hierarchy of " + std::to_string(hierarchy.atomOfFace.size()) +
+      " faces cut on a surface of " + std::to_string(n));
+  }
+  // The first atoms - k merges (all when there are fewer), replayed: merged groups point at the
+  // group that kept them.
+  std::vector<int> joined(static_cast<std::size_t>(hierarchy.atoms));
+  for (int g = 0; g < hierarchy.atoms; ++g)
+  {
+    joined[static_cast<std::size_t>(g)] = g;
+  }
+  const std::size_t replayed =
+    std::min(hierarchy.merges.size(), static_cast<std::size_t>(std::max(hierarchy.atoms - k, 0)));
+  for (std::size_t m = 0; m < replayed; ++m)
+  {
+    joined[static_cast<std::size_t>(hierarchy.merges[m][1])] = hierarchy.merges[m][0];
+  }
+  PartitionConsensus result;
+  result.atoms = hierarchy.atoms;
+  result.merges = static_cast<int>(replayed);
+  const std::vector<int>& atom = hierarchy.atomOfFace;
+  // Each face takes the group its atom ended in.
   std::vector<int> labels(n);
   for (int f = 0; f < n; ++f)
   {
@@ -431,6 +490,13 @@ PartitionConsensus combinePartitions(
   }
   result.labels = finalizeSegments(graph, labels, k);
   return result;
+}
+
+PartitionConsensus combinePartitions(
+  const FaceGraph& graph, const std::vector<WeightedPartition>& partitions, int k, bool areaWeighted)
+{
+  checkSegmentCount(k, graph.faceCount());
+  return cutConsensusHierarchy(graph, consensusHierarchy(graph, partitions, areaWeighted, k), k);
 }
 
 EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, const EnsembleSegmentationOptions& options)
@@ -469,26 +535,25 @@ double hullDepthOfFaces(const TriangleMesh& mesh)
   }
   return largestHullDepthFraction(points, HullDepthSamples);
 }
-} // namespace
-
-EnsembleSegmentationResult segmentByEnsembleChoosingCount(
-  const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options)
+// The range of counts the members run at, the convex tolerance and the ensemble's options
+// (segmentByEnsembleChoosingCount, ensembleHierarchy).
+void checkCountChoice(const TriangleMesh& mesh, int minimumCount, int maximumCount,
+  const EnsembleSegmentationOptions& options, const std::string& what)
 {
-  const TriangleMesh& mesh = surface.mesh();
   checkSegmentCount(1, mesh.faceCount());
   if (minimumCount < 2 || maximumCount < minimumCount)
   {
-    throw Error("choosing the segment count needs 2 <= minimum <= maximum, got " + std::to_string(minimumCount) +
-      " and " + std::to_string(maximumCount));
+    throw Error(what + " needs 2 <= minimum <= maximum, got " + std::to_string(minimumCount) + " and " +
+      std::to_string(maximumCount));
   }
   if (maximumCount - minimumCount >= MaximumCountsToChoose)
   {
-    throw Error("choosing the segment count among " + std::to_string(maximumCount - minimumCount + 1) +
-      " counts: at most " + std::to_string(MaximumCountsToChoose) + " (the ensemble runs once per count)");
+    throw Error(what + " among " + std::to_string(maximumCount - minimumCount + 1) + " counts: at most " +
+      std::to_string(MaximumCountsToChoose) + " (the members run once per count)");
   }
   if (maximumCount > mesh.faceCount())
   {
-    throw Error("choosing the segment count up to " + std::to_string(maximumCount) + " on a surface of " +
+    throw Error(what + " up to " + std::to_string(maximumCount) + " on a surface of " +
       std::to_string(mesh.faceCount()) + " faces: the maximum count can be at most the number of faces");
   }
   if (!(options.convexTolerance >= 0.0 && options.convexTolerance < 1.0))
@@ -496,6 +561,14 @@ EnsembleSegmentationResult segmentByEnsembleChoosingCount(
     throw Error("the convex tolerance must be at least 0 and below 1, got " + std::to_string(options.convexTolerance));
   }
   checkEnsembleOptions(mesh, options);
+}
+} // namespace
+
+EnsembleSegmentationResult segmentByEnsembleChoosingCount(
+  const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  checkCountChoice(mesh, minimumCount, maximumCount, options, "choosing the segment count");
   const int components = faceGraph(surface).componentCount();
   // Each component chooses its own count within the range (at most its faces).
   EnsembleSegmentationResult result;
@@ -516,6 +589,67 @@ EnsembleSegmentationResult segmentByEnsembleChoosingCount(
     }
     return partResult.labels;
   });
+  result.segmentCount = 1 + *std::max_element(result.labels.begin(), result.labels.end());
+  return result;
+}
+
+EnsembleHierarchy ensembleHierarchy(
+  const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options)
+{
+  const TriangleMesh& mesh = surface.mesh();
+  checkCountChoice(mesh, minimumCount, maximumCount, options, "an ensemble hierarchy");
+  // Every member at every count, each dual-graph component with its share of the count.
+  std::vector<WeightedPartition> pool;
+  for (int count = minimumCount; count <= maximumCount; ++count)
+  {
+    for (const Member& member : ensembleMembers(options))
+    {
+      if (member.weight > 0.0)
+      {
+        pool.push_back({ segmentSurfaceComponents(surface, count, member.segment), member.weight });
+      }
+    }
+  }
+  EnsembleHierarchy hierarchy;
+  hierarchy.consensus = consensusHierarchy(faceGraph(surface), pool, options.areaWeighted);
+  hierarchy.members = static_cast<int>(pool.size());
+  hierarchy.minimumCount = minimumCount;
+  hierarchy.maximumCount = maximumCount;
+  // The count: the cut nearest to every member at every count (as segmentConnectedChoosingCount
+  // chooses among the ensembles at each count), or 1 for a connected surface without parts.
+  if (faceGraph(surface).componentCount() == 1 && options.convexTolerance > 0.0 &&
+    hullDepthOfFaces(mesh) < options.convexTolerance)
+  {
+    hierarchy.chosenCount = 1;
+    return hierarchy;
+  }
+  for (int count = minimumCount; count <= maximumCount; ++count)
+  {
+    hierarchy.refinedCuts.push_back(cutEnsembleHierarchy(surface, hierarchy, count, options.refinement).labels);
+    hierarchy.countScores.push_back(meanDistanceToPool(hierarchy.refinedCuts.back(), pool));
+  }
+  hierarchy.refinedWith = options.refinement;
+  hierarchy.chosenCount = minimumCount +
+    static_cast<int>(
+      std::min_element(hierarchy.countScores.begin(), hierarchy.countScores.end()) - hierarchy.countScores.begin());
+  return hierarchy;
+}
+
+EnsembleSegmentationResult cutEnsembleHierarchy(
+  const Surface& surface, const EnsembleHierarchy& hierarchy, int k, const BoundaryRefinementOptions& refinement)
+{
+  checkBoundaryRefinementOptions(refinement);
+  const FaceGraph& graph = faceGraph(surface);
+  const PartitionConsensus consensus = cutConsensusHierarchy(graph, hierarchy.consensus, k);
+  const std::size_t kept = static_cast<std::size_t>(k - hierarchy.minimumCount);
+  const bool scored = k >= hierarchy.minimumCount && kept < hierarchy.refinedCuts.size() &&
+    refinement.bandWidth == hierarchy.refinedWith.bandWidth &&
+    refinement.convexWeight == hierarchy.refinedWith.convexWeight;
+  EnsembleSegmentationResult result;
+  result.labels =
+    scored ? hierarchy.refinedCuts[kept] : refineSegmentBoundaries(graph, consensus.labels, refinement).labels;
+  result.members = hierarchy.members;
+  result.atoms = hierarchy.consensus.atoms;
   result.segmentCount = 1 + *std::max_element(result.labels.begin(), result.labels.end());
   return result;
 }

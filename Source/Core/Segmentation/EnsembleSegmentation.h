@@ -11,6 +11,7 @@
 #include "Segmentation/SpectralSegmentation.h"
 #include "Segmentation/WatershedSegmentation.h"
 
+#include <array>
 #include <vector>
 
 namespace kerf
@@ -47,6 +48,30 @@ struct PartitionConsensus
 /// negative label, or weights that are negative, not finite or all zero.
 PartitionConsensus combinePartitions(
   const FaceGraph& graph, const std::vector<WeightedPartition>& partitions, int k, bool areaWeighted = false);
+
+/// The merge tree behind combinePartitions: the atoms and every average-linkage merge, in order, so
+/// that the consensus at any count is a cut of one tree (cutConsensusHierarchy).
+struct ConsensusHierarchy
+{
+  std::vector<int> atomOfFace;            ///< per face, its atom, numbered by first face
+  int atoms = 0;                          ///< connected groups of faces that every partition keeps together
+  std::vector<std::array<int, 2>> merges; ///< per merge (a, b), a < b: the group of atom b joins that of atom a
+  std::vector<double> linkages;           ///< the mean co-association of each merge's two groups
+};
+
+/// combinePartitions' atoms and linkage, merging until `lowestCount` groups remain or no two
+/// groups share an edge (one group per dual-graph component): a group is named by its least atom.
+/// Throws as combinePartitions does, with lowestCount for k.
+ConsensusHierarchy consensusHierarchy(
+  const FaceGraph& graph, const std::vector<WeightedPartition>& partitions, bool areaWeighted, int lowestCount = 1);
+
+/// The consensus in at most k segments from a hierarchy: its first atoms - k merges (all of them
+/// when it has fewer), made at most k and numbered by first face as combinePartitions does; equal
+/// to combinePartitions at k whenever the hierarchy was merged down to k or below (above k, the
+/// groups left are merged as finalizeSegments merges). More segments than atoms cannot be cut: k
+/// above the atoms gives the atoms. Linear in the faces. Throws
+/// kerf::Error for k out of range or a hierarchy of another number of faces.
+PartitionConsensus cutConsensusHierarchy(const FaceGraph& graph, const ConsensusHierarchy& hierarchy, int k);
 
 struct EnsembleSegmentationOptions
 {
@@ -123,5 +148,47 @@ constexpr int MaximumCountsToChoose = 40;
 /// refuses.
 EnsembleSegmentationResult segmentByEnsembleChoosingCount(
   const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options);
+
+/// One ensemble for every count: each member segments the surface at every count from minimumCount
+/// to maximumCount (each dual-graph component with its share of the count, as segmentByEnsemble
+/// shares k), and all those segmentations vote in one co-association, whose average-linkage merge
+/// tree (consensusHierarchy, merged down to one group per component) is cut at any count by
+/// cutEnsembleHierarchy. Fred and Jain 2005 (section 3) pool partitions of several counts in the same
+/// way. Costs the members' time once per count; a new count then costs a cut and the boundary
+/// refinement. Deterministic.
+struct EnsembleHierarchy
+{
+  ConsensusHierarchy consensus;
+  int members = 0;      ///< the segmentations that voted (the members at all the counts)
+  int minimumCount = 0; ///< the counts the members ran at
+  int maximumCount = 0;
+  /// Per count from minimumCount up, the mean 1 - Rand index of the cut at that count (with the
+  /// options' refinement) against every member at every count; empty for a connected surface
+  /// within options.convexTolerance of its convex hull.
+  std::vector<double> countScores;
+  /// The count of least score (the smaller on a tie), or 1 where countScores is empty: the count
+  /// the hierarchy chooses itself, as segmentByEnsembleChoosingCount does among its ensembles.
+  int chosenCount = 1;
+  /// The refined cuts that were scored, per count from minimumCount up (empty with countScores),
+  /// and the refinement they were made with: cutEnsembleHierarchy hands them out again.
+  std::vector<std::vector<int>> refinedCuts;
+  BoundaryRefinementOptions refinedWith;
+};
+
+/// Builds the hierarchy and scores its cuts at the counts it ran at (countScores). Throws
+/// kerf::Error for a surface without faces, minimumCount < 2, maximumCount < minimumCount,
+/// maximumCount above the surface's faces, more than MaximumCountsToChoose counts, a
+/// convexTolerance outside [0, 1), and what segmentByEnsemble refuses.
+EnsembleHierarchy ensembleHierarchy(
+  const Surface& surface, int minimumCount, int maximumCount, const EnsembleSegmentationOptions& options);
+
+/// The hierarchy cut into k segments (cutConsensusHierarchy; k above the atoms gives the atoms, so
+/// segmentCount says how many there are) and the boundaries refined (refineSegmentBoundaries with
+/// `refinement`; a count the hierarchy scored, with the refinement it was scored with, is its
+/// kept cut, the same labels without the work; a band of 0 keeps the tree's boundaries, which are then nested: each
+/// count's segments are unions of the next count's). Throws kerf::Error for k out of range, refinement options
+/// refineSegmentBoundaries refuses, or a hierarchy built on another surface's faces.
+EnsembleSegmentationResult cutEnsembleHierarchy(
+  const Surface& surface, const EnsembleHierarchy& hierarchy, int k, const BoundaryRefinementOptions& refinement);
 
 } // namespace kerf
