@@ -83,6 +83,10 @@ int vtkEnsembleSegmentation::RequestData(
         {
           return this->CutHierarchy(surface, options, fieldData);
         }
+        // A tree kept from an earlier Use Hierarchy is let go (with its surface).
+        this->State->hierarchySurface.reset();
+        this->State->hierarchyKey.clear();
+        this->State->hierarchy = kerf::EnsembleHierarchy();
         const kerf::EnsembleSegmentationResult result = this->ChooseSegmentCount
           ? kerf::segmentByEnsembleChoosingCount(surface, this->MinimumSegmentCount, this->MaximumSegmentCount, options)
           : kerf::segmentByEnsemble(surface, this->SegmentCount, options);
@@ -101,6 +105,10 @@ std::vector<int> vtkEnsembleSegmentation::CutHierarchy(
   const kerf::Surface& surface, const kerf::EnsembleSegmentationOptions& options, vtkFieldData* fieldData)
 {
   Internals& state = *this->State;
+  if (!this->ChooseSegmentCount)
+  {
+    kerf::checkSegmentCount(this->SegmentCount, surface.mesh().faceCount()); // before a build, not after
+  }
   const std::string key = HierarchyKey(options, this->MinimumSegmentCount, this->MaximumSegmentCount);
   const bool build = state.hierarchySurface.get() != &surface || state.hierarchyKey != key;
   if (build)
@@ -111,10 +119,6 @@ std::vector<int> vtkEnsembleSegmentation::CutHierarchy(
     state.hierarchyKey = key;
   }
   const kerf::EnsembleHierarchy& hierarchy = state.hierarchy;
-  if (!this->ChooseSegmentCount)
-  {
-    kerf::checkSegmentCount(this->SegmentCount, surface.mesh().faceCount());
-  }
   const int count = this->ChooseSegmentCount ? hierarchy.chosenCount : this->SegmentCount;
   const kerf::EnsembleSegmentationResult result =
     kerf::cutEnsembleHierarchy(surface, hierarchy, count, options.refinement);

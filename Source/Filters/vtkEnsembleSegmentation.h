@@ -77,7 +77,10 @@ public:
   /// carries the tree: "MergeFirst", "MergeSecond" (the atoms naming the two groups of each merge,
   /// the second joining the first; the atoms are the segments at SegmentCount = Atoms with
   /// BoundaryBand 0) and "MergeLinkage" (each merge's mean co-association), and "CountScores".
-  /// SegmentCount above the atoms gives the atoms. Default off.
+  /// SegmentCount above the atoms gives the atoms. On a surface of several components the members
+  /// share each count by area and one count is chosen for the whole surface. A new Boundary Band,
+  /// Convex Weight or Convex Tolerance builds the tree again (the scores of its cuts depend on
+  /// them). Default off.
   vtkSetMacro(UseHierarchy, bool);
   vtkGetMacro(UseHierarchy, bool);
   vtkBooleanMacro(UseHierarchy, bool);
@@ -85,7 +88,8 @@ public:
 
   ///@{
   /// The counts ChooseSegmentCount chooses among (2 <= minimum <= maximum, at most 40 counts;
-  /// each component of a surface with several chooses its own). Defaults 5 and 11.
+  /// each component of a surface with several chooses its own), and the counts the members of
+  /// UseHierarchy run at (each component with its share). Defaults 5 and 11.
   vtkSetMacro(MinimumSegmentCount, int);
   vtkGetMacro(MinimumSegmentCount, int);
   vtkSetMacro(MaximumSegmentCount, int);

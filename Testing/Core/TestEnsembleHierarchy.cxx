@@ -272,6 +272,12 @@ TEST(EnsembleHierarchy, RefusesBadInput)
   // A tree of another surface.
   const Surface other{ makeProtrusions(2, FingerLength, FingerWidth, 3) };
   EXPECT_THROW(cutConsensusHierarchy(faceGraph(other), tree, 2), Error);
+  ConsensusHierarchy broken = tree;
+  broken.merges.push_back({ 0, tree.atoms });
+  EXPECT_THROW(cutConsensusHierarchy(graph, broken, 2), Error);
+  broken = tree;
+  broken.atomOfFace[7] = -1;
+  EXPECT_THROW(cutConsensusHierarchy(graph, broken, 2), Error);
   EnsembleHierarchy hierarchy;
   hierarchy.consensus = tree;
   BoundaryRefinementOptions band;

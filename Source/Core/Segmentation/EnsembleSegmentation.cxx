@@ -454,6 +454,13 @@ PartitionConsensus cutConsensusHierarchy(const FaceGraph& graph, const Consensus
     throw Error("a consensus hierarchy of " + std::to_string(hierarchy.atomOfFace.size()) +
       " faces cut on a surface of " + std::to_string(n));
   }
+  const auto outside = [&hierarchy](int atom) { return atom < 0 || atom >= hierarchy.atoms; };
+  if (std::any_of(hierarchy.atomOfFace.begin(), hierarchy.atomOfFace.end(), outside) ||
+    std::any_of(hierarchy.merges.begin(), hierarchy.merges.end(),
+      [&outside](const std::array<int, 2>& merge) { return outside(merge[0]) || outside(merge[1]); }))
+  {
+    throw Error("a consensus hierarchy names an atom outside its " + std::to_string(hierarchy.atoms) + " atoms");
+  }
   // The first atoms - k merges (all when there are fewer), replayed: merged groups point at the
   // group that kept them.
   std::vector<int> joined(static_cast<std::size_t>(hierarchy.atoms));

@@ -68,9 +68,10 @@ ConsensusHierarchy consensusHierarchy(
 /// The consensus in at most k segments from a hierarchy: its first atoms - k merges (all of them
 /// when it has fewer), made at most k and numbered by first face as combinePartitions does; equal
 /// to combinePartitions at k whenever the hierarchy was merged down to k or below (above k, the
-/// groups left are merged as finalizeSegments merges). More segments than atoms cannot be cut: k
-/// above the atoms gives the atoms. Linear in the faces. Throws
-/// kerf::Error for k out of range or a hierarchy of another number of faces.
+/// groups left are merged as finalizeSegments merges; never fewer segments than the dual graph
+/// has components). More segments than atoms cannot be cut: k above the atoms gives the atoms.
+/// Linear in the faces. Throws kerf::Error for k out of range, a hierarchy of another number of
+/// faces, or one whose atoms or merges are out of range.
 PartitionConsensus cutConsensusHierarchy(const FaceGraph& graph, const ConsensusHierarchy& hierarchy, int k);
 
 struct EnsembleSegmentationOptions
@@ -185,9 +186,11 @@ EnsembleHierarchy ensembleHierarchy(
 /// The hierarchy cut into k segments (cutConsensusHierarchy; k above the atoms gives the atoms, so
 /// segmentCount says how many there are) and the boundaries refined (refineSegmentBoundaries with
 /// `refinement`; a count the hierarchy scored, with the refinement it was scored with, is its
-/// kept cut, the same labels without the work; a band of 0 keeps the tree's boundaries, which are then nested: each
-/// count's segments are unions of the next count's). Throws kerf::Error for k out of range, refinement options
-/// refineSegmentBoundaries refuses, or a hierarchy built on another surface's faces.
+/// kept cut, the same labels without the work; a band of 0 keeps the tree's boundaries, which are
+/// then nested: each count's segments are unions of the next count's). The hierarchy must be one
+/// built on this surface: only one of another number of faces, or whose atoms or merges are out
+/// of range, can be told apart. Throws kerf::Error for k out of range, refinement options
+/// refineSegmentBoundaries refuses, or such a hierarchy.
 EnsembleSegmentationResult cutEnsembleHierarchy(
   const Surface& surface, const EnsembleHierarchy& hierarchy, int k, const BoundaryRefinementOptions& refinement);
 
