@@ -58,15 +58,19 @@ const Command Commands[] = {
     "Gaussian curvature, concavity, normal-cone angle) and writes them and/or a picture." },
   { "segment",
     "kerf segment MESH [--method NAME] [-k N | --auto] [-o OUT.vtp] [--seg OUT.seg] [--png OUT.png] [render options]\n"
-    "       kerf segment FOLDER [--method NAME] [-k N | --auto] [-o OUT_FOLDER]",
+    "       kerf segment FOLDER [--method NAME] [-k N | --auto] [-o OUT_FOLDER] [--quiet]\n"
+    "       mpirun -np N kerf segment FOLDER [...]",
     "Segments a mesh automatically into k parts (-k, default the filter's: 6 for the ensemble; with\n"
     "--auto the ensemble chooses k among 5 to 11, at about seven times the time) and writes the\n"
     "mesh with its Segment cell array (-o, any format convert writes), the labels as a\n"
     ".seg file (one per triangle, the Princeton benchmark's format) and/or a picture. Given a\n"
     "folder, segments each mesh file in it (by name) into OUT_FOLDER/NAME.vtp and NAME.seg\n"
-    "(default folder kerf-segment), a progress line each; a mesh that fails is reported, the\n"
-    "others go on, and the exit code is 1. Methods (each the filter of that name with its\n"
-    "defaults; the first is the default):" },
+    "(default folder kerf-segment), a progress line each (none with --quiet), and a line per\n"
+    "mesh in OUT_FOLDER/summary.csv (triangles, segments, milliseconds, rank, error); a mesh\n"
+    "that fails is reported, the others go on, and the exit code is 1. Under mpirun the meshes\n"
+    "are dealt out over the ranks (the largest first, each to the rank with the fewest bytes so\n"
+    "far), with the same files as a run without it. Methods (each the filter of that name with\n"
+    "its defaults; the first is the default):" },
   { "info", "kerf info MESH",
     "Prints the mesh size and whether Kerf's filters accept it (and if not, why). Exit code 1\n"
     "when the surface is refused." },

@@ -356,7 +356,13 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("[1/2] k-means segmentation of camel.off: 3 segments over 19536 triangles", result.stdout)
         self.assertIn("[2/2] k-means segmentation of hand.off: 3 segments over 2390 triangles", result.stdout)
-        self.assertEqual(sorted(os.listdir(out)), ["camel.seg", "camel.vtp", "hand.seg", "hand.vtp"])
+        self.assertEqual(sorted(os.listdir(out)), ["camel.seg", "camel.vtp", "hand.seg", "hand.vtp", "summary.csv"])
+        import csv
+        with open(os.path.join(out, "summary.csv"), newline="") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual([(r["Mesh"], r["Triangles"], r["Segments"], r["Rank"], r["Error"]) for r in rows],
+                         [("camel.off", "19536", "3", "0", ""), ("hand.off", "2390", "3", "0", "")])
+        self.assertGreater(float(rows[0]["Milliseconds"]), 0.0)
         with open(os.path.join(out, "hand.seg")) as f:
             self.assertEqual(len(f.readlines()), 2390)
         shutil.copy(os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"), folder)
@@ -364,6 +370,11 @@ class CommandLine(unittest.TestCase):
         self.assertEqual(result.returncode, 1)
         self.assertIn("[3/3] truncated.off failed: cannot read the mesh", result.stdout)
         self.assertIn("kerf: error: 1 of 3 meshes failed; the first: truncated.off", result.stderr)
+        with open(os.path.join(out, "summary.csv"), newline="") as f:
+            rows = list(csv.DictReader(f))
+        self.assertEqual([r["Mesh"] for r in rows], ["camel.off", "hand.off", "truncated.off"])
+        self.assertEqual((rows[2]["Triangles"], rows[2]["Segments"]), ("0", "0"))
+        self.assertTrue(rows[2]["Error"].startswith("cannot read the mesh"), rows[2]["Error"])
         self.assertEqual(run("segment", folder, "--seg", "x.seg").returncode, 1)
 
     def test_errors_exit_with_one_and_a_message(self):

@@ -1,6 +1,7 @@
 // kerf segment: automatic segmentation of one mesh by any of the automatic filters, to a mesh, a .seg file or a
 // picture.
 #include "KerfCommands.h"
+#include "KerfRanks.h"
 
 #include "vtkConsensusCutSegmentation.h"
 #include "vtkConvexFlooding.h"
@@ -13,6 +14,7 @@
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkMultiProcessStream.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataAlgorithm.h>
@@ -182,15 +184,9 @@ std::string summary(const std::string& method, const std::string& file, const Se
   return line.str();
 }
 
-// Every mesh file of a folder (by extension, in name order) to OUT/NAME.vtp and OUT/NAME.seg;
-// a mesh that fails is reported and the others go on.
-int segmentFolder(const Arguments& args, const std::string& folder, const std::string& method, int k)
+// The mesh files of a folder (by extension), in name order.
+std::vector<std::string> meshFiles(const std::string& folder)
 {
-  if (args.has("png") || args.has("seg"))
-  {
-    throw CommandError{ "a folder is segmented into -o FOLDER (NAME.vtp and NAME.seg per mesh); --png and "
-                        "--seg take one mesh" };
-  }
   std::vector<std::string> files;
   vtksys::Directory directory;
   directory.Load(folder);
@@ -207,6 +203,70 @@ int segmentFolder(const Arguments& args, const std::string& folder, const std::s
     }
   }
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+// The rank that segments each file: the largest file first, each to the rank with the fewest bytes
+// so far (the lowest on a tie), so that ranks finish close together. Deterministic.
+std::vector<int> dealBySize(const std::string& folder, const std::vector<std::string>& files, int ranks)
+{
+  std::vector<unsigned long> bytes(files.size());
+  std::vector<std::size_t> order(files.size());
+  for (std::size_t i = 0; i < files.size(); ++i)
+  {
+    bytes[i] = vtksys::SystemTools::FileLength(folder + "/" + files[i]);
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(), [&bytes](std::size_t a, std::size_t b) { return bytes[a] > bytes[b]; });
+  std::vector<unsigned long long> load(static_cast<std::size_t>(ranks), 0);
+  std::vector<int> owner(files.size(), 0);
+  for (const std::size_t i : order)
+  {
+    const auto least = std::min_element(load.begin(), load.end());
+    owner[i] = static_cast<int>(least - load.begin());
+    *least += bytes[i] + 1; // + 1: empty files are dealt out too
+  }
+  return owner;
+}
+
+// A CSV field, quoted when it holds a comma, a quote or a line break.
+std::string csvField(const std::string& text)
+{
+  if (text.find_first_of(",\"\n\r") == std::string::npos)
+  {
+    return text;
+  }
+  std::string quoted = "\"";
+  for (const char c : text)
+  {
+    quoted += c == '"' ? std::string("\"\"") : std::string(1, c == '\n' || c == '\r' ? ' ' : c);
+  }
+  return quoted + "\"";
+}
+
+// One mesh of a folder: what it gave, or why it failed, and which rank segmented it.
+struct FolderRow
+{
+  vtkTypeInt64 triangles = 0;
+  int segments = 0;
+  double milliseconds = 0.0;
+  int rank = 0;
+  std::string error;
+};
+
+// Every mesh file of a folder (in name order) to OUT/NAME.vtp and OUT/NAME.seg, and a line per mesh
+// in OUT/summary.csv; a mesh that fails is reported and the others go on. Under mpirun the meshes
+// are dealt out over the ranks (dealBySize), each rank writes its own meshes' files, and rank 0
+// gathers the rows, writes summary.csv and reports the failures.
+int segmentFolder(
+  const Arguments& args, const std::string& folder, const std::string& method, int k, const Ranks& ranks)
+{
+  if (args.has("png") || args.has("seg"))
+  {
+    throw CommandError{ "a folder is segmented into -o FOLDER (NAME.vtp and NAME.seg per mesh); --png and "
+                        "--seg take one mesh" };
+  }
+  const std::vector<std::string> files = meshFiles(folder);
   if (files.empty())
   {
     throw CommandError{ folder + " holds no mesh files (.off .ply .obj .stl .vtp .vtk)" };
@@ -216,35 +276,89 @@ int segmentFolder(const Arguments& args, const std::string& folder, const std::s
   {
     throw CommandError{ "cannot create the folder " + out };
   }
-  std::vector<std::string> failures;
+  const std::vector<int> owner = dealBySize(folder, files, ranks.size());
+  vtkMultiProcessStream mine;
   for (std::size_t i = 0; i < files.size(); ++i)
   {
+    if (owner[i] != ranks.rank())
+    {
+      continue;
+    }
     const std::string stem = vtksys::SystemTools::GetFilenameWithoutLastExtension(files[i]);
     std::ostringstream progress;
     progress << "[" << std::setw(static_cast<int>(std::to_string(files.size()).size())) << i + 1 << "/" << files.size()
              << "] ";
+    const std::string where = ranks.size() > 1 ? " (rank " + std::to_string(ranks.rank()) + ")" : "";
+    FolderRow row;
     try
     {
       const Segmented result = segmentFile(folder + "/" + files[i], method, k);
       WriteMesh(result.surface, out + "/" + stem + ".vtp");
       writeSeg(result.labels, out + "/" + stem + ".seg");
+      row.triangles = result.surface->GetNumberOfCells();
+      row.segments = static_cast<int>(result.segments);
+      row.milliseconds = result.milliseconds;
       if (!args.has("quiet"))
       {
-        std::cout << progress.str() << summary(method, files[i], result) << std::endl;
+        std::cout << progress.str() << summary(method, files[i], result) << where << std::endl;
       }
     }
     catch (const CommandError& e)
     {
-      failures.push_back(files[i] + ": " + e.message);
-      std::cout << progress.str() << files[i] << " failed: " << e.message << std::endl;
+      row.error = e.message;
+      std::cout << progress.str() << files[i] << " failed: " << e.message << where << std::endl;
+    }
+    mine << static_cast<int>(i) << row.triangles << row.segments << row.milliseconds << row.error;
+  }
+  // Every rank takes part in the gather and the broadcast before anything can throw.
+  std::vector<vtkMultiProcessStream> gathered = ranks.gather(mine);
+  std::vector<FolderRow> rows(files.size());
+  for (std::size_t r = 0; r < gathered.size(); ++r)
+  {
+    while (!gathered[r].Empty())
+    {
+      int i = 0;
+      FolderRow row;
+      gathered[r] >> i >> row.triangles >> row.segments >> row.milliseconds >> row.error;
+      row.rank = static_cast<int>(r);
+      rows[static_cast<std::size_t>(i)] = row;
     }
   }
-  if (!failures.empty())
+  std::string failure; // rank 0's report, if any
+  if (ranks.rank() == 0)
   {
-    throw CommandError{ std::to_string(failures.size()) + " of " + std::to_string(files.size()) +
-      " meshes failed; the first: " + failures[0] };
+    std::ofstream csv(out + "/summary.csv");
+    csv << "Mesh,Triangles,Segments,Milliseconds,Rank,Error\n";
+    std::size_t failures = 0;
+    for (std::size_t i = 0; i < files.size(); ++i)
+    {
+      const FolderRow& row = rows[i];
+      csv << csvField(files[i]) << "," << row.triangles << "," << row.segments << "," << std::fixed
+          << std::setprecision(1) << row.milliseconds << "," << row.rank << "," << csvField(row.error) << "\n";
+      if (!row.error.empty() && failures++ == 0)
+      {
+        failure = files[i] + ": " + row.error;
+      }
+    }
+    if (failures)
+    {
+      failure =
+        std::to_string(failures) + " of " + std::to_string(files.size()) + " meshes failed; the first: " + failure;
+    }
+    if (!csv)
+    {
+      failure = "cannot write " + out + "/summary.csv" + (failure.empty() ? "" : "; " + failure);
+    }
   }
-  return 0;
+  if (ranks.broadcast(failure.empty() ? 0 : 1) == 0)
+  {
+    return 0;
+  }
+  if (ranks.rank() != 0)
+  {
+    return 1; // rank 0 says why
+  }
+  throw CommandError{ failure };
 }
 } // namespace
 
@@ -258,9 +372,20 @@ int RunSegment(const Arguments& args)
   }
   const int k = args.has("auto") ? ChosenCount : args.has("k") ? args.integer("k", 6, 1, 1000000) : 0;
   segmentationFilter(method, k); // an unknown method before any reading
-  if (vtksys::SystemTools::FileIsDirectory(input))
+  const bool folder = vtksys::SystemTools::FileIsDirectory(input);
+  if (!folder && LaunchedRanks() > 1)
   {
-    return segmentFolder(args, input, method, k);
+    throw CommandError{ "under mpirun, segment takes a folder, whose meshes it deals out over the ranks" };
+  }
+  if (folder && LaunchedRanks() > 1 && !Ranks::available())
+  {
+    throw CommandError{ "this kerf was built without VTK's ParallelMPI, so it cannot deal a folder out over "
+                        "mpirun's ranks; run it without mpirun" };
+  }
+  if (folder)
+  {
+    const Ranks ranks; // MPI, under mpirun, until the folder is done
+    return segmentFolder(args, input, method, k, ranks);
   }
   if (args.has("png"))
   {
