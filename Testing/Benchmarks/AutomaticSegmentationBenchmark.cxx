@@ -34,10 +34,20 @@
 //                                    turn, one per iteration, with the boundary refinement
 //   BM_EnsembleHierarchySlideKept/100k  the same at k = 5, .., 11, whose refined cuts the build kept
 //   BM_EnsembleHierarchyCut/100k     k = 12, .., 20 without the refinement (band 0): the tree's cut
+//   BM_EnsembleSegmentation/100k, BM_EnsembleChoosingCount/100k  as at 22k (k = 6; counts 5 to 11)
+// and on the models of KERF_SHARED_DATA_DIR/psb-dev (only when the folder exists; each model's
+// surface built anew in every iteration, from its mesh read once):
+//   BM_EnsembleChoosingCount/1model, /all   the default of `kerf segment --auto` and of
+//                                    vtkEnsembleSegmentation's ChooseSegmentCount: counts 5 to 11
+//   BM_EnsembleSegmentation/1model, /all    the ensemble at the humans' count (nSeg-ByModel.txt),
+//                                    as the benchmark runner asks for it: the reference
+// whose counter s_per_model is the time per model (all models' time over their number).
 // The meshes are built once per size, outside the timed loops.
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
 
+#include "Evaluation/BenchmarkCase.h"
+#include "Evaluation/PrincetonBenchmark.h"
 #include "Segmentation/BoundaryRefinement.h"
 #include "Segmentation/ConsensusCutSegmentation.h"
 #include "Segmentation/CoreExtraction.h"
@@ -50,10 +60,13 @@
 
 #include <algorithm>
 #include <array>
+#include <exception>
 #include <limits>
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace
 {
@@ -154,10 +167,10 @@ void clusterSlideBenchmark(benchmark::State& state, const ClusterSize& size)
 constexpr ClusterSize EnsembleSize{ "22k", 43, 2.0 };
 constexpr int EnsembleSegments = 6;
 
-void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly)
+void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly, const ClusterSize& size)
 {
   kerf::benchmarks::RunOnScene(
-    state, []() -> const ClusterScene& { return sceneOfSize(EnsembleSize); },
+    state, [&size]() -> const ClusterScene& { return sceneOfSize(size); },
     [consensusCutsOnly](benchmark::State& st, const ClusterScene& scene) {
       int segments = 0;
       for (auto _ : st)
@@ -177,10 +190,10 @@ void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly)
     setCounters);
 }
 
-void choosingCountBenchmark(benchmark::State& state)
+void choosingCountBenchmark(benchmark::State& state, const ClusterSize& size)
 {
   kerf::benchmarks::RunOnScene(
-    state, []() -> const ClusterScene& { return sceneOfSize(EnsembleSize); },
+    state, [&size]() -> const ClusterScene& { return sceneOfSize(size); },
     [](benchmark::State& st, const ClusterScene& scene) {
       int segments = 0;
       for (auto _ : st)
@@ -286,6 +299,111 @@ void bandCutBenchmark(benchmark::State& state)
     setCounters);
 }
 
+// The psb-dev models, read once (their meshes; every iteration builds the surfaces anew).
+const std::string PsbDirectory = std::string(KERF_SHARED_DATA_DIR) + "/psb-dev";
+
+struct PsbScene
+{
+  std::vector<kerf::TriangleMesh> meshes;
+  std::vector<int> humanCounts; // nSeg-ByModel.txt
+  double triangles = 0.0;       // mean over the models
+};
+
+const PsbScene& psbScene(const std::vector<kerf::BenchmarkModel>& models)
+{
+  static std::map<std::size_t, std::unique_ptr<PsbScene>> scenes;
+  std::unique_ptr<PsbScene>& scene = scenes[models.size()];
+  if (!scene)
+  {
+    auto built = std::make_unique<PsbScene>();
+    for (const kerf::BenchmarkModel& model : models)
+    {
+      const kerf::BenchmarkCase loaded = kerf::loadBenchmarkCase(model);
+      built->meshes.push_back(loaded.surface->mesh());
+      built->humanCounts.push_back(model.requestedSegments > 0 ? model.requestedSegments : EnsembleSegments);
+      built->triangles += loaded.surface->mesh().faceCount() / static_cast<double>(models.size());
+    }
+    scene = std::move(built);
+  }
+  return *scene;
+}
+
+// Every model of `models` in turn, per iteration: the ensemble choosing its count (counts 5 to
+// 11), or at the humans' count. Each result is checked for its number of segments.
+void psbEnsembleBenchmark(benchmark::State& state, const std::vector<kerf::BenchmarkModel>* models, bool choosing)
+{
+  kerf::benchmarks::RunOnScene(
+    state, [models]() -> const PsbScene& { return psbScene(*models); },
+    [choosing](benchmark::State& st, const PsbScene& scene) {
+      double chosen = 0.0;
+      int wrong = 0;
+      for (auto _ : st)
+      {
+        chosen = 0.0;
+        for (std::size_t m = 0; m < scene.meshes.size(); ++m)
+        {
+          const kerf::Surface surface(scene.meshes[m]);
+          const kerf::EnsembleSegmentationResult result = choosing
+            ? kerf::segmentByEnsembleChoosingCount(surface, 5, 11, kerf::EnsembleSegmentationOptions())
+            : kerf::segmentByEnsemble(surface, scene.humanCounts[m], kerf::EnsembleSegmentationOptions());
+          const bool right = choosing ? result.segmentCount >= 1 : result.segmentCount == scene.humanCounts[m];
+          wrong += right ? 0 : 1;
+          chosen += result.segmentCount / static_cast<double>(scene.meshes.size());
+          benchmark::DoNotOptimize(result.labels.data());
+        }
+      }
+      st.counters["segments"] = chosen; // the mean over the models
+      st.counters["s_per_model"] = benchmark::Counter(static_cast<double>(scene.meshes.size()),
+        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+      if (wrong > 0)
+      {
+        kerf::benchmarks::Fail(st, std::to_string(wrong) + " results gave another number of segments than asked");
+      }
+    },
+    [models](benchmark::State& st, const PsbScene& scene) {
+      st.counters["models"] = static_cast<double>(models->size());
+      st.counters["triangles"] = scene.triangles;
+    });
+}
+
+// Registers the psb-dev benchmarks when the folder exists (and says why not otherwise).
+void registerPsbBenchmarks(bool useSizeMinimumTimes)
+{
+  static std::vector<kerf::BenchmarkModel> all;
+  try
+  {
+    all = kerf::scanBenchmark(PsbDirectory);
+  }
+  catch (const std::exception& e)
+  {
+    benchmark::AddCustomContext("psb_dev_ensemble", std::string(e.what()) + "; the psb-dev ensemble not registered");
+    return;
+  }
+  if (all.empty())
+  {
+    benchmark::AddCustomContext(
+      "psb_dev_ensemble", PsbDirectory + " holds no model; the psb-dev ensemble not registered");
+    return;
+  }
+  static const std::vector<kerf::BenchmarkModel> first = { all.front() };
+  const std::pair<const char*, const std::vector<kerf::BenchmarkModel>*> sets[] = { { "1model", &first },
+    { "all", &all } };
+  for (const auto& [label, models] : sets)
+  {
+    for (const bool choosing : { true, false })
+    {
+      const std::string name = std::string(choosing ? "BM_EnsembleChoosingCount/" : "BM_EnsembleSegmentation/") + label;
+      benchmark::internal::Benchmark* registered =
+        benchmark::RegisterBenchmark(name.c_str(), psbEnsembleBenchmark, models, choosing);
+      registered->Unit(benchmark::kMillisecond)->UseRealTime();
+      if (useSizeMinimumTimes)
+      {
+        registered->MinTime(0.1); // one iteration of all models takes seconds
+      }
+    }
+  }
+}
+
 void coreExtractionBenchmark(benchmark::State& state, const ClusterSize& size)
 {
   kerf::benchmarks::RunOnScene(
@@ -315,14 +433,16 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
 {
   for (benchmark::internal::Benchmark* registered :
     {
-      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false),
-      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark),
+      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false, EnsembleSize),
+      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark, EnsembleSize),
+      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/100k", ensembleBenchmark, false, Sizes[0]),
+      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/100k", choosingCountBenchmark, Sizes[0]),
       benchmark::RegisterBenchmark("BM_EnsembleHierarchy/22k", hierarchyBenchmark),
       benchmark::RegisterBenchmark("BM_EnsembleHierarchySlide/100k", hierarchySlideBenchmark, Sizes[0], true, 12, 20),
       benchmark::RegisterBenchmark(
         "BM_EnsembleHierarchySlideKept/100k", hierarchySlideBenchmark, Sizes[0], true, 5, 11),
       benchmark::RegisterBenchmark("BM_EnsembleHierarchyCut/100k", hierarchySlideBenchmark, Sizes[0], false, 12, 20),
-      benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true),
+      benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true, EnsembleSize),
       benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
       benchmark::RegisterBenchmark("BM_CoreExtraction/22k", coreExtractionBenchmark, EnsembleSize),
       benchmark::RegisterBenchmark("BM_CoreExtraction/100k", coreExtractionBenchmark, Sizes[0]),
@@ -334,6 +454,7 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
       registered->MinTime(EnsembleSize.minimumSeconds);
     }
   }
+  registerPsbBenchmarks(useSizeMinimumTimes);
   for (const ClusterSize& size : Sizes)
   {
     const std::string label = size.label;

@@ -3,7 +3,10 @@
 #include "Evaluation/SegmentationMetrics.h"
 #include "Mesh/MeshGenerators.h"
 #include "Segmentation/EnsembleSegmentation.h"
+#include "Segmentation/FaceGraph.h"
+#include "Segmentation/KMeansSegmentation.h"
 #include "Segmentation/PartitionDistance.h"
+#include "Segmentation/WatershedSegmentation.h"
 #include "SegmentationShapes.h"
 #include "Surface/Surface.h"
 
@@ -12,6 +15,7 @@
 #include <algorithm>
 #include <iostream>
 #include <limits>
+#include <utility>
 #include <vector>
 
 using namespace kerf;
@@ -29,6 +33,19 @@ TEST(PartitionDistance, CountsThePairsOnWhichTwoPartitionsDisagree)
   EXPECT_DOUBLE_EQ(randIndexError({ 0, 0, 0, 1 }, { 5, 5, 6, 6 }), 0.5);
   EXPECT_DOUBLE_EQ(randIndexError({}, {}), 0.0);
   EXPECT_DOUBLE_EQ(randIndexError({ 3 }, { 1 }), 0.0);
+  // Labels far above the faces (the hash map's route) and more cells than a dense table holds: 200
+  // faces all apart, numbered by 10^9 + 7 f on one side and backwards on the other, agree on every
+  // pair; against halves, the 2 x 4950 pairs inside the halves disagree, of 19,900.
+  std::vector<int> spread(200), backwards(200), halves(200);
+  for (int f = 0; f < 200; ++f)
+  {
+    spread[f] = 1000000000 + 7 * f;
+    backwards[f] = 199 - f;
+    halves[f] = f < 100 ? 1000000000 : 3;
+  }
+  EXPECT_DOUBLE_EQ(randIndexError(spread, backwards), 0.0);
+  EXPECT_DOUBLE_EQ(randIndexError(spread, halves), 9900.0 / 19900.0);
+  EXPECT_DOUBLE_EQ(randIndexError(halves, backwards), 9900.0 / 19900.0);
   EXPECT_THROW(randIndexError({ 0, 1 }, { 0 }), Error);
   EXPECT_THROW(randIndexError({ 0, -1 }, { 0, 0 }), Error);
 }
@@ -150,6 +167,59 @@ TEST(EnsembleCount, EachComponentChoosesItsOwnCount)
   {
     ASSERT_EQ(result.labels[f], firstAlone.labels[f]);
     ASSERT_EQ(result.labels[n + f], firstAlone.segmentCount + secondAlone.labels[f]);
+  }
+}
+
+// The members that share their work across counts give at each count what a run at that count
+// gives, bit for bit: the watershed's merging reaches every higher count on the way down, and
+// k-means' first k representatives are the k-count's.
+TEST(EnsembleCount, MembersAtCountsEqualTheirRunsAtEachCount)
+{
+  const TriangleMesh& one = fingers().surface->mesh();
+  const TriangleMesh two = withMovedCopy(one, Vector3(5.0, 0.0, 0.0));
+  for (const TriangleMesh* mesh : { &one, &two })
+  {
+    const FaceGraph graph(*mesh);
+    // The watershed's regions before any merge: counts from 1 (below what two components can
+    // reach) to past them (no merge at all).
+    WatershedOptions unmerged;
+    unmerged.segmentCount = mesh->faceCount();
+    const int regions = segmentByWatershed(graph, unmerged).segmentCount;
+    ASSERT_GT(regions, 12);
+    for (const auto& [lowest, highest] : { std::pair{ 1, 12 }, std::pair{ regions - 2, regions + 2 } })
+    {
+      const std::vector<WatershedResult> shared =
+        segmentByWatershedAtCounts(graph, WatershedOptions(), lowest, highest);
+      ASSERT_EQ(shared.size(), static_cast<std::size_t>(highest - lowest + 1));
+      for (int k = lowest; k <= highest; ++k)
+      {
+        WatershedOptions atK;
+        atK.segmentCount = k;
+        const WatershedResult alone = segmentByWatershed(graph, atK);
+        const WatershedResult& at = shared[static_cast<std::size_t>(k - lowest)];
+        EXPECT_EQ(at.labels, alone.labels) << "watershed, count " << k;
+        EXPECT_EQ(at.segmentCount, alone.segmentCount) << "watershed, count " << k;
+        EXPECT_EQ(at.basins, alone.basins);
+        EXPECT_EQ(at.segmentCount, std::min(std::max(k, graph.componentCount()), regions));
+      }
+    }
+    const std::vector<KMeansSegmentationResult> kMeans =
+      segmentByKMeansAtCounts(graph, 2, 9, KMeansSegmentationOptions());
+    ASSERT_EQ(kMeans.size(), 8u);
+    for (int k = 2; k <= 9; ++k)
+    {
+      const KMeansSegmentationResult alone = segmentByKMeans(graph, k, KMeansSegmentationOptions());
+      const KMeansSegmentationResult& at = kMeans[static_cast<std::size_t>(k - 2)];
+      EXPECT_EQ(at.labels, alone.labels) << "k-means, count " << k;
+      EXPECT_EQ(at.representatives, alone.representatives) << "k-means, count " << k;
+      EXPECT_EQ(at.iterations, alone.iterations);
+      EXPECT_EQ(*std::max_element(at.labels.begin(), at.labels.end()) + 1, k);
+    }
+    EXPECT_THROW(segmentByWatershedAtCounts(graph, WatershedOptions(), 0, 3), Error);
+    EXPECT_THROW(segmentByWatershedAtCounts(graph, WatershedOptions(), 4, 3), Error);
+    EXPECT_THROW(segmentByKMeansAtCounts(graph, 0, 3, KMeansSegmentationOptions()), Error);
+    EXPECT_THROW(segmentByKMeansAtCounts(graph, 4, 3, KMeansSegmentationOptions()), Error);
+    EXPECT_THROW(segmentByKMeansAtCounts(graph, 2, mesh->faceCount() + 1, KMeansSegmentationOptions()), Error);
   }
 }
 

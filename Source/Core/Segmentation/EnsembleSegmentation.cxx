@@ -103,12 +103,42 @@ void eraseSorted(std::vector<int>& list, int value)
   }
 }
 
-// A member of the ensemble: its vote and its segmentation of a connected surface into k parts.
+// A member of the ensemble: its vote and its segmentation of a connected surface into k parts, and
+// for the members that share work across counts, its segmentations at every count of a range.
 struct Member
 {
   double weight;
   std::function<std::vector<int>(const Surface&, int)> segment;
+  std::function<std::vector<std::vector<int>>(const Surface&, int, int)> segmentAtCounts = nullptr;
+
+  // The segmentations of a connected surface at every count from lowest to highest, each equal
+  // to segment at its count.
+  std::vector<std::vector<int>> atCounts(const Surface& surface, int lowest, int highest) const
+  {
+    if (segmentAtCounts)
+    {
+      return segmentAtCounts(surface, lowest, highest);
+    }
+    std::vector<std::vector<int>> labels;
+    for (int k = lowest; k <= highest; ++k)
+    {
+      labels.push_back(segment(surface, k));
+    }
+    return labels;
+  }
 };
+
+// The labels of a member's results at each count.
+template <typename Result>
+std::vector<std::vector<int>> labelsOf(std::vector<Result> results)
+{
+  std::vector<std::vector<int>> labels;
+  for (Result& result : results)
+  {
+    labels.push_back(std::move(result.labels));
+  }
+  return labels;
+}
 
 // A member's options with the count it segments into (the members that read it from their options).
 template <typename Options>
@@ -133,10 +163,16 @@ std::vector<Member> ensembleMembers(const EnsembleSegmentationOptions& options)
       } },
     { options.kMeansWeight,
       [&options](
-        const Surface& surface, int k) { return segmentByKMeans(faceGraph(surface), k, options.kMeans).labels; } },
+        const Surface& surface, int k) { return segmentByKMeans(faceGraph(surface), k, options.kMeans).labels; },
+      [&options](const Surface& surface, int lowest, int highest) {
+        return labelsOf(segmentByKMeansAtCounts(faceGraph(surface), lowest, highest, options.kMeans));
+      } },
     { options.watershedWeight,
       [&options](const Surface& surface, int k) {
         return segmentByWatershed(faceGraph(surface), withSegmentCount(options.watershed, k)).labels;
+      },
+      [&options](const Surface& surface, int lowest, int highest) {
+        return labelsOf(segmentByWatershedAtCounts(faceGraph(surface), options.watershed, lowest, highest));
       } },
     { options.faceClusteringWeight,
       [&options](const Surface& surface, int k) {
@@ -159,6 +195,26 @@ std::vector<WeightedPartition> memberPartitions(
     if (member.weight > 0.0)
     {
       partitions.push_back({ member.segment(surface, k), member.weight });
+    }
+  }
+  return partitions;
+}
+
+// The members' segmentations of a connected surface at every count from lowest to highest, those
+// with a positive weight: per count, in the members' order.
+std::vector<std::vector<WeightedPartition>> memberPartitionsAtCounts(
+  const Surface& surface, int lowest, int highest, const EnsembleSegmentationOptions& options)
+{
+  std::vector<std::vector<WeightedPartition>> partitions(static_cast<std::size_t>(highest - lowest + 1));
+  for (const Member& member : ensembleMembers(options))
+  {
+    if (member.weight > 0.0)
+    {
+      std::vector<std::vector<int>> labels = member.atCounts(surface, lowest, highest);
+      for (std::size_t c = 0; c < partitions.size(); ++c)
+      {
+        partitions[c].push_back({ std::move(labels[c]), member.weight });
+      }
     }
   }
   return partitions;
@@ -199,9 +255,10 @@ EnsembleSegmentationResult segmentConnectedChoosingCount(
 {
   std::vector<WeightedPartition> pool;
   std::vector<EnsembleSegmentationResult> candidates;
+  std::vector<std::vector<WeightedPartition>> atCounts = memberPartitionsAtCounts(surface, lowest, highest, options);
   for (int k = lowest; k <= highest; ++k)
   {
-    std::vector<WeightedPartition> partitions = memberPartitions(surface, k, options);
+    std::vector<WeightedPartition>& partitions = atCounts[static_cast<std::size_t>(k - lowest)];
     candidates.push_back(joinMembers(surface, k, partitions, options));
     pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
   }
@@ -605,15 +662,27 @@ EnsembleHierarchy ensembleHierarchy(
 {
   const TriangleMesh& mesh = surface.mesh();
   checkCountChoice(mesh, minimumCount, maximumCount, options, "an ensemble hierarchy");
-  // Every member at every count, each dual-graph component with its share of the count.
+  // Every member at every count, each dual-graph component with its share of the count (on a
+  // connected surface, each member's work shared across the counts).
   std::vector<WeightedPartition> pool;
-  for (int count = minimumCount; count <= maximumCount; ++count)
+  if (faceGraph(surface).componentCount() == 1)
   {
-    for (const Member& member : ensembleMembers(options))
+    for (std::vector<WeightedPartition>& partitions :
+      memberPartitionsAtCounts(surface, minimumCount, maximumCount, options))
     {
-      if (member.weight > 0.0)
+      pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
+    }
+  }
+  else
+  {
+    for (int count = minimumCount; count <= maximumCount; ++count)
+    {
+      for (const Member& member : ensembleMembers(options))
       {
-        pool.push_back({ segmentSurfaceComponents(surface, count, member.segment), member.weight });
+        if (member.weight > 0.0)
+        {
+          pool.push_back({ segmentSurfaceComponents(surface, count, member.segment), member.weight });
+        }
       }
     }
   }

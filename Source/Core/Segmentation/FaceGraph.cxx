@@ -25,6 +25,7 @@ FaceGraph::FaceGraph(const TriangleMesh& mesh)
   this->Normals.resize(faces);
   this->Centroids.resize(faces);
   this->FaceDualEdges.assign(faces, { { -1, -1, -1 } });
+  this->FaceNeighbours.assign(faces, { { -1, -1, -1 } });
   for (int f = 0; f < faces; ++f)
   {
     const Triangle& t = mesh.triangle(f);
@@ -69,11 +70,12 @@ FaceGraph::FaceGraph(const TriangleMesh& mesh)
     const int index = static_cast<int>(this->Edges.size());
     for (int f : { fa, fb })
     {
-      for (int& slot : this->FaceDualEdges[f])
+      for (int s = 0; s < 3; ++s)
       {
-        if (slot < 0)
+        if (this->FaceDualEdges[f][s] < 0)
         {
-          slot = index;
+          this->FaceDualEdges[f][s] = index;
+          this->FaceNeighbours[f][s] = f == fa ? fb : fa;
           break;
         }
       }
@@ -149,14 +151,16 @@ DualDistances dualDijkstra(
   searchShortestPaths(
     heap, [&](int f) -> double& { return result.distance[f]; },
     [&](int f, double d, const auto& lower) {
-      for (int e : graph.faceEdges(f))
+      const std::array<int, 3>& edges = graph.faceEdges(f);
+      const std::array<int, 3>& neighbours = graph.faceNeighbours(f);
+      for (int s = 0; s < 3; ++s)
       {
-        if (e < 0)
+        const int g = neighbours[s];
+        if (g < 0)
         {
           continue;
         }
-        const int g = graph.opposite(e, f);
-        const double candidate = d + edgeLengths[e];
+        const double candidate = d + edgeLengths[edges[s]];
         if (candidate > limit)
         {
           continue;

@@ -45,6 +45,9 @@ public:
   const DualEdge& edge(int e) const { return this->Edges[e]; }
   /// The dual edges of face f (at most 3).
   const std::array<int, 3>& faceEdges(int f) const { return this->FaceDualEdges[f]; }
+  /// The faces across the dual edges of face f, slot for slot with faceEdges (-1 where faceEdges has
+  /// none): the dual graph's adjacency without the edges' records.
+  const std::array<int, 3>& faceNeighbours(int f) const { return this->FaceNeighbours[f]; }
   /// The face across dual edge e from f.
   int opposite(int e, int f) const
   {
@@ -67,6 +70,7 @@ private:
   const TriangleMesh* Mesh;
   std::vector<DualEdge> Edges;
   std::vector<std::array<int, 3>> FaceDualEdges;
+  std::vector<std::array<int, 3>> FaceNeighbours;
   std::vector<double> Areas;
   std::vector<double> Perimeters;
   std::vector<Vector3> Normals;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace kerf
 {
@@ -30,17 +31,18 @@ std::vector<double> kMeansEdgeDistances(const FaceGraph& graph, double physicalW
 
 namespace
 {
-KMeansSegmentationResult clusterConnected(const FaceGraph& graph, int k, const KMeansSegmentationOptions& options)
+// Shlafman et al. 2002, section 3: the first representative is the face nearest the centroid, each
+// next one the face farthest on average from those chosen. The first k of the `count` returned
+// are the representatives for k.
+std::vector<int> initialRepresentatives(const FaceGraph& graph, const std::vector<double>& lengths, int count)
 {
   const int n = graph.faceCount();
-  const std::vector<double> lengths = kMeansEdgeDistances(graph, options.physicalWeight);
   Vector3 centre = Vector3::Zero();
   for (int f = 0; f < n; ++f)
   {
     centre += graph.area(f) * graph.centroid(f);
   }
   centre /= std::max(graph.totalArea(), std::numeric_limits<double>::min());
-  KMeansSegmentationResult result;
   int first = 0;
   for (int f = 1; f < n; ++f)
   {
@@ -49,14 +51,14 @@ KMeansSegmentationResult clusterConnected(const FaceGraph& graph, int k, const K
       first = f;
     }
   }
-  result.representatives.push_back(first);
+  std::vector<int> representatives = { first };
   // Sum of distances to the chosen representatives; the next is the face farthest on average.
   std::vector<double> sum(n, 0.0);
   std::vector<char> chosen(n, 0);
   chosen[first] = 1;
-  while (static_cast<int>(result.representatives.size()) < k)
+  while (static_cast<int>(representatives.size()) < count)
   {
-    const DualDistances single = dualDijkstra(graph, lengths, { result.representatives.back() });
+    const DualDistances single = dualDijkstra(graph, lengths, { representatives.back() });
     int best = -1;
     for (int f = 0; f < n; ++f)
     {
@@ -67,8 +69,18 @@ KMeansSegmentationResult clusterConnected(const FaceGraph& graph, int k, const K
       }
     }
     chosen[best] = 1;
-    result.representatives.push_back(best);
+    representatives.push_back(best);
   }
+  return representatives;
+}
+
+// The assignment and re-election rounds from the first k of `initial`.
+KMeansSegmentationResult clusterFrom(const FaceGraph& graph, const std::vector<double>& lengths,
+  const std::vector<int>& initial, int k, const KMeansSegmentationOptions& options)
+{
+  const int n = graph.faceCount();
+  KMeansSegmentationResult result;
+  result.representatives.assign(initial.begin(), initial.begin() + k);
   std::vector<int> labels;
   for (result.iterations = 1;; ++result.iterations)
   {
@@ -102,11 +114,15 @@ KMeansSegmentationResult clusterConnected(const FaceGraph& graph, int k, const K
   result.labels = finalizeSegments(graph, labels, k);
   return result;
 }
-} // namespace
 
-KMeansSegmentationResult segmentByKMeans(const FaceGraph& graph, int k, const KMeansSegmentationOptions& options)
+KMeansSegmentationResult clusterConnected(const FaceGraph& graph, int k, const KMeansSegmentationOptions& options)
 {
-  checkSegmentCount(k, graph.faceCount());
+  const std::vector<double> lengths = kMeansEdgeDistances(graph, options.physicalWeight);
+  return clusterFrom(graph, lengths, initialRepresentatives(graph, lengths, k), k, options);
+}
+
+void checkKMeansOptions(const KMeansSegmentationOptions& options)
+{
   if (!(options.physicalWeight >= 0.0 && options.physicalWeight <= 1.0))
   {
     throw Error("the physical-distance weight delta must lie in [0, 1]");
@@ -115,6 +131,13 @@ KMeansSegmentationResult segmentByKMeans(const FaceGraph& graph, int k, const KM
   {
     throw Error("k-means needs at least one iteration");
   }
+}
+} // namespace
+
+KMeansSegmentationResult segmentByKMeans(const FaceGraph& graph, int k, const KMeansSegmentationOptions& options)
+{
+  checkSegmentCount(k, graph.faceCount());
+  checkKMeansOptions(options);
   if (graph.componentCount() == 1)
   {
     return clusterConnected(graph, k, options);
@@ -127,6 +150,34 @@ KMeansSegmentationResult segmentByKMeans(const FaceGraph& graph, int k, const KM
     return partResult.labels;
   });
   return result;
+}
+
+std::vector<KMeansSegmentationResult> segmentByKMeansAtCounts(
+  const FaceGraph& graph, int lowestCount, int highestCount, const KMeansSegmentationOptions& options)
+{
+  if (lowestCount < 1 || highestCount < lowestCount)
+  {
+    throw Error("k-means at counts needs 1 <= lowest <= highest, got " + std::to_string(lowestCount) + " and " +
+      std::to_string(highestCount));
+  }
+  checkSegmentCount(highestCount, graph.faceCount());
+  checkKMeansOptions(options);
+  std::vector<KMeansSegmentationResult> results;
+  if (graph.componentCount() != 1)
+  {
+    for (int k = lowestCount; k <= highestCount; ++k)
+    {
+      results.push_back(segmentByKMeans(graph, k, options));
+    }
+    return results;
+  }
+  const std::vector<double> lengths = kMeansEdgeDistances(graph, options.physicalWeight);
+  const std::vector<int> initial = initialRepresentatives(graph, lengths, highestCount);
+  for (int k = lowestCount; k <= highestCount; ++k)
+  {
+    results.push_back(clusterFrom(graph, lengths, initial, k, options));
+  }
+  return results;
 }
 
 } // namespace kerf

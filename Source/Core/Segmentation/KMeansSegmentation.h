@@ -39,4 +39,12 @@ std::vector<double> kMeansEdgeDistances(const FaceGraph& graph, double physicalW
 /// than one iteration.
 KMeansSegmentationResult segmentByKMeans(const FaceGraph& graph, int k, const KMeansSegmentationOptions& options);
 
+/// segmentByKMeans at every count from lowestCount to highestCount, in that order, each result
+/// equal to segmentByKMeans at its count: on a connected graph the representatives' initialisation,
+/// whose first k faces are the k-count's, is run once for the highest count (highestCount - 1
+/// single-source searches instead of one run per count). Throws kerf::Error for lowestCount < 1,
+/// highestCount < lowestCount, and what segmentByKMeans refuses at highestCount.
+std::vector<KMeansSegmentationResult> segmentByKMeansAtCounts(
+  const FaceGraph& graph, int lowestCount, int highestCount, const KMeansSegmentationOptions& options);
+
 } // namespace kerf

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <string>
 
 namespace kerf
 {
@@ -119,7 +120,9 @@ std::vector<int> drainEdges(const FaceGraph& graph, const std::vector<long long>
 }
 } // namespace
 
-WatershedResult segmentByWatershed(const FaceGraph& graph, const WatershedOptions& options)
+namespace
+{
+void checkWatershedOptions(const WatershedOptions& options)
 {
   if (!(options.depthThreshold >= 0.0) || !std::isfinite(options.depthThreshold))
   {
@@ -133,6 +136,16 @@ WatershedResult segmentByWatershed(const FaceGraph& graph, const WatershedOption
   {
     throw Error("the segment count must be 0 (no limit) or positive");
   }
+}
+
+// The watershed's basins merged shallowest first, down to `lowestCount` regions (by count) or while
+// shallower than the threshold (lowestCount 0). After the start and after each merge,
+// reached(regions, live) is called with the regions left, so that a run down to the lowest count
+// passes through every state a run stopping at a higher count ends in. Returns the last state.
+template <typename Reached>
+WatershedResult mergeBasins(
+  const FaceGraph& graph, const WatershedOptions& options, int lowestCount, const Reached& reached)
+{
   const int m = graph.edgeCount();
   std::vector<double> height(m);
   std::vector<long long> level(m);
@@ -194,6 +207,7 @@ WatershedResult segmentByWatershed(const FaceGraph& graph, const WatershedOption
       heap.emplace(depth, r);
     }
   }
+  reached(regions, regions.liveCount());
   while (!heap.empty())
   {
     const auto [depth, r] = heap.top();
@@ -203,31 +217,68 @@ WatershedResult segmentByWatershed(const FaceGraph& graph, const WatershedOption
     {
       continue;
     }
-    const bool byCount = options.segmentCount > 0;
-    if (byCount ? regions.liveCount() <= options.segmentCount : depth >= options.depthThreshold)
+    const bool byCount = lowestCount > 0;
+    if (byCount ? regions.liveCount() <= lowestCount : depth >= options.depthThreshold)
     {
       break;
     }
     regions.merge(r, across);
     minimum[across] = std::min(minimum[across], minimum[r]);
-    for (int touched : { across })
+    int next = -1;
+    const double d = depthOf(across, next);
+    if (next >= 0)
     {
-      int next = -1;
-      const double d = depthOf(touched, next);
-      if (next >= 0)
-      {
-        heap.emplace(d, touched);
-      }
-      for (const auto& neighbour : regions.neighbours(touched))
-      {
-        const double dn = depthOf(neighbour.first, next);
-        heap.emplace(dn, neighbour.first);
-      }
+      heap.emplace(d, across);
     }
+    for (const auto& neighbour : regions.neighbours(across))
+    {
+      const double dn = depthOf(neighbour.first, next);
+      heap.emplace(dn, neighbour.first);
+    }
+    reached(regions, regions.liveCount());
   }
   result.labels = regions.labels();
   result.segmentCount = regions.liveCount();
   return result;
+}
+} // namespace
+
+WatershedResult segmentByWatershed(const FaceGraph& graph, const WatershedOptions& options)
+{
+  checkWatershedOptions(options);
+  return mergeBasins(graph, options, options.segmentCount, [](const RegionAdjacency&, int) {});
+}
+
+std::vector<WatershedResult> segmentByWatershedAtCounts(
+  const FaceGraph& graph, const WatershedOptions& options, int lowestCount, int highestCount)
+{
+  checkWatershedOptions(options);
+  if (lowestCount < 1 || highestCount < lowestCount)
+  {
+    throw Error("the watershed at counts needs 1 <= lowest <= highest, got " + std::to_string(lowestCount) + " and " +
+      std::to_string(highestCount));
+  }
+  std::vector<WatershedResult> results(static_cast<std::size_t>(highestCount - lowestCount + 1));
+  // The next count, from the highest down, whose state has not been reached yet.
+  int pending = highestCount;
+  const WatershedResult last = mergeBasins(graph, options, lowestCount, [&](const RegionAdjacency& regions, int live) {
+    for (; pending >= lowestCount && live <= pending; --pending)
+    {
+      WatershedResult& result = results[static_cast<std::size_t>(pending - lowestCount)];
+      result.labels = regions.labels();
+      result.segmentCount = live;
+    }
+  });
+  // Counts the merging never got down to (no two regions left to merge) end as it ended.
+  for (; pending >= lowestCount; --pending)
+  {
+    results[static_cast<std::size_t>(pending - lowestCount)] = last;
+  }
+  for (WatershedResult& result : results)
+  {
+    result.basins = last.basins;
+  }
+  return results;
 }
 
 } // namespace kerf

@@ -42,4 +42,12 @@ struct WatershedResult
 /// threshold or a non-positive tolerance.
 WatershedResult segmentByWatershed(const FaceGraph& graph, const WatershedOptions& options);
 
+/// segmentByWatershed by count at every count from lowestCount to highestCount (options.segmentCount
+/// ignored), in that order: the merging is run once, down to lowestCount, and each count takes the
+/// regions of the moment the merging reached it, so that each result equals segmentByWatershed with
+/// that segmentCount. Throws kerf::Error for lowestCount < 1, highestCount < lowestCount, and what
+/// segmentByWatershed refuses.
+std::vector<WatershedResult> segmentByWatershedAtCounts(
+  const FaceGraph& graph, const WatershedOptions& options, int lowestCount, int highestCount);
+
 } // namespace kerf
