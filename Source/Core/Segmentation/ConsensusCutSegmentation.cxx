@@ -56,7 +56,9 @@ struct RankedCuts
   int consensusCuts = 0;
 };
 
-double symmetricDifferenceArea(const Bits& a, const Bits& b, const std::vector<double>& area)
+// Whether the faces on one side of a and not of b, or of b and not of a, have at most `tolerance`
+// area. The sum of non-negative areas only grows, so it stops as soon as it passes the tolerance.
+bool symmetricDifferenceWithin(const Bits& a, const Bits& b, const std::vector<double>& area, double tolerance)
 {
   double sum = 0.0;
   for (std::size_t w = 0; w < a.size(); ++w)
@@ -68,8 +70,12 @@ double symmetricDifferenceArea(const Bits& a, const Bits& b, const std::vector<d
       sum += area[w * 64 + static_cast<std::size_t>(bit)];
       x &= x - 1;
     }
+    if (sum > tolerance)
+    {
+      return false;
+    }
   }
-  return sum;
+  return true;
 }
 
 // Feature points: farthest-point sampling along the edges, starting from the vertex farthest
@@ -500,7 +506,7 @@ RankedCuts rankCuts(const Surface& surface, int pointCount, const ConsensusCutOp
       const double tolerance = options.sameCutTolerance * std::min(r.sideArea, candidate.sideArea);
       if (std::abs(r.sideArea - candidate.sideArea) <= tolerance &&
         (r.centroid - candidate.centroid).norm() <= options.sameCutTolerance * std::max(r.extent, candidate.extent) &&
-        symmetricDifferenceArea(r.side, candidate.side, graph.areas()) <= tolerance)
+        symmetricDifferenceWithin(r.side, candidate.side, graph.areas(), tolerance))
       {
         home = &cut;
         break;

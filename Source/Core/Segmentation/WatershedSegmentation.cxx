@@ -224,16 +224,14 @@ WatershedResult mergeBasins(
     }
     regions.merge(r, across);
     minimum[across] = std::min(minimum[across], minimum[r]);
+    // Only the merged region's depth can change: a neighbour's boundaries with the two regions
+    // become one with the lower of their heights, so its lowest saddle, its minimum and its depth
+    // stay as they were, and its entry in the heap stays valid.
     int next = -1;
     const double d = depthOf(across, next);
     if (next >= 0)
     {
       heap.emplace(d, across);
-    }
-    for (const auto& neighbour : regions.neighbours(across))
-    {
-      const double dn = depthOf(neighbour.first, next);
-      heap.emplace(dn, neighbour.first);
     }
     reached(regions, regions.liveCount());
   }
