@@ -26,6 +26,18 @@ int LaunchedRanks()
   return 1;
 }
 
+int LaunchedRanksOnThisHost()
+{
+  for (const char* name : { "OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS" })
+  {
+    if (const char* value = std::getenv(name))
+    {
+      return std::max(1, std::atoi(value));
+    }
+  }
+  return LaunchedRanks();
+}
+
 bool Ranks::available()
 {
   return KERF_WITH_MPI != 0;

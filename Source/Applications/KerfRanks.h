@@ -43,4 +43,8 @@ private:
 /// or MPICH's PMI_SIZE in the environment); 1 without a launcher.
 int LaunchedRanks();
 
+/// The ranks the launcher started on this host (Open MPI's OMPI_COMM_WORLD_LOCAL_SIZE or MPICH's
+/// MPI_LOCALNRANKS), else LaunchedRanks().
+int LaunchedRanksOnThisHost();
+
 } // namespace kerf

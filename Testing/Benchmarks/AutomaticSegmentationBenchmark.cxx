@@ -35,13 +35,17 @@
 //   BM_EnsembleHierarchySlideKept/100k  the same at k = 5, .., 11, whose refined cuts the build kept
 //   BM_EnsembleHierarchyCut/100k     k = 12, .., 20 without the refinement (band 0): the tree's cut
 //   BM_EnsembleSegmentation/100k, BM_EnsembleChoosingCount/100k  as at 22k (k = 6; counts 5 to 11)
+//   BM_EnsembleSegmentation/100k-threads, BM_EnsembleChoosingCount/100k-threads  the same on the
+//                                    hardware's cores (kerf::setThreadLimit; the others run on one)
 // and on the models of KERF_SHARED_DATA_DIR/psb-dev (only when the folder exists; each model's
 // surface built anew in every iteration, from its mesh read once):
 //   BM_EnsembleChoosingCount/1model, /all   the default of `kerf segment --auto` and of
 //                                    vtkEnsembleSegmentation's ChooseSegmentCount: counts 5 to 11
 //   BM_EnsembleSegmentation/1model, /all    the ensemble at the humans' count (nSeg-ByModel.txt),
 //                                    as the benchmark runner asks for it: the reference
-// whose counter s_per_model is the time per model (all models' time over their number).
+// whose counter s_per_model is the time per model (all models' time over their number), and
+//   BM_EnsembleChoosingCount/1model-threads, /all-threads, BM_EnsembleSegmentation/1model-threads,
+//   /all-threads                     the same on the hardware's cores.
 // The meshes are built once per size, outside the timed loops.
 #include "BenchmarkMeshes.h"
 #include "KerfBenchmarks.h"
@@ -55,6 +59,7 @@
 #include "Segmentation/FaceGraph.h"
 #include "Segmentation/HierarchicalFaceClustering.h"
 #include "Surface/Surface.h"
+#include "Threads.h"
 
 #include <benchmark/benchmark.h>
 
@@ -167,8 +172,10 @@ void clusterSlideBenchmark(benchmark::State& state, const ClusterSize& size)
 constexpr ClusterSize EnsembleSize{ "22k", 43, 2.0 };
 constexpr int EnsembleSegments = 6;
 
-void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly, const ClusterSize& size)
+void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly, const ClusterSize& size, bool threads)
 {
+  const kerf::benchmarks::ThreadsFor scope(threads);
+  state.counters["threads"] = kerf::threadLimit();
   kerf::benchmarks::RunOnScene(
     state, [&size]() -> const ClusterScene& { return sceneOfSize(size); },
     [consensusCutsOnly](benchmark::State& st, const ClusterScene& scene) {
@@ -190,8 +197,10 @@ void ensembleBenchmark(benchmark::State& state, bool consensusCutsOnly, const Cl
     setCounters);
 }
 
-void choosingCountBenchmark(benchmark::State& state, const ClusterSize& size)
+void choosingCountBenchmark(benchmark::State& state, const ClusterSize& size, bool threads)
 {
+  const kerf::benchmarks::ThreadsFor scope(threads);
+  state.counters["threads"] = kerf::threadLimit();
   kerf::benchmarks::RunOnScene(
     state, [&size]() -> const ClusterScene& { return sceneOfSize(size); },
     [](benchmark::State& st, const ClusterScene& scene) {
@@ -330,8 +339,11 @@ const PsbScene& psbScene(const std::vector<kerf::BenchmarkModel>& models)
 
 // Every model of `models` in turn, per iteration: the ensemble choosing its count (counts 5 to
 // 11), or at the humans' count. Each result is checked for its number of segments.
-void psbEnsembleBenchmark(benchmark::State& state, const std::vector<kerf::BenchmarkModel>* models, bool choosing)
+void psbEnsembleBenchmark(
+  benchmark::State& state, const std::vector<kerf::BenchmarkModel>* models, bool choosing, bool threads)
 {
+  const kerf::benchmarks::ThreadsFor scope(threads);
+  state.counters["threads"] = kerf::threadLimit();
   kerf::benchmarks::RunOnScene(
     state, [models]() -> const PsbScene& { return psbScene(*models); },
     [choosing](benchmark::State& st, const PsbScene& scene) {
@@ -390,15 +402,19 @@ void registerPsbBenchmarks(bool useSizeMinimumTimes)
     { "all", &all } };
   for (const auto& [label, models] : sets)
   {
-    for (const bool choosing : { true, false })
+    for (const bool threads : { false, true })
     {
-      const std::string name = std::string(choosing ? "BM_EnsembleChoosingCount/" : "BM_EnsembleSegmentation/") + label;
-      benchmark::internal::Benchmark* registered =
-        benchmark::RegisterBenchmark(name.c_str(), psbEnsembleBenchmark, models, choosing);
-      registered->Unit(benchmark::kMillisecond)->UseRealTime();
-      if (useSizeMinimumTimes)
+      for (const bool choosing : { true, false })
       {
-        registered->MinTime(0.1); // one iteration of all models takes seconds
+        const std::string name = std::string(choosing ? "BM_EnsembleChoosingCount/" : "BM_EnsembleSegmentation/") +
+          label + (threads ? "-threads" : "");
+        benchmark::internal::Benchmark* registered =
+          benchmark::RegisterBenchmark(name.c_str(), psbEnsembleBenchmark, models, choosing, threads);
+        registered->Unit(benchmark::kMillisecond)->UseRealTime();
+        if (useSizeMinimumTimes)
+        {
+          registered->MinTime(0.1); // one iteration of all models takes seconds
+        }
       }
     }
   }
@@ -433,16 +449,18 @@ void RegisterAutomaticSegmentationBenchmarks(bool useSizeMinimumTimes)
 {
   for (benchmark::internal::Benchmark* registered :
     {
-      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false, EnsembleSize),
-      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark, EnsembleSize),
-      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/100k", ensembleBenchmark, false, Sizes[0]),
-      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/100k", choosingCountBenchmark, Sizes[0]),
+      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/22k", ensembleBenchmark, false, EnsembleSize, false),
+      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/22k", choosingCountBenchmark, EnsembleSize, false),
+      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/100k", ensembleBenchmark, false, Sizes[0], false),
+      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/100k", choosingCountBenchmark, Sizes[0], false),
+      benchmark::RegisterBenchmark("BM_EnsembleSegmentation/100k-threads", ensembleBenchmark, false, Sizes[0], true),
+      benchmark::RegisterBenchmark("BM_EnsembleChoosingCount/100k-threads", choosingCountBenchmark, Sizes[0], true),
       benchmark::RegisterBenchmark("BM_EnsembleHierarchy/22k", hierarchyBenchmark),
       benchmark::RegisterBenchmark("BM_EnsembleHierarchySlide/100k", hierarchySlideBenchmark, Sizes[0], true, 12, 20),
       benchmark::RegisterBenchmark(
         "BM_EnsembleHierarchySlideKept/100k", hierarchySlideBenchmark, Sizes[0], true, 5, 11),
       benchmark::RegisterBenchmark("BM_EnsembleHierarchyCut/100k", hierarchySlideBenchmark, Sizes[0], false, 12, 20),
-      benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true, EnsembleSize),
+      benchmark::RegisterBenchmark("BM_ConsensusCutSegmentation/22k", ensembleBenchmark, true, EnsembleSize, false),
       benchmark::RegisterBenchmark("BM_BoundaryBandCut/22k", bandCutBenchmark),
       benchmark::RegisterBenchmark("BM_CoreExtraction/22k", coreExtractionBenchmark, EnsembleSize),
       benchmark::RegisterBenchmark("BM_CoreExtraction/100k", coreExtractionBenchmark, Sizes[0]),

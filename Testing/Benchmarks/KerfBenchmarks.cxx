@@ -25,13 +25,16 @@
 #include "KerfBenchmarks.h"
 
 #include "Numerics/SparseCholesky.h"
+#include "Threads.h"
 
 #include <vtkSMPTools.h>
 #include <vtkVersion.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <string>
+#include <thread>
 
 namespace
 {
@@ -47,6 +50,21 @@ void Fail(benchmark::State& state, const std::string& message)
 {
   Failed = true;
   state.SkipWithError(message.c_str());
+}
+
+int HardwareThreads()
+{
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+ThreadsFor::ThreadsFor(bool hardware)
+{
+  kerf::setThreadLimit(hardware ? HardwareThreads() : 1);
+}
+
+ThreadsFor::~ThreadsFor()
+{
+  kerf::setThreadLimit(1);
 }
 
 bool AnyBenchmarkFailed()
@@ -73,6 +91,11 @@ int main(int argc, char** argv)
   benchmark::AddCustomContext("vtk_version", vtkVersion::GetVTKVersionFull());
   benchmark::AddCustomContext("vtk_smp_backend", vtkSMPTools::GetBackend());
   benchmark::AddCustomContext("sparse_cholesky", kerf::SparseCholesky::backend());
+  // One thread, whatever KERF_NUM_THREADS says, so that the figures compare run to run; the
+  // benchmarks named *-threads set the hardware's cores for their own run.
+  kerf::setThreadLimit(1);
+  benchmark::AddCustomContext(
+    "kerf_threads", "1 (the *-threads benchmarks: " + std::to_string(kerf::benchmarks::HardwareThreads()) + ")");
   // The processor's model, for the benchmark log (Utilities/benchmark-log.py): the same core
   // count and clock can be an Intel Xeon or an AMD EPYC, with or without AVX-512.
   std::ifstream cpuinfo("/proc/cpuinfo");

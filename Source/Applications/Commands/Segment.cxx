@@ -2,6 +2,7 @@
 // picture.
 #include "KerfCommands.h"
 #include "KerfRanks.h"
+#include "Threads.h"
 
 #include "vtkConsensusCutSegmentation.h"
 #include "vtkConvexFlooding.h"
@@ -24,6 +25,7 @@
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -277,6 +279,12 @@ int segmentFolder(
     throw CommandError{ "cannot create the folder " + out };
   }
   const std::vector<int> owner = dealBySize(folder, files, ranks.size());
+  // The ranks on a host share its cores: each takes its share of Kerf's threads unless
+  // KERF_NUM_THREADS says otherwise.
+  if (ranks.size() > 1 && !std::getenv("KERF_NUM_THREADS"))
+  {
+    kerf::setThreadLimit(std::max(1, kerf::threadLimit() / LaunchedRanksOnThisHost()));
+  }
   vtkMultiProcessStream mine;
   for (std::size_t i = 0; i < files.size(); ++i)
   {

@@ -6,6 +6,7 @@
 #include "Mesh/MeshValidation.h"
 #include "Segmentation/PartitionDistance.h"
 #include "Surface/Surface.h"
+#include "Threads.h"
 
 #include <algorithm>
 #include <cmath>
@@ -185,36 +186,50 @@ std::vector<Member> ensembleMembers(const EnsembleSegmentationOptions& options)
   };
 }
 
-// The members' segmentations of a connected surface into k parts, those with a positive weight.
-std::vector<WeightedPartition> memberPartitions(
-  const Surface& surface, int k, const EnsembleSegmentationOptions& options)
+// The members with a positive weight, in their order.
+std::vector<Member> votingMembers(const EnsembleSegmentationOptions& options)
 {
-  std::vector<WeightedPartition> partitions;
-  for (const Member& member : ensembleMembers(options))
+  std::vector<Member> voting;
+  for (Member& member : ensembleMembers(options))
   {
     if (member.weight > 0.0)
     {
-      partitions.push_back({ member.segment(surface, k), member.weight });
+      voting.push_back(std::move(member));
     }
   }
+  return voting;
+}
+
+// The members' segmentations of a connected surface into k parts, those with a positive weight,
+// each member on a thread of its own (parallelFor).
+std::vector<WeightedPartition> memberPartitions(
+  const Surface& surface, int k, const EnsembleSegmentationOptions& options)
+{
+  const std::vector<Member> voting = votingMembers(options);
+  std::vector<WeightedPartition> partitions(voting.size());
+  parallelFor(static_cast<int>(voting.size()), [&](int m) {
+    partitions[static_cast<std::size_t>(m)] = { voting[static_cast<std::size_t>(m)].segment(surface, k),
+      voting[static_cast<std::size_t>(m)].weight };
+  });
   return partitions;
 }
 
 // The members' segmentations of a connected surface at every count from lowest to highest, those
-// with a positive weight: per count, in the members' order.
+// with a positive weight: per count, in the members' order (each member on a thread of its own).
 std::vector<std::vector<WeightedPartition>> memberPartitionsAtCounts(
   const Surface& surface, int lowest, int highest, const EnsembleSegmentationOptions& options)
 {
+  const std::vector<Member> voting = votingMembers(options);
+  std::vector<std::vector<std::vector<int>>> labels(voting.size());
+  parallelFor(static_cast<int>(voting.size()), [&](int m) {
+    labels[static_cast<std::size_t>(m)] = voting[static_cast<std::size_t>(m)].atCounts(surface, lowest, highest);
+  });
   std::vector<std::vector<WeightedPartition>> partitions(static_cast<std::size_t>(highest - lowest + 1));
-  for (const Member& member : ensembleMembers(options))
+  for (std::size_t m = 0; m < voting.size(); ++m)
   {
-    if (member.weight > 0.0)
+    for (std::size_t c = 0; c < partitions.size(); ++c)
     {
-      std::vector<std::vector<int>> labels = member.atCounts(surface, lowest, highest);
-      for (std::size_t c = 0; c < partitions.size(); ++c)
-      {
-        partitions[c].push_back({ std::move(labels[c]), member.weight });
-      }
+      partitions[c].push_back({ std::move(labels[m][c]), voting[m].weight });
     }
   }
   return partitions;
@@ -253,19 +268,25 @@ double meanDistanceToPool(const std::vector<int>& labels, const std::vector<Weig
 EnsembleSegmentationResult segmentConnectedChoosingCount(
   const Surface& surface, int lowest, int highest, const EnsembleSegmentationOptions& options)
 {
-  std::vector<WeightedPartition> pool;
-  std::vector<EnsembleSegmentationResult> candidates;
   std::vector<std::vector<WeightedPartition>> atCounts = memberPartitionsAtCounts(surface, lowest, highest, options);
-  for (int k = lowest; k <= highest; ++k)
+  // The ensemble at each count, then each scored against the pool, the counts on Kerf's threads.
+  std::vector<EnsembleSegmentationResult> candidates(atCounts.size());
+  parallelFor(static_cast<int>(atCounts.size()), [&](int c) {
+    candidates[static_cast<std::size_t>(c)] =
+      joinMembers(surface, lowest + c, atCounts[static_cast<std::size_t>(c)], options);
+  });
+  std::vector<WeightedPartition> pool;
+  for (std::vector<WeightedPartition>& partitions : atCounts)
   {
-    std::vector<WeightedPartition>& partitions = atCounts[static_cast<std::size_t>(k - lowest)];
-    candidates.push_back(joinMembers(surface, k, partitions, options));
     pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
   }
+  parallelFor(static_cast<int>(candidates.size()), [&](int c) {
+    candidates[static_cast<std::size_t>(c)].countScore =
+      meanDistanceToPool(candidates[static_cast<std::size_t>(c)].labels, pool);
+  });
   std::size_t best = 0;
   for (std::size_t c = 0; c < candidates.size(); ++c)
   {
-    candidates[c].countScore = meanDistanceToPool(candidates[c].labels, pool);
     if (candidates[c].countScore < candidates[best].countScore)
     {
       best = c;
@@ -699,11 +720,18 @@ EnsembleHierarchy ensembleHierarchy(
     hierarchy.chosenCount = 1;
     return hierarchy;
   }
-  for (int count = minimumCount; count <= maximumCount; ++count)
-  {
-    hierarchy.refinedCuts.push_back(cutEnsembleHierarchy(surface, hierarchy, count, options.refinement).labels);
-    hierarchy.countScores.push_back(meanDistanceToPool(hierarchy.refinedCuts.back(), pool));
-  }
+  // Each count's refined cut and its score, the counts on Kerf's threads (kept once all are cut:
+  // cutEnsembleHierarchy reads the kept cuts).
+  const int counts = maximumCount - minimumCount + 1;
+  std::vector<std::vector<int>> refinedCuts(static_cast<std::size_t>(counts));
+  std::vector<double> countScores(static_cast<std::size_t>(counts));
+  parallelFor(counts, [&](int c) {
+    const std::size_t at = static_cast<std::size_t>(c);
+    refinedCuts[at] = cutEnsembleHierarchy(surface, hierarchy, minimumCount + c, options.refinement).labels;
+    countScores[at] = meanDistanceToPool(refinedCuts[at], pool);
+  });
+  hierarchy.refinedCuts = std::move(refinedCuts);
+  hierarchy.countScores = std::move(countScores);
   hierarchy.refinedWith = options.refinement;
   hierarchy.chosenCount = minimumCount +
     static_cast<int>(
