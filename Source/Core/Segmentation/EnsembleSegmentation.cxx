@@ -200,29 +200,27 @@ std::vector<Member> votingMembers(const EnsembleSegmentationOptions& options)
   return voting;
 }
 
-// The members' segmentations of a connected surface into k parts, those with a positive weight,
-// each member on a thread of its own (parallelFor).
-std::vector<WeightedPartition> memberPartitions(
-  const Surface& surface, int k, const EnsembleSegmentationOptions& options)
-{
-  const std::vector<Member> voting = votingMembers(options);
-  std::vector<WeightedPartition> partitions(voting.size());
-  parallelFor(static_cast<int>(voting.size()), [&](int m) {
-    partitions[static_cast<std::size_t>(m)] = { voting[static_cast<std::size_t>(m)].segment(surface, k),
-      voting[static_cast<std::size_t>(m)].weight };
-  });
-  return partitions;
-}
-
-// The members' segmentations of a connected surface at every count from lowest to highest, those
-// with a positive weight: per count, in the members' order (each member on a thread of its own).
+// The members' segmentations at every count from lowest to highest, those with a positive weight:
+// per count, in the members' order, each member on a thread of its own (parallelFor). On a
+// connected surface a member shares its work across the counts (Member::atCounts); on one of
+// several components each count is shared out over them (segmentSurfaceComponents).
 std::vector<std::vector<WeightedPartition>> memberPartitionsAtCounts(
   const Surface& surface, int lowest, int highest, const EnsembleSegmentationOptions& options)
 {
   const std::vector<Member> voting = votingMembers(options);
+  const bool connected = faceGraph(surface).componentCount() == 1;
   std::vector<std::vector<std::vector<int>>> labels(voting.size());
   parallelFor(static_cast<int>(voting.size()), [&](int m) {
-    labels[static_cast<std::size_t>(m)] = voting[static_cast<std::size_t>(m)].atCounts(surface, lowest, highest);
+    const Member& member = voting[static_cast<std::size_t>(m)];
+    if (connected)
+    {
+      labels[static_cast<std::size_t>(m)] = member.atCounts(surface, lowest, highest);
+      return;
+    }
+    for (int count = lowest; count <= highest; ++count)
+    {
+      labels[static_cast<std::size_t>(m)].push_back(segmentSurfaceComponents(surface, count, member.segment));
+    }
   });
   std::vector<std::vector<WeightedPartition>> partitions(static_cast<std::size_t>(highest - lowest + 1));
   for (std::size_t m = 0; m < voting.size(); ++m)
@@ -592,7 +590,7 @@ EnsembleSegmentationResult segmentByEnsemble(const Surface& surface, int k, cons
   EnsembleSegmentationResult result;
   result.labels = segmentSurfaceComponents(surface, k, [&](const Surface& part, int partK) {
     const EnsembleSegmentationResult partResult =
-      joinMembers(part, partK, memberPartitions(part, partK, options), options);
+      joinMembers(part, partK, memberPartitionsAtCounts(part, partK, partK, options).front(), options);
     result.members = partResult.members;
     result.atoms += partResult.atoms;
     return partResult.labels;
@@ -683,29 +681,12 @@ EnsembleHierarchy ensembleHierarchy(
 {
   const TriangleMesh& mesh = surface.mesh();
   checkCountChoice(mesh, minimumCount, maximumCount, options, "an ensemble hierarchy");
-  // Every member at every count, each dual-graph component with its share of the count (on a
-  // connected surface, each member's work shared across the counts).
+  // Every member at every count, each dual-graph component with its share of the count.
   std::vector<WeightedPartition> pool;
-  if (faceGraph(surface).componentCount() == 1)
+  for (std::vector<WeightedPartition>& partitions :
+    memberPartitionsAtCounts(surface, minimumCount, maximumCount, options))
   {
-    for (std::vector<WeightedPartition>& partitions :
-      memberPartitionsAtCounts(surface, minimumCount, maximumCount, options))
-    {
-      pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
-    }
-  }
-  else
-  {
-    for (int count = minimumCount; count <= maximumCount; ++count)
-    {
-      for (const Member& member : ensembleMembers(options))
-      {
-        if (member.weight > 0.0)
-        {
-          pool.push_back({ segmentSurfaceComponents(surface, count, member.segment), member.weight });
-        }
-      }
-    }
+    pool.insert(pool.end(), std::make_move_iterator(partitions.begin()), std::make_move_iterator(partitions.end()));
   }
   EnsembleHierarchy hierarchy;
   hierarchy.consensus = consensusHierarchy(faceGraph(surface), pool, options.areaWeighted);
