@@ -53,6 +53,11 @@ void setThreadLimit(int threads)
   LimitSet.store(threads);
 }
 
+int threadLimitSetting()
+{
+  return LimitSet.load();
+}
+
 void parallelFor(int count, const std::function<void(int)>& task)
 {
   if (count <= 0)

@@ -16,6 +16,9 @@ int threadLimit();
 /// KERF_NUM_THREADS or the hardware's cores. Throws kerf::Error for a negative value.
 void setThreadLimit(int threads);
 
+/// The value the last setThreadLimit gave: 0 when none did or it returned to the default.
+int threadLimitSetting();
+
 /// Runs task(i) once for every i in [0, count), on up to threadLimit() threads (the calling one
 /// among them), handing out the indices in order as threads come free; returns when all are done.
 /// Tasks must be independent: each writes only its own results. Inside a task, a nested

@@ -37,11 +37,14 @@ TEST(Threads, TheLimitComesFromTheCallTheEnvironmentOrTheHardware)
   const std::string saved = before ? before : "";
   ::setenv("KERF_NUM_THREADS", "3", 1);
   EXPECT_EQ(threadLimit(), 3);
+  EXPECT_EQ(threadLimitSetting(), 0);
   {
     const ThreadLimit two(2);
     EXPECT_EQ(threadLimit(), 2);
+    EXPECT_EQ(threadLimitSetting(), 2);
   }
   EXPECT_EQ(threadLimit(), 3);
+  EXPECT_EQ(threadLimitSetting(), 0);
   // Not a whole number >= 1: the hardware's cores.
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
   for (const char* bad : { "0", "-2", "two", "4x", "" })
@@ -52,6 +55,7 @@ TEST(Threads, TheLimitComesFromTheCallTheEnvironmentOrTheHardware)
   ::unsetenv("KERF_NUM_THREADS");
   EXPECT_EQ(threadLimit(), cores);
   EXPECT_THROW(setThreadLimit(-1), Error);
+  EXPECT_EQ(threadLimitSetting(), 0); // a refused value changes nothing
   if (before)
   {
     ::setenv("KERF_NUM_THREADS", saved.c_str(), 1);

@@ -545,6 +545,45 @@ class KerfPluginTest(unittest.TestCase):
         camel = simple.OpenDataFile(CAMEL)
         self.assertEqual(list(simple.ChartParameterization(Input=camel).ChartLabels), ["CELLS", "Chart"])
 
+    def test_thread_limit_setting(self):
+        """Edit > Settings > Kerf: the Thread Limit property sets the limit every Kerf filter of
+        the session uses (the settings object is the process's vtkKerfSettings); 0, the
+        default, returns to KERF_NUM_THREADS or every core. ParaView's client creates a plugin's
+        settings proxies when the plugin loads; a script asks for them once."""
+        import kerf
+        from paraview.modules.vtkRemotingServerManager import vtkSMPropertyHelper
+
+        servermanager.vtkSMParaViewPipelineController().UpdateSettingsProxies(servermanager.ActiveConnection.Session)
+        settings = servermanager.ProxyManager().SMProxyManager.GetProxy("settings", "KerfSettings")
+        self.assertIsNotNone(settings)
+        limit = vtkSMPropertyHelper(settings, "ThreadLimit")
+        self.assertEqual(limit.GetAsInt(), 0)
+        self.assertEqual(settings.GetClientSideObject().GetClassName(), "vtkKerfSettings")
+        instance = kerf.vtkKerfSettings.GetInstance()
+
+        def set_limit(threads):
+            limit.Set(threads)
+            settings.UpdateVTKObjects()
+
+        try:
+            set_limit(1)
+            self.assertEqual(instance.GetThreadLimit(), 1)
+            self.assertEqual(instance.GetEffectiveThreadLimit(), 1)
+            camel = simple.OpenDataFile(CAMEL)
+            ensemble = simple.EnsembleSegmentation(Input=camel, SegmentCount=4)
+            ensemble.UpdatePipeline()
+            one = vtk_to_numpy(servermanager.Fetch(ensemble).GetCellData().GetArray("Segment")).tolist()
+            set_limit(2)
+            self.assertEqual(instance.GetEffectiveThreadLimit(), 2)
+            again = simple.EnsembleSegmentation(Input=camel, SegmentCount=4)  # a filter of its own
+            again.UpdatePipeline()
+            two = vtk_to_numpy(servermanager.Fetch(again).GetCellData().GetArray("Segment")).tolist()
+            self.assertEqual(len(set(one)), 4)
+            self.assertEqual(one, two)
+        finally:
+            set_limit(0)
+        self.assertEqual(instance.GetThreadLimit(), 0)
+
     def test_filters_are_in_the_kerf_menu(self):
         categories = {}
         for name, definition in proxy_definitions("filters"):
