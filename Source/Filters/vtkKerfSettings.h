@@ -8,6 +8,8 @@
  * (the default) uses the environment variable KERF_NUM_THREADS if it is set, else every core.
  * Results never depend on it: Kerf's parallel loops give the same output, bit for bit, on any
  * number of threads. A negative value is refused with an error and the limit stays as it was.
+ * The limit covers Kerf's own parallel loops; the BLAS that CHOLMOD calls (OpenBLAS) keeps its
+ * own thread count, set with OPENBLAS_NUM_THREADS before the process starts.
  *
  * From Python:
  *
