@@ -1,6 +1,8 @@
 // kerf: the command-line program that runs Kerf's filters on mesh files and renders the results.
 #include "KerfCommands.h"
 
+#include "Threads.h"
+
 #include "vtkSegmentationBenchmark.h"
 
 #include <algorithm>
@@ -103,7 +105,8 @@ void printHelp()
             << "  --size WxH            image size in pixels (900x700)\n"
             << "  --azimuth DEG --elevation DEG   camera rotation (30, 20)\n"
             << "  --caption TEXT        caption in the top-left corner\n"
-            << "\nOther options: -o FILE (output), --quiet, -h/--help (also after a command).\n"
+            << "\nOther options: -o FILE (output), --quiet, -h/--help (also after a command),\n"
+            << "--threads N (the most threads Kerf uses; default 0: KERF_NUM_THREADS, else every core).\n"
             << "Rendering needs a display; on a headless machine run under xvfb-run -a.\n";
 }
 } // namespace
@@ -124,6 +127,10 @@ int main(int argc, char* argv[])
   try
   {
     const kerf::Arguments args = kerf::parseArguments(argc, argv, 2);
+    if (args.has("threads"))
+    {
+      kerf::setThreadLimit(args.integer("threads", 0, 0, 1024));
+    }
     for (const Command& c : Commands)
     {
       if (name != c.name)

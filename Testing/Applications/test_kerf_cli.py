@@ -377,6 +377,26 @@ class CommandLine(unittest.TestCase):
         self.assertTrue(rows[2]["Error"].startswith("cannot read the mesh"), rows[2]["Error"])
         self.assertEqual(run("segment", folder, "--seg", "x.seg").returncode, 1)
 
+    def test_threads_limit_kerf_and_leave_the_labels_as_they_are(self):
+        """--threads N limits Kerf's threads for the whole command; the labels are the same on one
+        thread and two (the ensemble's members run in parallel), and a bad count is refused."""
+        hand = os.path.join(SOURCE, "Data", "hand.off")
+        labels = []
+        for threads in ("1", "2"):
+            seg = os.path.join(self.folder, "hand-" + threads + ".seg")
+            result = run("segment", hand, "--auto", "--threads", threads, "--seg", seg, "--quiet")
+            self.assertEqual(result.returncode, 0, result.stderr)
+            with open(seg) as f:
+                labels.append([int(line) for line in f])
+        self.assertEqual(len(labels[0]), 2390)
+        self.assertGreater(len(set(labels[0])), 1)
+        self.assertEqual(labels[0], labels[1])
+        for bad in ("-1", "two", "2000"):
+            result = run("segment", hand, "--threads", bad, "--seg", os.path.join(self.folder, "x.seg"))
+            self.assertEqual(result.returncode, 1, bad)
+            self.assertIn("--threads expects a number", result.stderr)
+        self.assertIn("--threads N", run("--help").stdout)
+
     def test_errors_exit_with_one_and_a_message(self):
         result = run("info", os.path.join(SOURCE, "Testing", "Data", "Input", "truncated.off"))
         self.assertEqual(result.returncode, 1)

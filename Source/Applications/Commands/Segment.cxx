@@ -280,8 +280,8 @@ int segmentFolder(
   }
   const std::vector<int> owner = dealBySize(folder, files, ranks.size());
   // The ranks on a host share its cores: each takes its share of Kerf's threads unless
-  // KERF_NUM_THREADS says otherwise.
-  if (ranks.size() > 1 && !std::getenv("KERF_NUM_THREADS"))
+  // --threads or KERF_NUM_THREADS says otherwise.
+  if (ranks.size() > 1 && kerf::threadLimitSetting() == 0 && !std::getenv("KERF_NUM_THREADS"))
   {
     kerf::setThreadLimit(std::max(1, kerf::threadLimit() / LaunchedRanksOnThisHost()));
   }
