@@ -4,7 +4,7 @@
  *
  * One instance serves the process: New() and GetInstance() return the same object (ParaView's
  * settings proxy "KerfSettings", Edit > Settings > Kerf, creates it with New()). ThreadLimit is
- * the most threads a Kerf computation uses at once: 1 runs everything on the calling thread, 0
+ * the most threads a Kerf computation uses at once: 1 runs Kerf's loops on the calling thread, 0
  * (the default) uses the environment variable KERF_NUM_THREADS if it is set, else every core.
  * Results never depend on it: Kerf's parallel loops give the same output, bit for bit, on any
  * number of threads. A negative value is refused with an error and the limit stays as it was.

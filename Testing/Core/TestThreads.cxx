@@ -55,7 +55,12 @@ TEST(Threads, TheLimitComesFromTheCallTheEnvironmentOrTheHardware)
   ::unsetenv("KERF_NUM_THREADS");
   EXPECT_EQ(threadLimit(), cores);
   EXPECT_THROW(setThreadLimit(-1), Error);
-  EXPECT_EQ(threadLimitSetting(), 0); // a refused value changes nothing
+  EXPECT_EQ(threadLimitSetting(), 0);
+  {
+    const ThreadLimit two(2);
+    EXPECT_THROW(setThreadLimit(-1), Error);
+    EXPECT_EQ(threadLimitSetting(), 2); // a refused value changes nothing
+  }
   if (before)
   {
     ::setenv("KERF_NUM_THREADS", saved.c_str(), 1);

@@ -11,9 +11,14 @@ from vtkmodules.vtkCommonCore import vtkCommand
 
 
 class KerfSettingsTest(unittest.TestCase):
+    def setUp(self):
+        self.environment = os.environ.pop("KERF_NUM_THREADS", None)
+
     def tearDown(self):
         kerf.vtkKerfSettings.GetInstance().SetThreadLimit(0)
         os.environ.pop("KERF_NUM_THREADS", None)
+        if self.environment is not None:
+            os.environ["KERF_NUM_THREADS"] = self.environment
 
     def test_one_instance(self):
         settings = kerf.vtkKerfSettings()
