@@ -33,9 +33,14 @@ int limitFromEnvironment()
       return static_cast<int>(std::min(value, 1024L));
     }
   }
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return hardwareThreads();
 }
 } // namespace
+
+int hardwareThreads()
+{
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
 
 int threadLimit()
 {

@@ -16,6 +16,9 @@ int threadLimit();
 /// KERF_NUM_THREADS or the hardware's cores. Throws kerf::Error for a negative value.
 void setThreadLimit(int threads);
 
+/// The hardware's cores (std::thread::hardware_concurrency), at least 1: the limit by default.
+int hardwareThreads();
+
 /// The value the last setThreadLimit gave: 0 when none did or it returned to the default.
 int threadLimitSetting();
 

@@ -1,13 +1,11 @@
 // Kerf's process-wide settings: the thread limit of Core's parallel loops, for Python and ParaView.
 #include "vtkKerfSettings.h"
 
+#include "Error.h"
 #include "Threads.h"
 
 #include "vtkObjectFactory.h"
 #include "vtkSmartPointer.h"
-
-#include <algorithm>
-#include <thread>
 
 vtkKerfSettings* vtkKerfSettings::New()
 {
@@ -29,18 +27,20 @@ vtkKerfSettings* vtkKerfSettings::GetInstance()
 
 void vtkKerfSettings::SetThreadLimit(int threads)
 {
-  if (threads < 0)
-  {
-    vtkErrorMacro(<< "Cannot set the thread limit: it must be 0 (KERF_NUM_THREADS, else every core) or at least "
-                     "1, got "
-                  << threads << "; it stays " << kerf::threadLimitSetting() << ".");
-    return;
-  }
   if (threads == kerf::threadLimitSetting())
   {
     return;
   }
-  kerf::setThreadLimit(threads);
+  try
+  {
+    kerf::setThreadLimit(threads);
+  }
+  catch (const kerf::Error& error)
+  {
+    vtkErrorMacro(<< "Cannot set the thread limit: " << error.what() << "; it stays " << kerf::threadLimitSetting()
+                  << ".");
+    return;
+  }
   this->Modified();
 }
 
@@ -56,7 +56,7 @@ int vtkKerfSettings::GetEffectiveThreadLimit()
 
 int vtkKerfSettings::GetNumberOfCores()
 {
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  return kerf::hardwareThreads();
 }
 
 void vtkKerfSettings::PrintSelf(ostream& os, vtkIndent indent)

@@ -43,7 +43,7 @@ public:
   /// The threads Kerf uses now: the limit, or with 0 KERF_NUM_THREADS or the hardware's cores.
   int GetEffectiveThreadLimit();
 
-  /// The hardware's cores (std::thread::hardware_concurrency, at least 1).
+  /// The hardware's cores (kerf::hardwareThreads: std::thread::hardware_concurrency, at least 1).
   static int GetNumberOfCores();
 
 protected:

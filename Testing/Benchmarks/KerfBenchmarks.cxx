@@ -34,7 +34,6 @@
 #include <cstring>
 #include <fstream>
 #include <string>
-#include <thread>
 
 namespace
 {
@@ -52,14 +51,9 @@ void Fail(benchmark::State& state, const std::string& message)
   state.SkipWithError(message.c_str());
 }
 
-int HardwareThreads()
-{
-  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
-}
-
 ThreadsFor::ThreadsFor(bool hardware)
 {
-  kerf::setThreadLimit(hardware ? HardwareThreads() : 1);
+  kerf::setThreadLimit(hardware ? kerf::hardwareThreads() : 1);
 }
 
 ThreadsFor::~ThreadsFor()
@@ -95,7 +89,7 @@ int main(int argc, char** argv)
   // benchmarks named *-threads set the hardware's cores for their own run.
   kerf::setThreadLimit(1);
   benchmark::AddCustomContext(
-    "kerf_threads", "1 (the *-threads benchmarks: " + std::to_string(kerf::benchmarks::HardwareThreads()) + ")");
+    "kerf_threads", "1 (the *-threads benchmarks: " + std::to_string(kerf::hardwareThreads()) + ")");
   // The processor's model, for the benchmark log (Utilities/benchmark-log.py): the same core
   // count and clock can be an Intel Xeon or an AMD EPYC, with or without AVX-512.
   std::ifstream cpuinfo("/proc/cpuinfo");

@@ -14,9 +14,6 @@ namespace benchmarks
 /// Skips the benchmark with `message` and makes the program exit with 1 (the smoke test's check).
 void Fail(benchmark::State& state, const std::string& message);
 
-/// The hardware's cores (at least 1).
-int HardwareThreads();
-
 /// Kerf's thread limit for a benchmark's run: the hardware's cores with `hardware`, else 1; back to
 /// 1 (the program's setting) at the end of the scope.
 struct ThreadsFor

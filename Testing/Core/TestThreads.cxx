@@ -47,6 +47,7 @@ TEST(Threads, TheLimitComesFromTheCallTheEnvironmentOrTheHardware)
   EXPECT_EQ(threadLimitSetting(), 0);
   // Not a whole number >= 1: the hardware's cores.
   const int cores = std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+  EXPECT_EQ(hardwareThreads(), cores);
   for (const char* bad : { "0", "-2", "two", "4x", "" })
   {
     ::setenv("KERF_NUM_THREADS", bad, 1);
