@@ -198,7 +198,11 @@ int main(int argc, char* argv[])
   }
   catch (const kerf::CommandError& e)
   {
-    std::cerr << "kerf: error: " << e.message << std::endl;
+    // One write for the whole line (std::cerr writes each << at once), so that under mpirun the
+    // launcher's own messages cannot land inside it.
+    const std::string line = "kerf: error: " + e.message + "\n";
+    std::cerr.write(line.data(), static_cast<std::streamsize>(line.size()));
+    std::cerr.flush();
     return 1;
   }
 }
